@@ -1,0 +1,20 @@
+#pragma once
+// Subcommands of the vibroimpact command: each registers its options and returns an exit code.
+
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace vi::cli {
+
+// Exit codes (POSIX habit): success, failure of the computation, bad input.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitFailure = 1;
+inline constexpr int kExitBadInput = 2;
+
+// A subcommand's body, run after parsing; returns the exit code.
+using CommandBody = std::function<int()>;
+
+CommandBody add_modes_command(CLI::App& app);
+CommandBody add_support_scan_command(CLI::App& app);
+
+}  // namespace vi::cli

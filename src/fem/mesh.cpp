@@ -1,0 +1,43 @@
+#include "fem/mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace vi {
+
+Mesh build_mesh(const Beam& beam, const std::vector<Support>& supports) {
+    if (beam.elements < 1) throw std::invalid_argument("build_mesh: at least one element is needed");
+    const double l = beam.length;
+    const int m = beam.elements;
+    Mesh mesh;
+    mesh.x.reserve(static_cast<std::size_t>(m) + 1 + supports.size());
+    for (int i = 0; i <= m; ++i) mesh.x.push_back(l * static_cast<double>(i) / m);
+    mesh.x.back() = l;
+
+    const double merge = kNodeMergeTolerance * l / m;
+    for (const Support& s : supports) {
+        const double x0 = s.position * l;
+        auto it = std::lower_bound(mesh.x.begin(), mesh.x.end(), x0);
+        const bool near_next = it != mesh.x.end() && std::abs(*it - x0) <= merge;
+        const bool near_prev = it != mesh.x.begin() && std::abs(*(it - 1) - x0) <= merge;
+        if (!near_next && !near_prev) mesh.x.insert(it, x0);
+    }
+    for (const Support& s : supports) {
+        const double x0 = s.position * l;
+        auto it = std::lower_bound(mesh.x.begin(), mesh.x.end(), x0 - merge);
+        mesh.support_nodes.push_back(static_cast<int>(it - mesh.x.begin()));
+    }
+    return mesh;
+}
+
+ElementPoint locate(const Mesh& mesh, double x) {
+    const int ne = mesh.element_count();
+    auto it = std::upper_bound(mesh.x.begin(), mesh.x.end(), x);
+    int e = static_cast<int>(it - mesh.x.begin()) - 1;
+    e = std::clamp(e, 0, ne - 1);
+    const double xi = (x - mesh.x[e]) / mesh.element_length(e);
+    return {e, std::clamp(xi, 0.0, 1.0)};
+}
+
+}  // namespace vi

@@ -1,0 +1,33 @@
+#pragma once
+// Mesh: node coordinates along the beam, a uniform grid plus one node exactly at each support.
+
+#include <vector>
+
+#include "model/case.hpp"
+
+namespace vi {
+
+// Nodes along x in increasing order; element e joins nodes e and e + 1.
+struct Mesh {
+    std::vector<double> x;             // node coordinates [m]
+    std::vector<int> support_nodes;    // node index of supports[k], in the Case's order
+    [[nodiscard]] int node_count() const { return static_cast<int>(x.size()); }
+    [[nodiscard]] int element_count() const { return node_count() - 1; }
+    [[nodiscard]] double element_length(int e) const { return x[e + 1] - x[e]; }
+};
+
+// A support closer than this fraction of an element to a grid node shares that node: a sliver
+// element that short would only spoil the conditioning, and moves the support by < 1e-9 l.
+inline constexpr double kNodeMergeTolerance = 1e-9;
+
+// Builds the mesh of m uniform elements and inserts a node at every support position.
+Mesh build_mesh(const Beam& beam, const std::vector<Support>& supports);
+
+// Index of the element holding coordinate x [m] and the local coordinate xi in [0, 1] there.
+struct ElementPoint {
+    int element = 0;
+    double xi = 0.0;
+};
+ElementPoint locate(const Mesh& mesh, double x);
+
+}  // namespace vi

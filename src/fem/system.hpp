@@ -1,0 +1,57 @@
+#pragma once
+// System: the assembled FE model of one case: mesh, DOF maps, sparse K and M over the free DOFs.
+
+#include <Eigen/Dense>
+#include <Eigen/Sparse>
+#include <vector>
+
+#include "fem/beam_element.hpp"
+#include "fem/mesh.hpp"
+#include "model/case.hpp"
+
+namespace vi {
+
+// How supports enter the linear model: ignored, as pins v(x0) = 0, or as their contact springs Kc.
+enum class SupportModel { none, pin, spring };
+
+// Global DOF of component comp (0 = u axial, 1 = v transverse, 2 = theta rotation) at a node.
+constexpr int global_dof(int node, int comp) { return 3 * node + comp; }
+
+using SparseMatrix = Eigen::SparseMatrix<double>;
+
+struct System {
+    Mesh mesh;
+    ElementProperties props;
+    double length = 0.0;                 // l [m]
+    EndCondition left = EndCondition::clamped;   // end conditions, as in the case
+    EndCondition right = EndCondition::free;
+    int total_dofs = 0;                  // 3 x nodes, constrained included
+    std::vector<int> free_dofs;          // global DOF of each reduced DOF, ascending
+    std::vector<int> reduced_of;         // reduced index of each global DOF, -1 if constrained
+    SparseMatrix K;                      // stiffness over free DOFs [N/m]
+    SparseMatrix M;                      // consistent mass over free DOFs [kg]
+    std::vector<int> bending;            // reduced indices of v and theta DOFs, ascending
+    std::vector<int> axial;              // reduced indices of u DOFs, ascending
+    std::vector<int> support_dof;        // reduced index of v at each support, -1 where v is fixed
+    [[nodiscard]] int size() const { return static_cast<int>(free_dofs.size()); }
+};
+
+// Assembles the case's beam with its end conditions and its supports as the given model.
+System build_system(const Case& c, SupportModel model = SupportModel::none);
+
+// The rows and columns idx of a sparse matrix, in the order given.
+SparseMatrix submatrix(const SparseMatrix& a, const std::vector<int>& idx);
+
+// A reduced vector scattered to all global DOFs (zero where constrained).
+Eigen::VectorXd expand_to_global(const System& s, const Eigen::VectorXd& reduced);
+
+// Consistent nodal load vector (reduced) of a transverse point force f [N] at coordinate x [m].
+Eigen::VectorXd transverse_point_load(const System& s, double x, double f);
+
+// Transverse displacement v [m] at coordinate x [m] from a reduced DOF vector.
+double transverse_displacement(const System& s, const Eigen::VectorXd& reduced, double x);
+
+// Static displacement K q = f over the free DOFs; throws std::runtime_error if K is singular.
+Eigen::VectorXd solve_static(const System& s, const Eigen::VectorXd& load);
+
+}  // namespace vi

@@ -1,0 +1,112 @@
+#include "modal/eigen_solver.hpp"
+
+#include <Spectra/MatOp/SparseSymMatProd.h>
+#include <Spectra/MatOp/SymShiftInvert.h>
+#include <Spectra/SymGEigsShiftSolver.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace vi {
+namespace {
+
+// Enforces phi^T M phi = 1 exactly and a reproducible sign: the largest component positive.
+void normalise(ModeSet& set, const SparseMatrix& M) {
+    for (Eigen::Index j = 0; j < set.shapes.cols(); ++j) {
+        auto col = set.shapes.col(j);
+        const double mm = col.dot(M * col);
+        col /= std::sqrt(mm);
+        Eigen::Index imax = 0;
+        col.cwiseAbs().maxCoeff(&imax);
+        if (col[imax] < 0) col = -col;
+    }
+}
+
+ModeSet from_eigenvalues(const Eigen::VectorXd& lambda, Eigen::MatrixXd shapes) {
+    if (lambda.size() > 0 && !(lambda.minCoeff() > 0.0)) {
+        throw std::runtime_error("eigen solve: stiffness is not positive definite (a rigid-body mode remains)");
+    }
+    ModeSet set;
+    set.omega = lambda.cwiseSqrt();
+    set.shapes = std::move(shapes);
+    return set;
+}
+
+}  // namespace
+
+// Symmetric diagonal scaling D K D with unit diagonal: v rows (EI/L^3) and theta rows (EI/L) differ
+// by L^-2, many decades for a fine mesh, which would otherwise spoil the factorisations.
+Eigen::VectorXd equilibration(const SparseMatrix& K) {
+    Eigen::VectorXd d = K.diagonal();
+    if (!(d.minCoeff() > 0.0)) {
+        throw std::runtime_error("eigen solve: stiffness is not positive definite (a rigid-body mode remains)");
+    }
+    return d.cwiseSqrt().cwiseInverse();
+}
+
+ModeSet all_modes_dense(const SparseMatrix& K, const SparseMatrix& M) {
+    // Solved as the inverse problem (L^-1 M L^-T) y = (1/omega^2) y with K = L L^T: the lowest modes,
+    // the ones that matter, then carry the largest eigenvalues and hence full relative accuracy.
+    const Eigen::VectorXd d = equilibration(K);
+    const Eigen::MatrixXd ks = d.asDiagonal() * Eigen::MatrixXd(K) * d.asDiagonal();
+    const Eigen::MatrixXd ms = d.asDiagonal() * Eigen::MatrixXd(M) * d.asDiagonal();
+    const Eigen::LLT<Eigen::MatrixXd> llt(ks);
+    if (llt.info() != Eigen::Success) {
+        throw std::runtime_error("eigen solve: stiffness is not positive definite (a rigid-body mode remains)");
+    }
+    Eigen::MatrixXd c = llt.matrixL().solve(ms);
+    c = llt.matrixL().solve(c.transpose()).transpose();
+    const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(0.5 * (c + c.transpose()));
+    if (es.info() != Eigen::Success) throw std::runtime_error("eigen solve: dense solver failed");
+    const Eigen::Index n = c.rows();
+    Eigen::VectorXd lambda(n);
+    Eigen::MatrixXd shapes(n, n);
+    for (Eigen::Index j = 0; j < n; ++j) {
+        const Eigen::Index src = n - 1 - j;  // descending 1/omega^2 = ascending omega
+        lambda[j] = 1.0 / es.eigenvalues()[src];
+        shapes.col(j) = d.asDiagonal() * llt.matrixU().solve(es.eigenvectors().col(src));
+    }
+    ModeSet set = from_eigenvalues(lambda, std::move(shapes));
+    normalise(set, M);
+    return set;
+}
+
+ModeSet lowest_modes_sparse(const SparseMatrix& K, const SparseMatrix& M, int count) {
+    const int n = static_cast<int>(K.rows());
+    const int nev = std::clamp(count, 1, std::max(1, n - 1));
+    const int ncv = std::min(n, std::max(2 * nev + 1, nev + 20));
+    const Eigen::VectorXd d = equilibration(K);
+    const SparseMatrix ks = d.asDiagonal() * K * d.asDiagonal();
+    // Spectra judges convergence against max(|ritz value|, eps^(2/3)); scaling M to a unit largest
+    // diagonal makes the ritz values 1/lambda large, so the relative test applies.
+    const SparseMatrix ms0 = d.asDiagonal() * M * d.asDiagonal();
+    const double mscale = ms0.diagonal().maxCoeff();
+    const SparseMatrix ms = ms0 / mscale;
+    using OpType = Spectra::SymShiftInvert<double, Eigen::Sparse, Eigen::Sparse>;
+    using BOpType = Spectra::SparseSymMatProd<double>;
+    OpType op(ks, ms);
+    BOpType bop(ms);
+    Spectra::SymGEigsShiftSolver<OpType, BOpType, Spectra::GEigsMode::ShiftInvert> solver(op, bop, nev, ncv, 0.0);
+    solver.init();
+    solver.compute(Spectra::SortRule::LargestMagn, 1000, 1e-13, Spectra::SortRule::SmallestAlge);
+    if (solver.info() != Spectra::CompInfo::Successful) {
+        throw std::runtime_error("eigen solve: Lanczos iteration did not converge");
+    }
+    ModeSet set = from_eigenvalues(solver.eigenvalues() / mscale, d.asDiagonal() * solver.eigenvectors());
+    normalise(set, M);
+    return set;
+}
+
+ModeSet lowest_modes(const SparseMatrix& K, const SparseMatrix& M, int count) {
+    const int n = static_cast<int>(K.rows());
+    if (n == 0) return {};
+    count = std::clamp(count, 0, n);
+    if (n <= kDenseEigenLimit || count >= n - 1) {
+        ModeSet all = all_modes_dense(K, M);
+        return {all.omega.head(count), all.shapes.leftCols(count)};
+    }
+    return lowest_modes_sparse(K, M, count);
+}
+
+}  // namespace vi

@@ -1,0 +1,70 @@
+#pragma once
+// Case: the validated, unit-free (SI) description of one beam with its supports, damping and loads.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vi {
+
+// Boundary condition of one beam end.
+enum class EndCondition { clamped, pinned, free };
+
+// Which side of the beam a support's surface faces: below pushes up (+v), above pushes down.
+enum class Side { below, above };
+
+// Isotropic material; SI units (Pa, kg/m^3, dimensionless).
+struct Material {
+    double youngs_modulus = 0.0;   // E [Pa]
+    double density = 0.0;          // rho [kg/m^3]
+    double poisson_ratio = 0.0;    // nu [-]
+    bool plate_modulus = false;    // use E/(1-nu^2) for wide beams
+    // Modulus that enters the bending and axial stiffness [Pa].
+    [[nodiscard]] double effective_modulus() const;
+};
+
+// Straight prismatic beam along x from 0 to length, rectangular section width x thickness [m].
+struct Beam {
+    double length = 0.0;     // l [m]
+    double width = 0.0;      // w [m]
+    double thickness = 0.0;  // t [m]
+    int elements = 50;       // m, elements of the uniform mesh before support nodes are added
+    EndCondition left = EndCondition::clamped;   // end at x = 0
+    EndCondition right = EndCondition::free;     // end at x = l
+    [[nodiscard]] double area() const { return width * thickness; }                          // A [m^2]
+    [[nodiscard]] double second_moment() const { return width * thickness * thickness * thickness / 12.0; }  // I [m^4]
+};
+
+// Kelvin-Voigt motion limiter acting on v(x0).
+struct Support {
+    double position = 1.0;  // x0 / l in (0, 1]
+    Side side = Side::below;
+    // Height of the support surface above the beam's unloaded axis, on the support's own side
+    // convention: s = -gap; s > 0 is a prestress [m].
+    double surface = 0.0;
+    double stiffness = 0.0;                  // Kc [N/m]
+    double damping = 0.0;                    // Cc [N s/m]
+    std::optional<double> damping_ratio;     // if set, Cc is derived from it (see docs/model.md)
+};
+
+// Rayleigh damping C = alpha M + beta K: either alpha/beta directly or two ratios at two bending modes.
+struct RayleighDamping {
+    bool from_ratios = false;
+    double alpha = 0.0;        // [1/s]
+    double beta = 0.0;         // [s]
+    double ratio1 = 0.0;       // xi1 [-]
+    double ratio2 = 0.0;       // xi2 [-]
+    int mode1 = 1;             // bending mode numbers (1-based, unsupported beam) the ratios refer to
+    int mode2 = 2;
+};
+
+// Everything read from one case file, in SI units.
+struct Case {
+    std::string name;             // for output files and reports
+    Beam beam;
+    Material material;
+    std::vector<Support> supports;
+    RayleighDamping damping;
+};
+
+}  // namespace vi

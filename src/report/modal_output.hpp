@@ -1,0 +1,30 @@
+#pragma once
+// Modal results as JSON (stable field names), a readable text table and CSV files.
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "analysis/support_scan.hpp"
+#include "io/csv_table.hpp"
+#include "io/output_files.hpp"
+#include "modal/modal_analysis.hpp"
+
+namespace vi {
+
+// {"dofs", "unsupported": {"bending", "axial"}, "supported": {"bending", "axial", "ratios"}, ...}
+nlohmann::json modal_study_json(const ModalStudy& study);
+
+// Plain-text tables of frequencies, ratios, nodal points and peaks for a terminal.
+std::string modal_study_text(const ModalStudy& study);
+
+// Sampled bending shapes: x_over_l, x_m, then v_<i> and theta_<i> per mode (mass normalised, SI).
+CsvTable mode_shapes_csv(const ModalResult& result, int per_element);
+
+// Every file `modes --out` writes: modes.json, frequencies.csv, shapes_*.csv.
+OutputFiles modal_study_files(const ModalStudy& study);
+
+// One row per support position: x0_over_l, ratio_<i> = omega_i/omega_in, f_supported_<i>_hz.
+CsvTable support_scan_csv(const std::vector<SupportScanPoint>& points, int count);
+
+}  // namespace vi
