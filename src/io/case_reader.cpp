@@ -1,15 +1,14 @@
 #include "io/case_reader.hpp"
 
 #include <algorithm>
-#include <array>
 #include <cerrno>
-#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <system_error>
 #include <vector>
 
@@ -28,21 +27,26 @@
 namespace vi {
 namespace {
 
+using tomlio::clamp_to_int;
 using tomlio::FieldReader;
+using tomlio::integer_pair;
+using tomlio::number_pair;
+using tomlio::only_with;
 using tomlio::Position;
 using tomlio::ReadLog;
+
+// A [[loads]] entry whose time function is a CSV table, read once the case text is clean.
+struct TableFile {
+    std::size_t load = 0;  // index into Case::loads
+    std::string file;      // as written in the case file
+};
 
 // What reading found besides the Case itself.
 struct Reading {
     ReadLog log;                              // problems with the text; where each key stands
     std::vector<CaseProblem> value_problems;  // problems with values, reported with check_case's
+    std::vector<TableFile> tables;
 };
-
-int clamp_to_int(std::int64_t v) {
-    constexpr std::int64_t lo = std::numeric_limits<int>::min();
-    constexpr std::int64_t hi = std::numeric_limits<int>::max();
-    return static_cast<int>(std::clamp(v, lo, hi));
-}
 
 EndCondition end_condition(const std::string& s) {
     if (s == "pinned") return EndCondition::pinned;
@@ -55,59 +59,6 @@ const toml::table* sub_table(FieldReader& f, std::string_view key, bool required
     const toml::table* t = f.table(key, required);
     if (t != nullptr) at = tomlio::position_of(t->source(), f.key_position(key));
     return t;
-}
-
-// The array under key when it holds exactly two elements; else nullptr (problem logged).
-const toml::array* pair_array(FieldReader& f, std::string_view key, const std::string& what) {
-    const std::string expected = "an array of 2 " + what;
-    const toml::array* a = f.array(key, false, expected);
-    if (a == nullptr) return nullptr;
-    if (a->size() != 2) {
-        f.reject(key, "expected " + expected + ", got " + std::to_string(a->size()) + " element(s)");
-        return nullptr;
-    }
-    return a;
-}
-
-std::string element_path(const FieldReader& f, std::string_view key, std::size_t i) {
-    return tomlio::child_path(f.path(), key) + "[" + std::to_string(i) + "]";
-}
-
-Position element_position(const FieldReader& f, std::string_view key, const toml::node& element) {
-    return tomlio::position_of(element.source(), f.key_position(key));
-}
-
-// Two dimensionless numbers under key.
-std::optional<std::array<double, 2>> number_pair(FieldReader& f, std::string_view key, ReadLog& log) {
-    const toml::array* a = pair_array(f, key, "numbers");
-    if (a == nullptr) return std::nullopt;
-    std::array<double, 2> out{};
-    bool ok = true;
-    for (std::size_t i = 0; i < 2; ++i) {
-        const toml::node& e = *a->get(i);
-        const auto v = tomlio::read_quantity(e, Dimension::dimensionless, element_path(f, key, i),
-                                             element_position(f, key, e), log);
-        if (v) out[i] = *v;
-        ok = ok && v.has_value();
-    }
-    if (!ok) return std::nullopt;
-    return out;
-}
-
-// Two integers under key.
-std::optional<std::array<int, 2>> integer_pair(FieldReader& f, std::string_view key, ReadLog& log) {
-    const toml::array* a = pair_array(f, key, "integers");
-    if (a == nullptr) return std::nullopt;
-    std::array<int, 2> out{};
-    bool ok = true;
-    for (std::size_t i = 0; i < 2; ++i) {
-        const toml::node& e = *a->get(i);
-        const auto v = tomlio::read_integer(e, element_path(f, key, i), element_position(f, key, e), log);
-        if (v) out[i] = clamp_to_int(*v);
-        ok = ok && v.has_value();
-    }
-    if (!ok) return std::nullopt;
-    return out;
 }
 
 void read_beam(const toml::table& t, Position at, Reading& r, Beam& beam) {
@@ -176,22 +127,124 @@ Support read_support(const toml::table& t, const std::string& path, Position at,
     return s;
 }
 
-void read_supports(const toml::array& a, Position at, Reading& r, std::vector<Support>& out) {
+// Every entry of an array of tables ([[name]]), each read by read(table, "name[i]", position).
+template <class T, class Read>
+void read_entries(const toml::array& a, Position at, Reading& r, const std::string& name, std::vector<T>& out,
+                  Read read) {
     for (std::size_t i = 0; i < a.size(); ++i) {
         const toml::node& entry = *a.get(i);
-        const std::string path = "supports[" + std::to_string(i) + "]";
+        const std::string path = name + "[" + std::to_string(i) + "]";
         const Position p = tomlio::position_of(entry.source(), at);
         const toml::table* t = entry.as_table();
         if (t == nullptr) {
-            r.log.problem(p, path, "expected a table (a [[supports]] entry), got " + tomlio::type_name(entry));
+            r.log.problem(p, path, "expected a table (a [[" + name + "]] entry), got " + tomlio::type_name(entry));
             continue;
         }
-        out.push_back(read_support(*t, path, p, r));
+        out.push_back(read(*t, path, p));
     }
 }
 
+// [initial]: the static step before release. Keys of another kind (or velocity shape) are errors;
+// they are checked only once the kind itself could be read.
+void read_initial(const toml::table& t, Position at, Reading& r, InitialState& s) {
+    FieldReader f(t, "initial", at, r.log,
+                  {"kind", "position", "displacement", "force", "velocity", "velocity_shape", "velocity_mode"});
+    using Kind = InitialState::Kind;
+    const auto kind = f.choice("kind", {"rest", "displacement", "force"}, false);
+    if (kind) s.kind = *kind == "rest" ? Kind::rest : *kind == "force" ? Kind::force : Kind::displacement;
+    if (auto v = f.quantity("position", Dimension::dimensionless, false)) s.position = *v;
+    if (kind || !f.has("kind")) {
+        if (only_with(f, "displacement", s.kind == Kind::displacement, "initial.kind = \"displacement\"")) {
+            if (auto v = f.quantity("displacement", Dimension::length, true)) s.displacement = *v;
+        }
+        if (only_with(f, "force", s.kind == Kind::force, "initial.kind = \"force\"")) {
+            if (auto v = f.quantity("force", Dimension::force, true)) s.force = *v;
+        }
+    }
+    using Velocity = InitialState::Velocity;
+    const auto shape = f.choice("velocity_shape", {"none", "uniform", "mode"}, false);
+    if (shape || !f.has("velocity_shape")) {
+        if (shape) {
+            s.velocity_kind = *shape == "mode" ? Velocity::mode : *shape == "uniform" ? Velocity::uniform : Velocity::none;
+        } else {
+            s.velocity_kind = f.has("velocity") ? Velocity::uniform : Velocity::none;
+        }
+        const bool moving = s.velocity_kind != Velocity::none;
+        if (only_with(f, "velocity", moving, "initial.velocity_shape = \"uniform\" or \"mode\"")) {
+            if (auto v = f.quantity("velocity", Dimension::velocity, true)) s.velocity = *v;
+        }
+        if (only_with(f, "velocity_mode", s.velocity_kind == Velocity::mode, "initial.velocity_shape = \"mode\"")) {
+            if (auto v = f.integer("velocity_mode", false)) s.velocity_mode = clamp_to_int(*v);
+        }
+    }
+    f.finish();
+}
+
+// One [[loads]] entry; the keys of its time function depend on its kind.
+PointLoad read_load(const toml::table& t, const std::string& path, Position at, std::size_t index, Reading& r) {
+    FieldReader f(t, path, at, r.log,
+                  {"position", "amplitude", "kind", "t_on", "frequency", "phase", "offset", "table"});
+    PointLoad p;
+    if (auto v = f.quantity("position", Dimension::dimensionless, true)) p.position = *v;
+    if (auto v = f.quantity("amplitude", Dimension::force, true)) p.amplitude = *v;
+    using Kind = TimeFunction::Kind;
+    if (const auto kind = f.choice("kind", {"constant", "step", "harmonic", "table"}, true)) {
+        TimeFunction& g = p.time;
+        g.kind = *kind == "step" ? Kind::step : *kind == "harmonic" ? Kind::harmonic
+                 : *kind == "table" ? Kind::table : Kind::constant;
+        const auto only = [&](std::string_view key, Kind k, const char* name) {
+            return only_with(f, key, g.kind == k, path + ".kind = \"" + name + "\"");
+        };
+        if (only("t_on", Kind::step, "step")) {
+            if (auto v = f.quantity("t_on", Dimension::time, true)) g.t_on = *v;
+        }
+        if (only("frequency", Kind::harmonic, "harmonic")) {
+            if (auto v = f.quantity("frequency", Dimension::frequency, true)) g.frequency_hz = *v;
+        }
+        if (only("phase", Kind::harmonic, "harmonic")) {
+            if (auto v = f.quantity("phase", Dimension::dimensionless, false)) g.phase = *v;
+        }
+        if (only("offset", Kind::harmonic, "harmonic")) {
+            if (auto v = f.quantity("offset", Dimension::dimensionless, false)) g.offset = *v;
+        }
+        if (only("table", Kind::table, "table")) {
+            if (auto v = f.string("table", true)) {
+                if (v->empty()) {
+                    f.reject("table", "must not be empty (a CSV file name)");
+                } else {
+                    r.tables.push_back({index, *v});
+                }
+            }
+        }
+    }
+    f.finish();
+    return p;
+}
+
+void read_solver(const toml::table& t, Position at, Reading& r, SolverSettings& s) {
+    FieldReader f(t, "solver", at, r.log,
+                  {"method", "horizon", "output_step", "group_gap", "settle_tolerance", "rtol"});
+    if (auto v = f.choice("method", {"exact", "cvode"}, false)) {
+        s.method = *v == "cvode" ? SolverSettings::Method::cvode : SolverSettings::Method::exact;
+    }
+    // In the Case, 0 stands for "not given"; written in the file, these two must be positive.
+    const auto positive_time = [&](std::string_view key, double& out) {
+        if (auto v = f.quantity(key, Dimension::time, false)) {
+            out = *v;
+            if (!(*v > 0.0)) r.value_problems.push_back({"solver." + std::string(key), "must be positive"});
+        }
+    };
+    positive_time("horizon", s.horizon);
+    positive_time("output_step", s.output_step);
+    if (auto v = f.quantity("group_gap", Dimension::time, false)) s.group_gap = *v;
+    if (auto v = f.quantity("settle_tolerance", Dimension::dimensionless, false)) s.settle_tolerance = *v;
+    if (auto v = f.quantity("rtol", Dimension::dimensionless, false)) s.rtol = *v;
+    f.finish();
+}
+
 Case read_root(const toml::table& root, const std::string& default_name, Reading& r) {
-    FieldReader f(root, "", Position{}, r.log, {"name", "beam", "material", "damping", "supports"});
+    FieldReader f(root, "", Position{}, r.log,
+                  {"name", "beam", "material", "damping", "supports", "initial", "loads", "solver"});
     Case c;
     c.name = default_name;
     if (auto v = f.string("name", false)) {
@@ -203,8 +256,22 @@ Case read_root(const toml::table& root, const std::string& default_name, Reading
     if (const auto* t = sub_table(f, "material", true, at)) read_material(*t, at, r, c.material);
     if (const auto* t = sub_table(f, "damping", false, at)) read_damping(*t, at, r, c.damping);
     if (const auto* a = f.array("supports", false, "an array of tables ([[supports]])")) {
-        read_supports(*a, f.key_position("supports"), r, c.supports);
+        read_entries(*a, f.key_position("supports"), r, "supports", c.supports,
+                     [&](const toml::table& t, const std::string& path, Position p) { return read_support(t, path, p, r); });
     }
+    // Without [initial] the transient starts from the static equilibrium at rest.
+    c.initial.kind = InitialState::Kind::rest;
+    if (const auto* t = sub_table(f, "initial", false, at)) {
+        c.initial = InitialState{};
+        read_initial(*t, at, r, c.initial);
+    }
+    if (const auto* a = f.array("loads", false, "an array of tables ([[loads]])")) {
+        read_entries(*a, f.key_position("loads"), r, "loads", c.loads,
+                     [&](const toml::table& t, const std::string& path, Position p) {
+                         return read_load(t, path, p, c.loads.size(), r);
+                     });
+    }
+    if (const auto* t = sub_table(f, "solver", false, at)) read_solver(*t, at, r, c.solver);
     f.finish();
     return c;
 }
@@ -233,6 +300,93 @@ std::string default_name(const std::string& source_name) {
     return stem.empty() ? "case" : stem;
 }
 
+// The whole file as text; nullopt with the reason ("No such file or directory") when unreadable.
+std::optional<std::string> file_text(const std::string& path, std::string& reason) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        reason = "it is a directory";
+        return std::nullopt;
+    }
+    errno = 0;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        const int err = errno;
+        reason = err != 0 ? std::generic_category().message(err) : "cannot open";
+        return std::nullopt;
+    }
+    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (in.bad()) {
+        reason = "read error";
+        return std::nullopt;
+    }
+    return text;
+}
+
+std::string trimmed(std::string_view s) {
+    const auto b = s.find_first_not_of(" \t\r");
+    if (b == std::string_view::npos) return {};
+    return std::string(s.substr(b, s.find_last_not_of(" \t\r") - b + 1));
+}
+
+// A load's time-function table from CSV text: the header row "t_s,g", then one "time,value" row per
+// line (plain numbers, SI seconds), times strictly increasing; blank lines are skipped. Throws
+// InputError("FILE:LINE: reason") at the first bad line.
+void parse_load_table(const std::string& text, const std::string& file, TimeFunction& g) {
+    std::size_t line_no = 0;
+    const auto fail = [&](const std::string& why) {
+        throw InputError(one_line(file + ":" + std::to_string(std::max<std::size_t>(line_no, 1)) + ": " + why));
+    };
+    const auto number = [&](const std::string& field, const char* column) {
+        try {
+            return parse_quantity(field, Dimension::dimensionless);
+        } catch (const std::invalid_argument& e) {
+            fail(std::string(column) + ": " + e.what());
+        }
+        return 0.0;
+    };
+    bool header = false;
+    std::size_t begin = 0;
+    while (begin < text.size()) {
+        std::size_t end = text.find('\n', begin);
+        if (end == std::string::npos) end = text.size();
+        const std::string_view line(text.data() + begin, end - begin);
+        begin = end + 1;
+        ++line_no;
+        if (trimmed(line).empty()) continue;
+        const std::size_t comma = line.find(',');
+        if (comma == std::string_view::npos || line.find(',', comma + 1) != std::string_view::npos) {
+            fail("expected 2 comma-separated columns (t_s,g), got " + vi::quoted(line));
+        }
+        const std::string a = trimmed(line.substr(0, comma));
+        const std::string b = trimmed(line.substr(comma + 1));
+        if (!header) {
+            if (a != "t_s" || b != "g") fail("expected the header row \"t_s,g\", got " + vi::quoted(line));
+            header = true;
+            continue;
+        }
+        const double t = number(a, "t_s");
+        const double v = number(b, "g");
+        if (!g.times.empty() && !(t > g.times.back())) fail("t_s: times must increase strictly down the table");
+        g.times.push_back(t);
+        g.values.push_back(v);
+    }
+    if (!header) fail("empty table (expected the header row \"t_s,g\")");
+    if (g.times.empty()) fail("no rows below the header");
+}
+
+// Reads every [[loads]] table file, relative to the case file's folder.
+void read_load_tables(const std::string& source_name, Reading& r, Case& c) {
+    const std::filesystem::path folder = std::filesystem::path(source_name).parent_path();
+    for (const TableFile& t : r.tables) {
+        const std::string file = (folder / t.file).string();
+        const std::string key = "loads[" + std::to_string(t.load) + "].table";
+        std::string reason;
+        const auto text = file_text(file, reason);
+        if (!text) throw_problem(source_name, {r.log.where(key), key, "cannot read " + vi::quoted(file) + " (" + reason + ")"});
+        parse_load_table(*text, file, c.loads[t.load].time);
+    }
+}
+
 }  // namespace
 
 Case read_case_text(const std::string& text, const std::string& source_name) {
@@ -248,6 +402,7 @@ Case read_case_text(const std::string& text, const std::string& source_name) {
     Reading r;
     Case c = read_root(root, default_name(source_name), r);
     if (auto p = r.log.first()) throw_problem(source_name, *p);
+    read_load_tables(source_name, r, c);
 
     std::vector<CaseProblem> problems = r.value_problems;
     for (CaseProblem& p : check_case(c)) problems.push_back(std::move(p));
@@ -258,20 +413,10 @@ Case read_case_text(const std::string& text, const std::string& source_name) {
 }
 
 Case read_case_file(const std::string& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        throw InputError(one_line(path + ": cannot read file (it is a directory)"));
-    }
-    errno = 0;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        const int err = errno;
-        const std::string reason = err != 0 ? " (" + std::generic_category().message(err) + ")" : "";
-        throw InputError(one_line(path + ": cannot read file" + reason));
-    }
-    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad()) throw InputError(one_line(path + ": cannot read file (read error)"));
-    return read_case_text(text, path);
+    std::string reason;
+    const auto text = file_text(path, reason);
+    if (!text) throw InputError(one_line(path + ": cannot read file (" + reason + ")"));
+    return read_case_text(*text, path);
 }
 
 }  // namespace vi

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <utility>
 
@@ -33,6 +34,26 @@ std::string expected_quantity(Dimension d) {
     const std::string units = accepted_units(d);
     const std::string first_unit = units.substr(0, units.find(','));
     return "a number (SI) or a string with a unit such as \"1 " + first_unit + "\"";
+}
+
+// The array under key when it holds exactly two elements; else nullptr (problem logged).
+const toml::array* pair_array(FieldReader& f, std::string_view key, const std::string& what) {
+    const std::string expected = "an array of 2 " + what;
+    const toml::array* a = f.array(key, false, expected);
+    if (a == nullptr) return nullptr;
+    if (a->size() != 2) {
+        f.reject(key, "expected " + expected + ", got " + std::to_string(a->size()) + " element(s)");
+        return nullptr;
+    }
+    return a;
+}
+
+std::string element_path(const FieldReader& f, std::string_view key, std::size_t i) {
+    return child_path(f.path(), key) + "[" + std::to_string(i) + "]";
+}
+
+Position element_position(const FieldReader& f, std::string_view key, const toml::node& element) {
+    return position_of(element.source(), f.key_position(key));
 }
 
 }  // namespace
@@ -241,6 +262,48 @@ void FieldReader::finish() {
         log_.problem(position_of(key.source(), at_), child_path(path_, key.str()),
                      "unknown key (accepted here: " + join(accepted_) + ")");
     }
+}
+
+int clamp_to_int(std::int64_t v) {
+    constexpr std::int64_t lo = std::numeric_limits<int>::min();
+    constexpr std::int64_t hi = std::numeric_limits<int>::max();
+    return static_cast<int>(std::clamp(v, lo, hi));
+}
+
+std::optional<std::array<double, 2>> number_pair(FieldReader& f, std::string_view key, ReadLog& log) {
+    const toml::array* a = pair_array(f, key, "numbers");
+    if (a == nullptr) return std::nullopt;
+    std::array<double, 2> out{};
+    bool ok = true;
+    for (std::size_t i = 0; i < 2; ++i) {
+        const toml::node& e = *a->get(i);
+        const auto v = read_quantity(e, Dimension::dimensionless, element_path(f, key, i),
+                                     element_position(f, key, e), log);
+        if (v) out[i] = *v;
+        ok = ok && v.has_value();
+    }
+    if (!ok) return std::nullopt;
+    return out;
+}
+
+std::optional<std::array<int, 2>> integer_pair(FieldReader& f, std::string_view key, ReadLog& log) {
+    const toml::array* a = pair_array(f, key, "integers");
+    if (a == nullptr) return std::nullopt;
+    std::array<int, 2> out{};
+    bool ok = true;
+    for (std::size_t i = 0; i < 2; ++i) {
+        const toml::node& e = *a->get(i);
+        const auto v = read_integer(e, element_path(f, key, i), element_position(f, key, e), log);
+        if (v) out[i] = clamp_to_int(*v);
+        ok = ok && v.has_value();
+    }
+    if (!ok) return std::nullopt;
+    return out;
+}
+
+bool only_with(FieldReader& f, std::string_view key, bool allowed, const std::string& condition) {
+    if (!allowed && f.has(key)) f.reject(key, "only with " + condition);
+    return allowed;
 }
 
 }  // namespace vi::tomlio

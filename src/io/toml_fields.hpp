@@ -2,6 +2,7 @@
 // Typed, line-aware reading of TOML tables: each field read records where it stands in the file, and
 // every problem (unknown, missing, wrong type, bad unit, not finite) is collected with its position.
 
+#include <array>
 #include <cstdint>
 #include <initializer_list>
 #include <map>
@@ -106,5 +107,17 @@ private:
     ReadLog& log_;
     std::vector<std::string_view> accepted_;
 };
+
+// value clamped into int's range (so that range checks report out-of-int integers as too small or large).
+int clamp_to_int(std::int64_t v);
+
+// An array of exactly two dimensionless numbers, or of two integers, under key (problems logged,
+// each element under "key[i]"); nullopt when absent or wrong.
+std::optional<std::array<double, 2>> number_pair(FieldReader& f, std::string_view key, ReadLog& log);
+std::optional<std::array<int, 2>> integer_pair(FieldReader& f, std::string_view key, ReadLog& log);
+
+// A key that only some variants of a table accept: when it is present and !allowed, reports it as
+// "only with <condition>" (e.g. `only with initial.kind = "force"`). Returns allowed.
+bool only_with(FieldReader& f, std::string_view key, bool allowed, const std::string& condition);
 
 }  // namespace vi::tomlio

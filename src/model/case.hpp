@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "model/time_function.hpp"
+
 namespace vi {
 
 // Boundary condition of one beam end.
@@ -58,6 +60,44 @@ struct RayleighDamping {
     int mode2 = 2;
 };
 
+// How the transient starts (paper section 3): a static step, then release at t = 0.
+struct InitialState {
+    // rest: the static equilibrium with the supports (prestressed ones push), no step.
+    // displacement: the point at `position` is lifted by `displacement` above that equilibrium by a
+    // static point force there. force: a static point force `force` at `position`.
+    enum class Kind { rest, displacement, force };
+    Kind kind = Kind::displacement;
+    double position = 1.0;       // x/l of the displaced or loaded point
+    double displacement = 0.0;   // y0 [m], positive up
+    double force = 0.0;          // [N], positive up
+    // Initial velocity: none (release from rest), uniform v for every transverse DOF, or along a
+    // bending mode of the unsupported beam scaled so that the free end (or x = position) moves at
+    // `velocity`.
+    enum class Velocity { none, uniform, mode };
+    Velocity velocity_kind = Velocity::none;
+    double velocity = 0.0;       // [m/s]
+    int velocity_mode = 1;       // 1-based bending mode for Velocity::mode
+};
+
+// A time-dependent transverse point load Q(t) = amplitude * g(t) at x/l = position.
+struct PointLoad {
+    double position = 1.0;       // x/l
+    double amplitude = 0.0;      // [N]
+    TimeFunction time;
+};
+
+// Transient solver settings.
+struct SolverSettings {
+    enum class Method { exact, cvode };
+    Method method = Method::exact;
+    double horizon = 0.0;            // t_end [s]; 0 = not given (required by `simulate`)
+    double output_step = 0.0;        // time-history sampling [s]; 0 = horizon / 2000
+    double group_gap = 0.0;          // flights shorter than this join episodes into one impact [s];
+                                     // 0 = a quarter of the first unsupported period
+    double settle_tolerance = 0.01;  // impacts below this fraction of the first peak penetration end T_p
+    double rtol = 1e-10;             // CVODE relative tolerance
+};
+
 // Everything read from one case file, in SI units.
 struct Case {
     std::string name;             // for output files and reports
@@ -65,6 +105,9 @@ struct Case {
     Material material;
     std::vector<Support> supports;
     RayleighDamping damping;
+    InitialState initial;
+    std::vector<PointLoad> loads;
+    SolverSettings solver;
 };
 
 }  // namespace vi

@@ -1,6 +1,7 @@
 #include "model/case_checks.hpp"
 
 #include <cmath>
+#include <sstream>
 #include <string>
 
 namespace vi {
@@ -24,6 +25,113 @@ void require_non_negative(std::vector<CaseProblem>& out, const std::string& key,
     } else if (value < 0.0) {
         out.push_back({key, "must not be negative"});
     }
+}
+
+void require_finite(std::vector<CaseProblem>& out, const std::string& key, double value) {
+    if (!std::isfinite(value)) out.push_back({key, "must be a finite number"});
+}
+
+// x/l of a point on the beam: in (0, 1].
+void require_beam_point(std::vector<CaseProblem>& out, const std::string& key, double position) {
+    if (!std::isfinite(position)) {
+        out.push_back({key, "must be a finite number"});
+    } else if (!(position > 0.0 && position <= 1.0)) {
+        out.push_back({key, "must lie in (0, 1] (x/l)"});
+    }
+}
+
+// True when x/l = position is the right end and that end is clamped or pinned (v fixed there).
+bool at_fixed_end(const Case& c, double position) {
+    return position == 1.0 && c.beam.right != EndCondition::free;
+}
+
+std::string number_text(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+
+// Height of a support's surface in beam coordinates (v, positive up).
+double surface_height(const Support& s) { return s.side == Side::below ? s.surface : -s.surface; }
+
+// A support below and one above at the same place must leave room for the beam between them.
+void check_opposite_supports(std::vector<CaseProblem>& out, const std::vector<Support>& supports) {
+    for (std::size_t i = 0; i < supports.size(); ++i) {
+        const Support& s = supports[i];
+        for (std::size_t j = 0; j < i; ++j) {
+            const Support& o = supports[j];
+            if (o.side == s.side || std::abs(o.position - s.position) > 1e-12) continue;
+            const double below = surface_height(s.side == Side::below ? s : o);
+            const double above = surface_height(s.side == Side::above ? s : o);
+            if (below < above) continue;
+            const char* key = s.surface < 0.0 ? "gap" : s.surface > 0.0 ? "prestress" : "position";
+            out.push_back({support_key(i, key),
+                           "overlaps supports[" + std::to_string(j) + "] on the other side (the surface below, at v = " +
+                               number_text(below) + " m, must lie under the surface above, at v = " +
+                               number_text(above) + " m)"});
+        }
+    }
+}
+
+void check_initial(std::vector<CaseProblem>& out, const Case& c) {
+    const InitialState& in = c.initial;
+    using Kind = InitialState::Kind;
+    using Velocity = InitialState::Velocity;
+    require_beam_point(out, "initial.position", in.position);
+    const bool steps = (in.kind == Kind::displacement && in.displacement != 0.0) ||
+                       (in.kind == Kind::force && in.force != 0.0) ||
+                       (in.velocity_kind == Velocity::mode && in.velocity != 0.0);
+    if (steps && at_fixed_end(c, in.position)) {
+        out.push_back({"initial.position", "lies at a clamped or pinned end, where v cannot move"});
+    }
+    if (in.kind == Kind::displacement) require_finite(out, "initial.displacement", in.displacement);
+    if (in.kind == Kind::force) require_finite(out, "initial.force", in.force);
+    if (in.velocity_kind != Velocity::none) require_finite(out, "initial.velocity", in.velocity);
+    if (in.velocity_kind == Velocity::mode && in.velocity_mode < 1) {
+        out.push_back({"initial.velocity_mode", "must be at least 1"});
+    }
+}
+
+void check_load(std::vector<CaseProblem>& out, const Case& c, std::size_t k) {
+    const PointLoad& p = c.loads[k];
+    const std::string at = "loads[" + std::to_string(k) + "].";
+    require_beam_point(out, at + "position", p.position);
+    if (at_fixed_end(c, p.position)) out.push_back({at + "position", "a load at a clamped or pinned end does nothing"});
+    require_finite(out, at + "amplitude", p.amplitude);
+    const TimeFunction& g = p.time;
+    switch (g.kind) {
+        case TimeFunction::Kind::constant: break;
+        case TimeFunction::Kind::step: require_non_negative(out, at + "t_on", g.t_on); break;
+        case TimeFunction::Kind::harmonic:
+            require_positive(out, at + "frequency", g.frequency_hz);
+            require_finite(out, at + "phase", g.phase);
+            require_finite(out, at + "offset", g.offset);
+            break;
+        case TimeFunction::Kind::table: {
+            bool ok = !g.times.empty() && g.times.size() == g.values.size();
+            for (std::size_t i = 0; ok && i < g.times.size(); ++i) {
+                ok = std::isfinite(g.times[i]) && std::isfinite(g.values[i]) && (i == 0 || g.times[i] > g.times[i - 1]);
+            }
+            if (!ok) out.push_back({at + "table", "needs finite rows with strictly increasing times"});
+            break;
+        }
+    }
+}
+
+void check_solver(std::vector<CaseProblem>& out, const SolverSettings& s) {
+    // horizon and output_step: 0 stands for "not given".
+    if (!std::isfinite(s.horizon) || s.horizon < 0.0) out.push_back({"solver.horizon", "must be positive"});
+    if (!std::isfinite(s.output_step) || s.output_step < 0.0) {
+        out.push_back({"solver.output_step", "must be positive"});
+    } else if (s.horizon > 0.0 && s.output_step > s.horizon) {
+        out.push_back({"solver.output_step",
+                       "must not exceed solver.horizon (" + number_text(s.horizon) + " s)"});
+    }
+    require_non_negative(out, "solver.group_gap", s.group_gap);
+    if (!(s.settle_tolerance > 0.0 && s.settle_tolerance < 1.0)) {
+        out.push_back({"solver.settle_tolerance", "must lie in (0, 1)"});
+    }
+    if (!(s.rtol > 0.0 && s.rtol <= 1e-3)) out.push_back({"solver.rtol", "must lie in (0, 1e-3]"});
 }
 
 }  // namespace
@@ -63,8 +171,7 @@ std::vector<CaseProblem> check_case(const Case& c) {
         } else if (!(s.position > 0.0 && s.position <= 1.0)) {
             out.push_back({support_key(i, "position"), "must lie in (0, 1] (x0/l)"});
         }
-        const bool at_fixed_end = s.position == 1.0 && c.beam.right != EndCondition::free;
-        if (at_fixed_end) out.push_back({support_key(i, "position"), "a support at a clamped or pinned end never moves"});
+        if (at_fixed_end(c, s.position)) out.push_back({support_key(i, "position"), "a support at a clamped or pinned end never moves"});
         if (!std::isfinite(s.surface)) out.push_back({support_key(i, "gap"), "must be a finite number"});
         require_positive(out, support_key(i, "stiffness"), s.stiffness);
         require_non_negative(out, support_key(i, "damping"), s.damping);
@@ -78,6 +185,8 @@ std::vector<CaseProblem> check_case(const Case& c) {
         }
     }
 
+    check_opposite_supports(out, c.supports);
+
     const RayleighDamping& d = c.damping;
     if (d.from_ratios) {
         require_non_negative(out, "damping.ratios", d.ratio1);
@@ -88,6 +197,9 @@ std::vector<CaseProblem> check_case(const Case& c) {
         require_non_negative(out, "damping.alpha", d.alpha);
         require_non_negative(out, "damping.beta", d.beta);
     }
+    check_initial(out, c);
+    for (std::size_t k = 0; k < c.loads.size(); ++k) check_load(out, c, k);
+    check_solver(out, c.solver);
     return out;
 }
 

@@ -1,0 +1,62 @@
+#pragma once
+// TransientResult: sampled time history, contact episodes and energy ledger of one transient.
+
+#include <string>
+#include <vector>
+
+namespace vi {
+
+// One stretch of contact of one support (DESIGN.md section 3).
+struct ContactEpisode {
+    int support = 0;              // index of the contact element
+    double t_on = 0.0;            // onset [s]
+    double t_off = 0.0;           // end [s] (the horizon if still closed; see `closed_at_end`)
+    double v_in = 0.0;            // velocity of the contact point at onset [m/s] (dv/dt, signed)
+    double v_out = 0.0;           // velocity of the contact point at separation [m/s]
+    double peak_force = 0.0;      // largest F during the episode [N]
+    double peak_penetration = 0.0;  // largest d during the episode [m]
+    double impulse = 0.0;         // integral of F over the episode [N s]
+    bool closed_at_end = false;   // still in contact when the horizon ended
+};
+
+// Energy terms [J]; with no damping, kinetic + strain + contact_spring - external_work is conserved.
+struct EnergyLedger {
+    double kinetic = 0.0;             // 1/2 v^T M v
+    double strain = 0.0;              // 1/2 q^T K q
+    double contact_spring = 0.0;      // sum of 1/2 Kc d^2 over closed contacts
+    double rayleigh_dissipated = 0.0; // integral of v^T C v dt
+    double contact_dissipated = 0.0;  // integral of Cc (dd/dt)^2 dt over closed contacts
+    double external_work = 0.0;       // integral of Q(t)^T v dt, contact surfaces' static part excluded
+};
+
+// Samples at the output step: the time history the CSV holds.
+struct TimeHistory {
+    std::vector<double> t;                          // [s]
+    std::vector<double> tip_v, tip_velocity;        // watched point (free end) [m], [m/s]
+    std::vector<std::vector<double>> contact_v;     // per contact: v at the contact point [m]
+    std::vector<std::vector<double>> contact_velocity;  // [m/s]
+    std::vector<std::vector<double>> contact_force; // F (0 when open) [N]
+    std::vector<EnergyLedger> energy;
+};
+
+// Where the solver's time went, for benchmarks [s of wall time] and counts.
+struct SolverStats {
+    double decomposition_s = 0.0;
+    double propagation_s = 0.0;
+    double event_location_s = 0.0;
+    int decompositions = 0;
+    int events = 0;
+    int steps = 0;                 // CVODE internal steps, or exact-solver pieces
+    std::string method;            // "exact" or "cvode"
+};
+
+struct TransientResult {
+    TimeHistory history;
+    std::vector<ContactEpisode> episodes;  // in onset order
+    EnergyLedger initial_energy;           // at t = 0
+    EnergyLedger final_energy;             // at t_end
+    double t_end = 0.0;
+    SolverStats stats;
+};
+
+}  // namespace vi
