@@ -1,0 +1,195 @@
+#include "dynamics/exact_solver.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "dynamics/event_search.hpp"
+#include "dynamics/exact_state.hpp"
+
+namespace vi {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// Largest value of f over [0, tau_end] with the place where it is reached (certified search of the
+// downward crossings of f').
+double maximum_over(const ExpSignal& f, double tau_end, const CrossingSearch& cs, int* evals) {
+    const ExpSignal df = derivative_signal(f);
+    ExpSignal neg_df = df;
+    negate(neg_df);
+    double best = std::max(f.value(0.0), f.value(tau_end));
+    double tau = 0.0;
+    for (int guard = 0; guard < 100000 && tau < tau_end; ++guard) {
+        // Rising stretch: the next maximum is where f' turns negative.
+        if (df.value(tau) > 0.0) {
+            const auto top = first_upcrossing(neg_df, tau, tau_end, cs, evals);
+            if (!top) break;
+            best = std::max(best, f.value(*top));
+            tau = *top + cs.t_tol;
+        } else {
+            const auto bottom = first_upcrossing(df, tau, tau_end, cs, evals);
+            if (!bottom) break;
+            tau = *bottom + cs.t_tol;
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o) {
+    if (p.size() == 0) throw std::runtime_error("transient: the model has no free bending DOF");
+    if (!(p.t_end > 0.0)) throw std::runtime_error("transient: the horizon must be positive");
+    TransientResult res;
+    res.stats.method = "exact";
+    res.t_end = p.t_end;
+    auto t_dec = Clock::now();
+    ExactModel model(p, o.energy);
+    res.stats.decomposition_s += seconds_since(t_dec);
+
+    const int nc = static_cast<int>(p.contacts.size());
+    const double period1 = 2.0 * std::numbers::pi / model.base().omega[0];
+    CrossingSearch cs;
+    cs.h_min = o.h_min_periods * period1;
+
+    std::vector<bool> active = p.active0;
+    if (active.size() != p.contacts.size()) active.assign(p.contacts.size(), false);
+    Eigen::VectorXd x = model.initial_state(p.q0, p.v0);
+
+    std::vector<int> open(static_cast<std::size_t>(nc), -1);
+    auto open_episode = [&](int c, double t, double v_in) {
+        ContactEpisode e;
+        e.support = c;
+        e.t_on = t;
+        e.v_in = v_in;
+        open[static_cast<std::size_t>(c)] = static_cast<int>(res.episodes.size());
+        res.episodes.push_back(e);
+    };
+
+    std::vector<double> breaks;
+    for (const LoadTerm& l : p.loads) {
+        for (double b : l.time.breakpoints(0.0, p.t_end)) breaks.push_back(b);
+    }
+    std::sort(breaks.begin(), breaks.end());
+
+    const double dt_out = p.output_step > 0 ? p.output_step : p.t_end / 2000.0;
+    const long n_samples = o.history ? static_cast<long>(std::floor(p.t_end / dt_out * (1 + 1e-12))) + 1 : 0;
+    long next_sample = 0;
+    EnergyLedger ledger;
+    int zero_length_run = 0;
+    double t = 0.0;
+
+    {
+        t_dec = Clock::now();
+        const PieceSolution& first = model.piece(active, x, 0.0, p.t_end);
+        res.stats.decomposition_s += seconds_since(t_dec);
+        for (int c = 0; c < nc; ++c) {
+            if (active[static_cast<std::size_t>(c)]) open_episode(c, 0.0, first.contact_velocity(c).value(0.0));
+        }
+        if (o.energy) res.initial_energy = first.energy_at(0.0, ledger);
+    }
+
+    while (t < p.t_end) {
+        const auto bit = std::upper_bound(breaks.begin(), breaks.end(), t * (1 + 1e-15));
+        const double piece_end = bit == breaks.end() ? p.t_end : std::min(p.t_end, *bit);
+        t_dec = Clock::now();
+        const PieceSolution& s = model.piece(active, x, t, piece_end);
+        res.stats.decomposition_s += seconds_since(t_dec);
+        const double span = piece_end - t;
+        cs.t_tol = 4.0 * std::numeric_limits<double>::epsilon() * (t + period1);
+
+        const auto t_ev = Clock::now();
+        double tau_e = span;
+        int who = -1;
+        for (int c = 0; c < nc; ++c) {
+            const auto hit = first_upcrossing(s.event_function(c), 0.0, tau_e, cs, &res.stats.steps);
+            if (hit && *hit <= tau_e) {
+                tau_e = *hit;
+                who = c;
+            }
+            if (s.waits_for_release(c)) {
+                // d reaching 0 only changes which function is watched: the piece ends, the state stays.
+                const auto out = first_upcrossing(s.release_function(c), 0.0, tau_e, cs, &res.stats.steps);
+                if (out && *out < tau_e) {
+                    tau_e = *out;
+                    who = -1;
+                }
+            }
+        }
+        res.stats.event_location_s += seconds_since(t_ev);
+
+        const auto t_prop = Clock::now();
+        while (next_sample < n_samples) {
+            const double ts = std::min(next_sample * dt_out, p.t_end);
+            if (ts > t + tau_e || (ts == t + tau_e && t + tau_e < p.t_end)) break;
+            s.sample(ts - t, ts, active, res.history, o.energy, ledger);
+            ++next_sample;
+        }
+        for (int c = 0; c < nc; ++c) {
+            const int e = open[static_cast<std::size_t>(c)];
+            if (e < 0) continue;
+            ContactEpisode& ep = res.episodes[static_cast<std::size_t>(e)];
+            const ExpSignal& F = s.contact_force(c);
+            ep.impulse += F.integral(tau_e);
+            ep.peak_force = std::max(ep.peak_force, maximum_over(F, tau_e, cs, &res.stats.steps));
+            ep.peak_penetration =
+                std::max(ep.peak_penetration, maximum_over(s.penetration(c), tau_e, cs, &res.stats.steps));
+        }
+        if (o.energy) s.accumulate_dissipation(tau_e, ledger);
+        x = s.state_at(tau_e);
+        res.stats.propagation_s += seconds_since(t_prop);
+        ++res.stats.steps;
+        t += tau_e;
+        if (tau_e <= cs.t_tol) {
+            if (++zero_length_run > 50) {
+                throw std::runtime_error("transient: contact chatters without end near t = " + std::to_string(t) +
+                                         " s (zero-length contact states repeat)");
+            }
+        } else {
+            zero_length_run = 0;
+        }
+        if (who >= 0) {
+            ++res.stats.events;
+            const double v_contact = s.contact_velocity(who).value(tau_e);
+            const std::size_t w = static_cast<std::size_t>(who);
+            // A damped contact opens (F = 0) while still compressed (d > 0): the massless Kelvin-Voigt
+            // element then relaxes through its damper, so its spring energy is booked as contact
+            // dissipation; a closing at d > 0 books it back (docs/model.md).
+            const double d_switch = std::max(0.0, s.penetration(who).value(tau_e));
+            const double stored = 0.5 * p.contacts[w].stiffness * d_switch * d_switch;
+            ledger.contact_dissipated += active[w] ? stored : -stored;
+            if (active[w]) {
+                ContactEpisode& ep = res.episodes[static_cast<std::size_t>(open[w])];
+                ep.t_off = t;
+                ep.v_out = v_contact;
+                open[w] = -1;
+            } else {
+                open_episode(who, t, v_contact);
+            }
+            active[w] = !active[w];
+        }
+    }
+    for (int c = 0; c < nc; ++c) {
+        const int e = open[static_cast<std::size_t>(c)];
+        if (e < 0) continue;
+        ContactEpisode& ep = res.episodes[static_cast<std::size_t>(e)];
+        ep.t_off = p.t_end;
+        ep.closed_at_end = true;
+    }
+    if (o.energy) {
+        const PieceSolution& last = model.piece(active, x, p.t_end, p.t_end);
+        res.final_energy = last.energy_at(0.0, ledger);
+    }
+    res.stats.decompositions = model.decompositions();
+    std::sort(res.episodes.begin(), res.episodes.end(),
+              [](const ContactEpisode& a, const ContactEpisode& b) { return a.t_on < b.t_on; });
+    return res;
+}
+
+}  // namespace vi

@@ -1,0 +1,20 @@
+#pragma once
+// Exact event-driven solver: within each contact state the response is a sum of modal exponentials
+// (decomposed once per state and reused); only the switching instants are found by root finding.
+
+#include "dynamics/transient_problem.hpp"
+#include "dynamics/transient_result.hpp"
+
+namespace vi {
+
+struct ExactOptions {
+    bool energy = true;           // energy ledger and energy history (costs O(n^2) per sample)
+    bool history = true;          // sample the time history at the output step
+    double h_min_periods = 1e-9;  // smallest search step, in periods of the first free mode
+};
+
+// Solves the problem from t = 0 to p.t_end. Throws std::runtime_error on numerical trouble
+// (a state that cannot be decomposed, chattering without end, resonant undamped forcing).
+TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o = {});
+
+}  // namespace vi

@@ -1,0 +1,318 @@
+#include "dynamics/exact_state.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace vi {
+namespace {
+
+Eigen::VectorXd contact_row(const BaseModes& b, const ContactElement& c) { return b.phi.row(c.dof).transpose(); }
+
+}  // namespace
+
+ExpSignal derivative_signal(const ExpSignal& f) {
+    ExpSignal d;
+    d.lambda = f.lambda;
+    d.A = f.A.cwiseProduct(*f.lambda);
+    for (const ExpTerm& t : f.terms) {
+        if (t.power == 0) {
+            if (t.s != cd(0.0)) d.terms.push_back({t.coef * t.s, t.s, 0});
+        } else {
+            d.terms.push_back({t.coef, t.s, 0});
+            if (t.s != cd(0.0)) d.terms.push_back({t.coef * t.s, t.s, 1});
+        }
+    }
+    return d;
+}
+
+void negate(ExpSignal& f) {
+    f.A = -f.A;
+    for (ExpTerm& t : f.terms) t.coef = -t.coef;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+ExactModel::ExactModel(const TransientProblem& p, bool energy) : p_(&p), energy_(energy), base_(base_modes(p)) {
+    phit_m_ = base_.phi.transpose() * p.M;
+}
+
+Eigen::VectorXd ExactModel::initial_state(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0) const {
+    Eigen::VectorXd x(2 * base_.n);
+    x.head(base_.n) = phit_m_ * q0;
+    x.tail(base_.n) = phit_m_ * v0;
+    return x;
+}
+
+const StateData& ExactModel::state(const std::vector<bool>& active) {
+    auto it = cache_.find(active);
+    if (it != cache_.end()) return *it->second;
+    auto sd = std::make_unique<StateData>();
+    sd->modes = decompose_state(base_, *p_, active);
+    const int n = base_.n;
+    const Eigen::MatrixXcd& R = sd->modes.R;
+    const int nc = static_cast<int>(p_->contacts.size());
+    sd->contact_v.resize(nc, 2 * n);
+    sd->contact_vel.resize(nc, 2 * n);
+    for (int c = 0; c < nc; ++c) {
+        const Eigen::RowVectorXcd row = contact_row(base_, p_->contacts[static_cast<std::size_t>(c)]).transpose().cast<cd>();
+        sd->contact_v.row(c) = row * R.topRows(n);
+        sd->contact_vel.row(c) = row * R.bottomRows(n);
+    }
+    const int tip = p_->tip_dof >= 0 ? p_->tip_dof : 0;
+    const Eigen::RowVectorXcd tip_row = base_.phi.row(tip).cast<cd>();
+    sd->tip_v = tip_row * R.topRows(n);
+    sd->tip_vel = tip_row * R.bottomRows(n);
+    sd->load_vel.resize(static_cast<Eigen::Index>(p_->loads.size()), 2 * n);
+    for (std::size_t l = 0; l < p_->loads.size(); ++l) {
+        const Eigen::RowVectorXcd row = (base_.phi.transpose() * p_->loads[l].shape).transpose().cast<cd>();
+        sd->load_vel.row(static_cast<Eigen::Index>(l)) = row * R.bottomRows(n);
+    }
+    if (energy_) {
+        const Eigen::VectorXcd& lam = sd->modes.lambda;
+        const double scale = lam.cwiseAbs().maxCoeff();
+        sd->cauchy.resize(2 * n, 2 * n);
+        for (int k = 0; k < 2 * n; ++k) {
+            for (int l = 0; l < 2 * n; ++l) {
+                const cd mu = lam[k] + lam[l];
+                // mu = 0 only pairs an undamped mode with its conjugate; such a mode dissipates nothing.
+                sd->cauchy(k, l) = std::abs(mu) > 1e-14 * scale ? 1.0 / mu : cd(0.0);
+            }
+        }
+        const Eigen::VectorXd d = 2.0 * base_.zeta.cwiseProduct(base_.omega);
+        const Eigen::MatrixXcd rv = R.bottomRows(n);
+        sd->rayleigh_w = rv.transpose() * (d.cast<cd>().asDiagonal() * rv);
+        sd->rayleigh_wc = sd->rayleigh_w.cwiseProduct(sd->cauchy);
+    }
+    auto [pos, inserted] = cache_.emplace(active, std::move(sd));
+    (void)inserted;
+    return *pos->second;
+}
+
+const PieceSolution& ExactModel::piece(const std::vector<bool>& active, const Eigen::VectorXd& x0, double t0,
+                                       double t1) {
+    const StateData& s = state(active);
+    piece_ = std::make_unique<PieceSolution>(*p_, base_, s, active, x0, t0, t1, energy_);
+    return *piece_;
+}
+
+// ---------------------------------------------------------------------------------------------
+
+PieceSolution::PieceSolution(const TransientProblem& p, const BaseModes& b, const StateData& s,
+                             const std::vector<bool>& active, const Eigen::VectorXd& x0, double t0, double t1,
+                             bool energy)
+    : p_(&p), b_(&b), s_(&s), active_(active) {
+    const int n = b.n;
+    const Eigen::MatrixXcd& L = s.modes.L;
+    const Eigen::VectorXcd& lam = s.modes.lambda;
+    // Forcing in x coordinates: constant part (closed contacts' surfaces and constant loads), ramps,
+    // and the exponentials of harmonic loads.
+    Eigen::VectorXd f_const = Eigen::VectorXd::Zero(2 * n);
+    Eigen::VectorXd f_ramp = Eigen::VectorXd::Zero(2 * n);
+    for (std::size_t c = 0; c < p.contacts.size(); ++c) {
+        if (!active[c]) continue;
+        const ContactElement& ce = p.contacts[c];
+        f_const.tail(n) += contact_row(b, ce) * (ce.stiffness * ce.surface);
+    }
+    struct Raw {
+        Eigen::VectorXcd F;
+        cd s;
+        int power;
+    };
+    std::vector<Raw> raw;
+    const double tm = 0.5 * (t0 + t1);
+    for (std::size_t l = 0; l < p.loads.size(); ++l) {
+        const LoadTerm& ld = p.loads[l];
+        const Eigen::VectorXd modal = b.phi.transpose() * ld.shape;
+        Eigen::VectorXd fx = Eigen::VectorXd::Zero(2 * n);
+        fx.tail(n) = modal * ld.amplitude;
+        // g on [t0, t1]: g(t0 + tau) = g0 + g1 tau (+ harmonic part).
+        double g0 = 0.0, g1 = 0.0;
+        switch (ld.time.kind) {
+            case TimeFunction::Kind::constant:
+            case TimeFunction::Kind::step: g0 = ld.time(tm); break;
+            case TimeFunction::Kind::table: {
+                g1 = t1 > t0 ? (ld.time(t1) - ld.time(t0)) / (t1 - t0) : 0.0;
+                g0 = ld.time(tm) - g1 * (tm - t0);
+                break;
+            }
+            case TimeFunction::Kind::harmonic: {
+                g0 = ld.time.offset;
+                const double w = 2.0 * std::numbers::pi * ld.time.frequency_hz;
+                const double th = w * t0 + ld.time.phase;
+                const cd k1 = std::exp(cd(0.0, th)) / cd(0.0, 2.0);
+                raw.push_back({fx.cast<cd>() * k1, cd(0.0, w), 0});
+                raw.push_back({fx.cast<cd>() * -std::conj(k1), cd(0.0, -w), 0});
+                break;
+            }
+        }
+        f_const += g0 * fx;
+        f_ramp += g1 * fx;
+    }
+    if (f_const.squaredNorm() > 0.0) raw.push_back({f_const.cast<cd>(), cd(0.0), 0});
+    if (f_ramp.squaredNorm() > 0.0) raw.push_back({f_ramp.cast<cd>(), cd(0.0), 1});
+
+    // Particular solutions, per mode k of the state: c' = lambda c + G exp(s tau) (tau^p).
+    const double lscale = lam.cwiseAbs().maxCoeff();
+    Eigen::VectorXcd p0 = Eigen::VectorXcd::Zero(2 * n);
+    for (const Raw& r : raw) {
+        const Eigen::VectorXcd G = L * r.F;
+        Eigen::VectorXcd c1(2 * n);
+        for (int k = 0; k < 2 * n; ++k) {
+            const cd gap = r.s - lam[k];
+            if (std::abs(gap) <= 1e-13 * lscale) {
+                throw std::runtime_error("transient: a load excites an undamped mode exactly at resonance");
+            }
+            c1[k] = G[k] / gap;
+        }
+        if (r.power == 0) {
+            terms_.push_back({c1, r.s, 0});
+            p0 += c1;
+        } else {
+            Eigen::VectorXcd c0(2 * n);
+            for (int k = 0; k < 2 * n; ++k) c0[k] = -c1[k] / (r.s - lam[k]);
+            terms_.push_back({c1, r.s, 1});
+            terms_.push_back({c0, r.s, 0});
+            p0 += c0;
+        }
+    }
+    a_ = L * x0.cast<cd>() - p0;
+
+    const std::size_t nc = p.contacts.size();
+    for (std::size_t c = 0; c < nc; ++c) {
+        const ContactElement& ce = p.contacts[c];
+        const ExpSignal v = channel(s.contact_v.row(static_cast<Eigen::Index>(c)), 1.0, 0.0);
+        ExpSignal vel = channel(s.contact_vel.row(static_cast<Eigen::Index>(c)), 1.0, 0.0);
+        // d = sign (surface - v); F = Kc d + Cc dd/dt = Kc d - sign Cc v'.
+        ExpSignal d = channel(s.contact_v.row(static_cast<Eigen::Index>(c)), -ce.sign, ce.sign * ce.surface);
+        ExpSignal F = channel(s.contact_v.row(static_cast<Eigen::Index>(c)), -ce.sign * ce.stiffness,
+                              ce.sign * ce.stiffness * ce.surface);
+        const ExpSignal fv = channel(s.contact_vel.row(static_cast<Eigen::Index>(c)), -ce.sign * ce.damping, 0.0);
+        F.A += fv.A;
+        F.terms.insert(F.terms.end(), fv.terms.begin(), fv.terms.end());
+        ExpSignal ev = active[c] ? F : d;
+        if (active[c]) negate(ev);
+        // Open but penetrated beyond roundoff: only a positive F can close it again.
+        const double d0 = d.value(0.0);
+        const bool release = !active[c] && d0 > 64.0 * std::numeric_limits<double>::epsilon() * d.bound(0.0, 0.0, 0);
+        if (release) ev = F;
+        ExpSignal rel = d;
+        negate(rel);
+        release_.push_back(release);
+        release_fn_.push_back(std::move(rel));
+        v_.push_back(v);
+        vel_.push_back(std::move(vel));
+        pen_.push_back(std::move(d));
+        force_.push_back(std::move(F));
+        event_.push_back(std::move(ev));
+    }
+    tip_v_ = channel(s.tip_v, 1.0, 0.0);
+    tip_vel_ = channel(s.tip_vel, 1.0, 0.0);
+    if (energy) {
+        for (std::size_t l = 0; l < p.loads.size(); ++l) {
+            load_vel_.push_back(channel(s.load_vel.row(static_cast<Eigen::Index>(l)), p.loads[l].amplitude, 0.0));
+            // g(t0 + tau) as a terms-only signal.
+            ExpSignal g;
+            g.lambda = &s.modes.lambda;
+            const TimeFunction& tf = p.loads[l].time;
+            if (tf.kind == TimeFunction::Kind::harmonic) {
+                const double w = 2.0 * std::numbers::pi * tf.frequency_hz;
+                const cd k1 = std::exp(cd(0.0, w * t0 + tf.phase)) / cd(0.0, 2.0);
+                g.terms.push_back({k1, cd(0.0, w), 0});
+                g.terms.push_back({-std::conj(k1), cd(0.0, -w), 0});
+                g.terms.push_back({tf.offset, 0.0, 0});
+            } else if (tf.kind == TimeFunction::Kind::table) {
+                const double g1 = t1 > t0 ? (tf(t1) - tf(t0)) / (t1 - t0) : 0.0;
+                g.terms.push_back({tf(tm) - g1 * (tm - t0), 0.0, 0});
+                g.terms.push_back({g1, 0.0, 1});
+            } else {
+                g.terms.push_back({tf(tm), 0.0, 0});
+            }
+            load_time_.push_back(std::move(g));
+        }
+    }
+}
+
+ExpSignal PieceSolution::channel(const Eigen::RowVectorXcd& row, double scale, double offset) const {
+    ExpSignal f;
+    f.lambda = &s_->modes.lambda;
+    f.A = scale * row.transpose().cwiseProduct(a_);
+    for (const Term& t : terms_) f.terms.push_back({scale * (row * t.C)(0), t.s, t.power});
+    if (offset != 0.0) f.terms.push_back({offset, 0.0, 0});
+    return f;
+}
+
+Eigen::VectorXcd PieceSolution::coords_at(double tau) const {
+    const Eigen::VectorXcd& lam = s_->modes.lambda;
+    Eigen::VectorXcd c(a_.size());
+    for (Eigen::Index k = 0; k < c.size(); ++k) c[k] = a_[k] * std::exp(lam[k] * tau);
+    for (const Term& t : terms_) c += t.C * (std::exp(t.s * tau) * (t.power == 1 ? tau : 1.0));
+    return c;
+}
+
+Eigen::VectorXd PieceSolution::state_at(double tau) const { return (s_->modes.R * coords_at(tau)).real(); }
+
+double PieceSolution::quadratic_integral(const Eigen::MatrixXcd& w, const Eigen::MatrixXcd& wc, double tau) const {
+    // Integral over [0, tau] of c^T W c with c = a e^(lambda tau) + sum_m C_m tau^p e^(s tau).
+    const Eigen::VectorXcd& lam = s_->modes.lambda;
+    Eigen::VectorXcd ae(a_.size());
+    for (Eigen::Index k = 0; k < ae.size(); ++k) ae[k] = a_[k] * std::exp(lam[k] * tau);
+    cd sum = (ae.transpose() * wc * ae)(0) - (a_.transpose() * wc * a_)(0);
+    for (const Term& t : terms_) {
+        const Eigen::VectorXcd wC = w * t.C;
+        for (Eigen::Index k = 0; k < a_.size(); ++k) sum += 2.0 * a_[k] * wC[k] * exp_moment(lam[k] + t.s, t.power, tau);
+        for (const Term& u : terms_) sum += (t.C.transpose() * w * u.C)(0) * exp_moment(t.s + u.s, t.power + u.power, tau);
+    }
+    return sum.real();
+}
+
+void PieceSolution::accumulate_dissipation(double tau, EnergyLedger& e) const {
+    if (tau <= 0.0) return;
+    e.rayleigh_dissipated += quadratic_integral(s_->rayleigh_w, s_->rayleigh_wc, tau);
+    for (std::size_t c = 0; c < p_->contacts.size(); ++c) {
+        if (!active_[c] || p_->contacts[c].damping == 0.0) continue;
+        const Eigen::RowVectorXcd g = s_->contact_vel.row(static_cast<Eigen::Index>(c));
+        const Eigen::MatrixXcd w = p_->contacts[c].damping * (g.transpose() * g);
+        e.contact_dissipated += quadratic_integral(w, w.cwiseProduct(s_->cauchy), tau);
+    }
+    for (std::size_t l = 0; l < load_vel_.size(); ++l) e.external_work += product_integral(load_vel_[l], load_time_[l], tau);
+}
+
+EnergyLedger PieceSolution::energy_at(double tau, const EnergyLedger& start) const {
+    EnergyLedger e = start;
+    accumulate_dissipation(tau, e);
+    const int n = b_->n;
+    const Eigen::VectorXd x = state_at(tau);
+    e.kinetic = 0.5 * x.tail(n).squaredNorm();
+    e.strain = 0.5 * x.head(n).cwiseProduct(b_->omega).squaredNorm();
+    e.contact_spring = 0.0;
+    for (std::size_t c = 0; c < p_->contacts.size(); ++c) {
+        if (!active_[c]) continue;
+        const ContactElement& ce = p_->contacts[c];
+        const double d = ce.sign * (ce.surface - b_->phi.row(ce.dof).dot(x.head(n)));
+        e.contact_spring += 0.5 * ce.stiffness * d * d;
+    }
+    return e;
+}
+
+void PieceSolution::sample(double tau, double t_abs, const std::vector<bool>& active, TimeHistory& h, bool energy,
+                           const EnergyLedger& start) const {
+    const std::size_t nc = p_->contacts.size();
+    if (h.contact_v.size() != nc) {
+        h.contact_v.resize(nc);
+        h.contact_velocity.resize(nc);
+        h.contact_force.resize(nc);
+    }
+    h.t.push_back(t_abs);
+    h.tip_v.push_back(tip_v_.value(tau));
+    h.tip_velocity.push_back(tip_vel_.value(tau));
+    for (std::size_t c = 0; c < nc; ++c) {
+        h.contact_v[c].push_back(v_[c].value(tau));
+        h.contact_velocity[c].push_back(vel_[c].value(tau));
+        h.contact_force[c].push_back(active[c] ? force_[c].value(tau) : 0.0);
+    }
+    if (energy) h.energy.push_back(energy_at(tau, start));
+}
+
+}  // namespace vi

@@ -1,0 +1,98 @@
+#pragma once
+// Pieces of the exact solution: one contact state from one initial state, as modal exponentials.
+
+#include <Eigen/Dense>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "dynamics/exp_signal.hpp"
+#include "dynamics/state_modes.hpp"
+#include "dynamics/transient_problem.hpp"
+#include "dynamics/transient_result.hpp"
+
+namespace vi {
+
+// Per contact state: its decomposition and everything derived from it once.
+struct StateData {
+    StateModes modes;
+    Eigen::MatrixXcd contact_v;     // nc x 2n: v at each contact point, as rows times R
+    Eigen::MatrixXcd contact_vel;   // nc x 2n
+    Eigen::RowVectorXcd tip_v, tip_vel;
+    Eigen::MatrixXcd load_vel;      // loads x 2n: shape^T q_dot rows times R
+    Eigen::MatrixXcd cauchy;        // 1 / (lambda_k + lambda_l), 0 where that sum vanishes
+    Eigen::MatrixXcd rayleigh_w;    // Rv^T diag(2 zeta omega) Rv
+    Eigen::MatrixXcd rayleigh_wc;   // rayleigh_w .* cauchy
+};
+
+// The solution from x0 at t0 in one state with the loads of [t0, t1]: c(tau) = a exp(lambda tau) + P(tau).
+class PieceSolution {
+public:
+    PieceSolution(const TransientProblem& p, const BaseModes& b, const StateData& s, const std::vector<bool>& active,
+                  const Eigen::VectorXd& x0, double t0, double t1, bool energy);
+    // Penetration d (open contact) or -F (closed one): its upward zero crossing is the next event.
+    [[nodiscard]] const ExpSignal& event_function(int c) const { return event_[static_cast<std::size_t>(c)]; }
+    // An open contact still inside its support (d > 0 after a damped separation) waits for F to turn
+    // positive instead of d; the crossing of this release function (-d) ends that wait.
+    [[nodiscard]] bool waits_for_release(int c) const { return release_[static_cast<std::size_t>(c)]; }
+    [[nodiscard]] const ExpSignal& release_function(int c) const { return release_fn_[static_cast<std::size_t>(c)]; }
+    [[nodiscard]] const ExpSignal& contact_force(int c) const { return force_[static_cast<std::size_t>(c)]; }
+    [[nodiscard]] const ExpSignal& penetration(int c) const { return pen_[static_cast<std::size_t>(c)]; }
+    [[nodiscard]] const ExpSignal& contact_velocity(int c) const { return vel_[static_cast<std::size_t>(c)]; }
+    [[nodiscard]] Eigen::VectorXd state_at(double tau) const;
+    // Energy terms at tau, with `start` the ledger's integrals at the start of the piece.
+    [[nodiscard]] EnergyLedger energy_at(double tau, const EnergyLedger& start) const;
+    // Adds the dissipated energies and external work of [0, tau] to the ledger.
+    void accumulate_dissipation(double tau, EnergyLedger& ledger) const;
+    void sample(double tau, double t_abs, const std::vector<bool>& active, TimeHistory& h, bool energy,
+                const EnergyLedger& start) const;
+
+private:
+    struct Term {
+        Eigen::VectorXcd C;  // amplitude vector in state coordinates
+        cd s;
+        int power;
+    };
+    ExpSignal channel(const Eigen::RowVectorXcd& row, double scale, double offset) const;
+    [[nodiscard]] Eigen::VectorXcd coords_at(double tau) const;
+    [[nodiscard]] double quadratic_integral(const Eigen::MatrixXcd& w, const Eigen::MatrixXcd& wc, double tau) const;
+
+    const TransientProblem* p_;
+    const BaseModes* b_;
+    const StateData* s_;
+    std::vector<bool> active_;
+    Eigen::VectorXcd a_;
+    std::vector<Term> terms_;
+    std::vector<ExpSignal> event_, force_, pen_, v_, vel_, release_fn_;
+    std::vector<bool> release_;
+    ExpSignal tip_v_, tip_vel_;
+    std::vector<ExpSignal> load_vel_, load_time_;
+};
+
+// The model shared by all pieces: base modes and a cache of decomposed contact states.
+class ExactModel {
+public:
+    ExactModel(const TransientProblem& p, bool energy);
+    [[nodiscard]] const BaseModes& base() const { return base_; }
+    // x = [Phi^T M q0; Phi^T M v0].
+    [[nodiscard]] Eigen::VectorXd initial_state(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0) const;
+    // Builds the piece (decomposing its state on first use); valid until the next call.
+    const PieceSolution& piece(const std::vector<bool>& active, const Eigen::VectorXd& x0, double t0, double t1);
+    [[nodiscard]] int decompositions() const { return static_cast<int>(cache_.size()); }
+
+private:
+    const StateData& state(const std::vector<bool>& active);
+    const TransientProblem* p_;
+    bool energy_;
+    BaseModes base_;
+    Eigen::MatrixXd phit_m_;
+    std::map<std::vector<bool>, std::unique_ptr<StateData>> cache_;
+    std::unique_ptr<PieceSolution> piece_;
+};
+
+// f' as a signal of the same piece.
+ExpSignal derivative_signal(const ExpSignal& f);
+// f -> -f.
+void negate(ExpSignal& f);
+
+}  // namespace vi

@@ -1,0 +1,40 @@
+#pragma once
+// ExpSignal: a scalar response within one piece of the exact solution, as a sum of exponentials
+// f(tau) = Re[ sum_k A_k exp(lambda_k tau) + sum_m c_m tau^p_m exp(s_m tau) ].
+
+#include <Eigen/Dense>
+#include <complex>
+#include <vector>
+
+namespace vi {
+
+using cd = std::complex<double>;
+
+// A particular-solution term c tau^power exp(s tau), power 0 or 1.
+struct ExpTerm {
+    cd coef;
+    cd s;
+    int power = 0;
+};
+
+struct ExpSignal {
+    const Eigen::VectorXcd* lambda = nullptr;  // exponents of the homogeneous part [1/s]
+    Eigen::VectorXcd A;                        // their amplitudes
+    std::vector<ExpTerm> terms;                // particular part (forcing, constants)
+
+    // d-th derivative (0..3) at tau [s].
+    [[nodiscard]] double derivative(double tau, int d) const;
+    [[nodiscard]] double value(double tau) const { return derivative(tau, 0); }
+    // An upper bound of |f^(d)| over [tau, tau + h].
+    [[nodiscard]] double bound(double tau, double h, int d) const;
+    // Integral of f over [0, tau].
+    [[nodiscard]] double integral(double tau) const;
+};
+
+// Integral over [0, tau] of t^p exp(mu t) (p = 0, 1, 2), accurate also for small |mu tau|.
+cd exp_moment(cd mu, int p, double tau);
+
+// Integral over [0, tau] of f(t) g(t) for two signals over the same piece.
+double product_integral(const ExpSignal& f, const ExpSignal& g, double tau);
+
+}  // namespace vi

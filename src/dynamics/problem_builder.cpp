@@ -1,0 +1,175 @@
+#include "dynamics/problem_builder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "dynamics/initial_state.hpp"
+#include "io/input_error.hpp"
+#include "modal/eigen_solver.hpp"
+#include "model/case_checks.hpp"
+
+// The transient works on the bending DOFs (v, theta) only. In this linear beam model axial and
+// bending decouple, supports and loads act transversely, so the axial DOFs are never loaded and stay
+// at rest: leaving them out changes nothing but the size of the problem.
+
+namespace vi {
+namespace {
+
+using Index = Eigen::Index;
+
+// Position of each reduced DOF inside s.bending (-1 for axial DOFs).
+std::vector<int> bending_positions(const System& s) {
+    std::vector<int> pos(static_cast<std::size_t>(s.size()), -1);
+    for (std::size_t i = 0; i < s.bending.size(); ++i) pos[static_cast<std::size_t>(s.bending[i])] = static_cast<int>(i);
+    return pos;
+}
+
+// A reduced vector restricted to the bending DOFs.
+Eigen::VectorXd on_bending(const System& s, const Eigen::VectorXd& reduced) {
+    Eigen::VectorXd out(static_cast<Index>(s.bending.size()));
+    for (std::size_t i = 0; i < s.bending.size(); ++i) out[static_cast<Index>(i)] = reduced[s.bending[i]];
+    return out;
+}
+
+// Consistent load vector of a unit transverse force at x/l = position, over the bending DOFs; its
+// dot product with a bending vector is v at that point.
+Eigen::VectorXd unit_point_load(const System& s, double position) {
+    return on_bending(s, transverse_point_load(s, position * s.length, 1.0));
+}
+
+// The lowest `count` unsupported bending modes; InputError on `key` when the model has fewer.
+ModeSet bending_modes(const System& s, int count, const char* key) {
+    ModeSet modes = lowest_modes(submatrix(s.K, s.bending), submatrix(s.M, s.bending), count);
+    if (modes.omega.size() < count) {
+        throw InputError(std::string(key) + ": mode " + std::to_string(count) + " does not exist (the model has " +
+                         std::to_string(modes.omega.size()) + " bending modes; refine beam.elements)");
+    }
+    return modes;
+}
+
+RayleighCoefficients rayleigh(const RayleighDamping& d, const ModeSet& modes) {
+    if (!d.from_ratios) return {d.alpha, d.beta};
+    return rayleigh_from_ratios(modes.omega[d.mode1 - 1], d.ratio1, modes.omega[d.mode2 - 1], d.ratio2);
+}
+
+// One contact element per support, on the v DOF of its node. Surfaces in beam coordinates (v up):
+// below, +Support::surface (a prestress lifts it above the unloaded axis); above, -Support::surface.
+// Cc from a damping ratio zeta: Cc = 2 zeta sqrt(Kc m_eff), with m_eff = 1 / phi1(x0)^2 the effective
+// mass of the first unsupported bending mode (mass normalised) at the support: the critical damping
+// of that mode's one-DOF model on the support spring.
+std::vector<ContactElement> contacts(const Case& c, const System& s, const std::vector<int>& pos,
+                                     const Eigen::VectorXd& phi1) {
+    std::vector<ContactElement> out;
+    for (std::size_t k = 0; k < c.supports.size(); ++k) {
+        const Support& sup = c.supports[k];
+        const std::string key = "supports[" + std::to_string(k) + "].";
+        const int r = s.support_dof[k];
+        if (r < 0) {
+            throw InputError(key + "position: the support sits on a node held by an end condition (v never moves there)");
+        }
+        ContactElement e;
+        e.dof = pos[static_cast<std::size_t>(r)];
+        e.sign = sup.side == Side::below ? 1.0 : -1.0;
+        e.surface = sup.side == Side::below ? sup.surface : -sup.surface;
+        e.stiffness = sup.stiffness;
+        e.damping = sup.damping;
+        e.x = s.mesh.x[static_cast<std::size_t>(s.mesh.support_nodes[k])];
+        if (sup.damping_ratio) {
+            const double phi = phi1[e.dof];
+            if (!(std::abs(phi) > 1e-9 * phi1.cwiseAbs().maxCoeff())) {
+                throw InputError(key + "damping_ratio: the first mode does not move at the support (give damping)");
+            }
+            e.damping = 2.0 * *sup.damping_ratio * std::sqrt(sup.stiffness) / std::abs(phi);
+        }
+        out.push_back(e);
+    }
+    return out;
+}
+
+// The watched DOF: v at the free end (the right end, else the left); when neither end is free, v at
+// the node nearest initial.position (mid-span when that point is held by an end condition).
+int watched_dof(const Case& c, const System& s, const std::vector<int>& pos) {
+    const double l = s.length;
+    double x = c.initial.position * l;
+    if (c.beam.right == EndCondition::free) {
+        x = l;
+    } else if (c.beam.left == EndCondition::free) {
+        x = 0.0;
+    } else if (c.initial.position == 1.0 || !(c.initial.position > 0.0)) {
+        x = 0.5 * l;
+    }
+    int best = -1;
+    double best_distance = std::numeric_limits<double>::infinity();
+    for (int node = 0; node < s.mesh.node_count(); ++node) {
+        const int r = s.reduced_of[static_cast<std::size_t>(global_dof(node, 1))];
+        const double distance = std::abs(s.mesh.x[static_cast<std::size_t>(node)] - x);
+        if (r >= 0 && distance < best_distance) {
+            best = pos[static_cast<std::size_t>(r)];
+            best_distance = distance;
+        }
+    }
+    return best;
+}
+
+}  // namespace
+
+BuiltProblem build_transient_problem(const Case& c) {
+    if (const std::vector<CaseProblem> problems = check_case(c); !problems.empty()) {
+        throw InputError(problems.front().key + ": " + problems.front().message);
+    }
+    BuiltProblem b;
+    b.system = build_system(c, SupportModel::none);
+    const System& s = b.system;
+    const std::vector<int> pos = bending_positions(s);
+
+    const bool mode_velocity = c.initial.velocity_kind == InitialState::Velocity::mode;
+    const bool ratios = c.damping.from_ratios;
+    int count = 1;
+    const char* key = "initial.velocity_mode";
+    if (ratios) {
+        count = std::max({count, c.damping.mode1, c.damping.mode2});
+        key = "damping.modes";
+    }
+    if (mode_velocity && c.initial.velocity_mode > count) {
+        count = c.initial.velocity_mode;
+        key = "initial.velocity_mode";
+    }
+    const ModeSet modes = bending_modes(s, count, key);
+    b.omega1 = modes.omega[0];
+    b.rayleigh = rayleigh(c.damping, modes);
+
+    TransientProblem& p = b.problem;
+    p.M = Eigen::MatrixXd(submatrix(s.M, s.bending));
+    p.K = Eigen::MatrixXd(submatrix(s.K, s.bending));
+    p.alpha = b.rayleigh.alpha;
+    p.beta = b.rayleigh.beta;
+    p.contacts = contacts(c, s, pos, modes.shapes.col(0));
+    for (const ContactElement& e : p.contacts) {
+        b.contact_stiffness.push_back(e.stiffness);
+        b.contact_damping.push_back(e.damping);
+    }
+    for (const PointLoad& load : c.loads) p.loads.push_back({unit_point_load(s, load.position), load.amplitude, load.time});
+
+    // The static step: the time-dependent loads are not part of it (they act from t = 0 on).
+    std::vector<bool> is_v(s.bending.size());
+    for (std::size_t i = 0; i < s.bending.size(); ++i) is_v[i] = s.free_dofs[static_cast<std::size_t>(s.bending[i])] % 3 == 1;
+    const Eigen::VectorXd mode =
+        mode_velocity ? Eigen::VectorXd(modes.shapes.col(c.initial.velocity_mode - 1)) : Eigen::VectorXd();
+    InitialConditions ic =
+        initial_conditions(c.initial, p.K, p.contacts, unit_point_load(s, c.initial.position), is_v, mode);
+    p.q0 = std::move(ic.stepped.q);
+    p.v0 = std::move(ic.v0);
+    p.active0 = std::move(ic.stepped.active);
+    b.q_equilibrium = std::move(ic.equilibrium.q);
+    b.y0_m = ic.lift;
+    b.static_force_n = ic.force;
+
+    p.tip_dof = watched_dof(c, s, pos);
+    p.t_end = c.solver.horizon;
+    p.output_step = c.solver.output_step > 0.0 ? c.solver.output_step : c.solver.horizon / 2000.0;
+    return b;
+}
+
+}  // namespace vi

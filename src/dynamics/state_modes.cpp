@@ -1,0 +1,238 @@
+#include "dynamics/state_modes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "modal/eigen_solver.hpp"
+
+namespace vi {
+namespace {
+
+// Contact rows: phi_c = Phi row of the contact DOF (the modal participation at the contact point).
+Eigen::VectorXd contact_row(const BaseModes& b, const ContactElement& c) { return b.phi.row(c.dof).transpose(); }
+
+// Per-mode 2x2 block of the free system in (eta_i, eta_dot_i): eigenvectors [1; a], [1; b].
+void free_blocks(const BaseModes& b, StateModes& s) {
+    const int n = b.n;
+    s.lambda.resize(2 * n);
+    s.R = Eigen::MatrixXcd::Zero(2 * n, 2 * n);
+    s.L = Eigen::MatrixXcd::Zero(2 * n, 2 * n);
+    for (int i = 0; i < n; ++i) {
+        const cd a = b.pole_a[i], bb = b.pole_b[i];
+        s.lambda[2 * i] = a;
+        s.lambda[2 * i + 1] = bb;
+        s.R(i, 2 * i) = 1.0;
+        s.R(n + i, 2 * i) = a;
+        s.R(i, 2 * i + 1) = 1.0;
+        s.R(n + i, 2 * i + 1) = bb;
+        const cd inv = 1.0 / (bb - a);
+        s.L(2 * i, i) = bb * inv;
+        s.L(2 * i, n + i) = -inv;
+        s.L(2 * i + 1, i) = -a * inv;
+        s.L(2 * i + 1, n + i) = inv;
+    }
+}
+
+// Relative residuals of A R = R Lambda and L R = I on a few probe vectors: O(n^2) instead of the
+// O(n^3) of full products, and a wrong eigenpair shows up in any generic probe.
+double check_residual(const Eigen::MatrixXd& A, const StateModes& s) {
+    const double anorm = A.cwiseAbs().rowwise().sum().maxCoeff();
+    double worst = 0.0;
+    for (int probe = 0; probe < 2; ++probe) {
+        Eigen::VectorXcd v(s.R.cols());
+        for (Eigen::Index k = 0; k < v.size(); ++k) v[k] = cd(std::cos(1.7 * k + probe), std::sin(0.3 * k * k + probe));
+        v /= v.norm();
+        const Eigen::VectorXcd rv = s.R * v;
+        const Eigen::VectorXcd lhs = A.cast<cd>() * rv;
+        const Eigen::VectorXcd rhs = s.R * s.lambda.cwiseProduct(v);
+        worst = std::max(worst, (lhs - rhs).norm() / (anorm * rv.norm()));
+        worst = std::max(worst, (s.L * rv - v).norm());
+    }
+    return worst;
+}
+
+bool dense_decomposition(const Eigen::MatrixXd& A, StateModes& s) {
+    Eigen::EigenSolver<Eigen::MatrixXd> es(A);
+    if (es.info() != Eigen::Success) return false;
+    s.lambda = es.eigenvalues();
+    s.R = es.eigenvectors();
+    Eigen::PartialPivLU<Eigen::MatrixXcd> lu(s.R);
+    s.L = lu.inverse();
+    s.method = "dense";
+    const double cond = s.L.cwiseAbs().rowwise().sum().maxCoeff() * s.R.cwiseAbs().rowwise().sum().maxCoeff();
+    return std::isfinite(cond) && cond < 1e12;
+}
+
+// Roots of g(z) = 1 + sum_j rho_j / (z - p_j) by the Aberth-Ehrlich iteration on the degree-m
+// polynomial prod(z - p_j) g(z); returns false when it does not converge.
+bool secular_roots(const Eigen::VectorXcd& p, const Eigen::VectorXcd& rho, Eigen::VectorXcd& z) {
+    const Eigen::Index m = p.size();
+    z.resize(m);
+    for (Eigen::Index j = 0; j < m; ++j) z[j] = p[j] - rho[j] + cd(0.0, 1e-9) * std::abs(p[j]);
+    for (int it = 0; it < 200; ++it) {
+        double worst = 0.0;
+        for (Eigen::Index k = 0; k < m; ++k) {
+            cd g = 1.0, gp = 0.0, sum_inv = 0.0;
+            for (Eigen::Index j = 0; j < m; ++j) {
+                const cd d = 1.0 / (z[k] - p[j]);
+                g += rho[j] * d;
+                gp -= rho[j] * d * d;
+                sum_inv += d;
+            }
+            const cd ratio = 1.0 / (sum_inv + gp / g);  // P / P'
+            cd repel = 0.0;
+            for (Eigen::Index j = 0; j < m; ++j) {
+                if (j != k) repel += 1.0 / (z[k] - z[j]);
+            }
+            const cd step = ratio / (1.0 - ratio * repel);
+            z[k] -= step;
+            worst = std::max(worst, std::abs(step) / std::max(std::abs(z[k]), 1e-300));
+        }
+        if (!z.allFinite()) return false;
+        if (worst < 1e-15) return true;
+    }
+    return false;
+}
+
+// One closed contact: A = A0 - u w^T in the free diagonal coordinates y (x = R0 y).
+bool rank_one_decomposition(const BaseModes& b, const TransientProblem& p, int c, StateModes& s) {
+    StateModes free;
+    free_blocks(b, free);
+    const int n = b.n;
+    const ContactElement& ce = p.contacts[static_cast<std::size_t>(c)];
+    const Eigen::VectorXd phi_c = contact_row(b, ce);
+    // x' = A0 x - e (Kc phi_c^T eta + Cc phi_c^T eta_dot), e = [0; phi_c].
+    Eigen::VectorXd ex = Eigen::VectorXd::Zero(2 * n);
+    ex.tail(n) = phi_c;
+    Eigen::VectorXd wx(2 * n);
+    wx.head(n) = ce.stiffness * phi_c;
+    wx.tail(n) = ce.damping * phi_c;
+    const Eigen::VectorXcd u = free.L * ex.cast<cd>();
+    const Eigen::VectorXcd w = (wx.cast<cd>().transpose() * free.R).transpose();
+    const Eigen::VectorXcd rho = u.cwiseProduct(w);
+    const double scale = rho.cwiseAbs().maxCoeff();
+    // Modes with no share at the contact point (a node there) keep their free poles.
+    std::vector<Eigen::Index> coupled;
+    for (Eigen::Index j = 0; j < 2 * n; ++j) {
+        if (std::abs(rho[j]) > 1e-15 * scale) coupled.push_back(j);
+    }
+    const Eigen::Index m = static_cast<Eigen::Index>(coupled.size());
+    Eigen::VectorXcd pc(m), rc(m), z;
+    for (Eigen::Index j = 0; j < m; ++j) {
+        pc[j] = free.lambda[coupled[static_cast<std::size_t>(j)]];
+        rc[j] = rho[coupled[static_cast<std::size_t>(j)]];
+    }
+    if (!secular_roots(pc, rc, z)) return false;
+
+    Eigen::MatrixXcd Ry = Eigen::MatrixXcd::Zero(2 * n, 2 * n);
+    Eigen::MatrixXcd Ly = Eigen::MatrixXcd::Zero(2 * n, 2 * n);
+    s.lambda = free.lambda;
+    std::vector<bool> is_coupled(static_cast<std::size_t>(2 * n), false);
+    for (Eigen::Index j : coupled) is_coupled[static_cast<std::size_t>(j)] = true;
+    for (Eigen::Index j = 0; j < 2 * n; ++j) {
+        if (!is_coupled[static_cast<std::size_t>(j)]) {
+            Ry(j, j) = 1.0;
+            Ly(j, j) = 1.0;
+        }
+    }
+    for (Eigen::Index k = 0; k < m; ++k) {
+        const Eigen::Index slot = coupled[static_cast<std::size_t>(k)];
+        s.lambda[slot] = z[k];
+        cd norm = 0.0;
+        for (Eigen::Index j : coupled) {
+            const cd d = 1.0 / (z[k] - free.lambda[j]);
+            Ry(j, slot) = u[j] * d;
+            Ly(slot, j) = w[j] * d;
+            norm += w[j] * u[j] * d * d;
+        }
+        if (std::abs(norm) == 0.0 || !std::isfinite(std::abs(norm))) return false;
+        Ly.row(slot) /= norm;
+    }
+    // R = R0 Ry and L = Ly L0 with the 2x2 mode blocks of R0, L0: O(n^2) instead of a dense product.
+    s.R.resize(2 * n, 2 * n);
+    s.L.resize(2 * n, 2 * n);
+    for (int i = 0; i < n; ++i) {
+        const cd a = b.pole_a[i], bb = b.pole_b[i];
+        s.R.row(i) = Ry.row(2 * i) + Ry.row(2 * i + 1);
+        s.R.row(n + i) = a * Ry.row(2 * i) + bb * Ry.row(2 * i + 1);
+        s.L.col(i) = Ly.col(2 * i) * free.L(2 * i, i) + Ly.col(2 * i + 1) * free.L(2 * i + 1, i);
+        s.L.col(n + i) = Ly.col(2 * i) * free.L(2 * i, n + i) + Ly.col(2 * i + 1) * free.L(2 * i + 1, n + i);
+    }
+    s.method = "rank-one";
+    return true;
+}
+
+}  // namespace
+
+BaseModes base_modes(const TransientProblem& p) {
+    BaseModes b;
+    b.n = p.size();
+    const ModeSet set = all_modes_dense(p.K.sparseView(), p.M.sparseView());
+    b.phi = set.shapes;
+    b.omega = set.omega;
+    b.zeta.resize(b.n);
+    b.pole_a.resize(b.n);
+    b.pole_b.resize(b.n);
+    for (int i = 0; i < b.n; ++i) {
+        const double w = b.omega[i];
+        double z = 0.5 * (p.alpha / w + p.beta * w);
+        if (std::abs(z - 1.0) < kCriticalDampingGap) z = z < 1.0 ? 1.0 - kCriticalDampingGap : 1.0 + kCriticalDampingGap;
+        b.zeta[i] = z;
+        if (z < 1.0) {
+            const double wd = w * std::sqrt(1.0 - z * z);
+            b.pole_a[i] = cd(-z * w, wd);
+            b.pole_b[i] = cd(-z * w, -wd);
+        } else {
+            const double r = w * std::sqrt(z * z - 1.0);
+            b.pole_a[i] = cd(-z * w + r, 0.0);
+            b.pole_b[i] = cd(-z * w - r, 0.0);
+        }
+    }
+    return b;
+}
+
+Eigen::MatrixXd state_matrix(const BaseModes& b, const TransientProblem& p, const std::vector<bool>& active) {
+    const int n = b.n;
+    Eigen::MatrixXd kk = b.omega.cwiseAbs2().asDiagonal();
+    Eigen::MatrixXd cc = (2.0 * b.zeta.cwiseProduct(b.omega)).asDiagonal();
+    for (std::size_t c = 0; c < p.contacts.size(); ++c) {
+        if (!active[c]) continue;
+        const Eigen::VectorXd r = contact_row(b, p.contacts[c]);
+        kk += p.contacts[c].stiffness * r * r.transpose();
+        cc += p.contacts[c].damping * r * r.transpose();
+    }
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+    A.topRightCorner(n, n).setIdentity();
+    A.bottomLeftCorner(n, n) = -kk;
+    A.bottomRightCorner(n, n) = -cc;
+    return A;
+}
+
+StateModes decompose_state(const BaseModes& b, const TransientProblem& p, const std::vector<bool>& active) {
+    StateModes s;
+    s.active = active;
+    const int closed = static_cast<int>(std::count(active.begin(), active.end(), true));
+    const Eigen::MatrixXd A = state_matrix(b, p, active);
+    bool ok = false;
+    if (closed == 0) {
+        free_blocks(b, s);
+        s.method = "free";
+        ok = true;
+    } else if (closed == 1) {
+        const int c = static_cast<int>(std::find(active.begin(), active.end(), true) - active.begin());
+        ok = rank_one_decomposition(b, p, c, s);
+    }
+    if (ok) {
+        s.residual = check_residual(A, s);
+        ok = s.residual < 1e-8;
+    }
+    if (!ok && !dense_decomposition(A, s)) {
+        throw std::runtime_error("transient: the system of one contact state is not diagonalisable "
+                                 "(defective eigenvalues); change the damping slightly");
+    }
+    if (s.method == "dense") s.residual = check_residual(A, s);
+    return s;
+}
+
+}  // namespace vi

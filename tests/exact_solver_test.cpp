@@ -1,0 +1,75 @@
+// The exact event-driven solver against closed forms: Kelvin-Voigt impact of one mass, energy.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "dynamics/exact_solver.hpp"
+#include "dynamics/state_modes.hpp"
+#include "transient_fixtures.hpp"
+
+namespace vi {
+namespace {
+
+double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
+
+TEST(ExactSolver, SingleDofContactDurationAndRestitution) {
+    const double m = 1e-9, Kc = 10.0, v = 1e-3;
+    const double wn = std::sqrt(Kc / m);
+    for (double zeta : {0.0, 0.1, 0.5, 0.9}) {
+        const double Cc = 2.0 * zeta * std::sqrt(Kc * m);
+        const double tc = (std::numbers::pi - 2.0 * std::asin(zeta)) / (wn * std::sqrt(1.0 - zeta * zeta));
+        const double h = 1e-9;  // flight h / v = 1 us before the impact
+        const TransientProblem p = test::single_dof_drop(m, Kc, Cc, h, v, h / v + 1.5 * tc);
+        const TransientResult r = solve_exact(p);
+        ASSERT_GE(r.episodes.size(), 1u) << zeta;
+        const ContactEpisode& e = r.episodes.front();
+        EXPECT_FALSE(e.closed_at_end);
+        EXPECT_LT(rel(e.t_on, h / v), 1e-10) << zeta;
+        EXPECT_LT(rel(e.t_off - e.t_on, tc), 1e-8) << "zeta " << zeta;
+        EXPECT_LT(rel(-e.v_out / e.v_in, std::exp(-zeta * wn * tc)), 1e-8) << "zeta " << zeta;
+        // Impulse = m (v_out - v_in) since the contact force is the only one (k0 ~ 0).
+        EXPECT_LT(rel(e.impulse, m * (e.v_out - e.v_in)), 1e-8) << zeta;
+    }
+}
+
+TEST(ExactSolver, RankOneDecompositionMatchesDense) {
+    const TransientProblem p = test::cantilever_drop(10, 40.0, 2e-7, 1e-6, 1e3, 1e-10, 1e-5);
+    const BaseModes b = base_modes(p);
+    const StateModes s = decompose_state(b, p, {true});
+    EXPECT_EQ(s.method, "rank-one");
+    EXPECT_LT(s.residual, 1e-10);
+}
+
+TEST(ExactSolver, UndampedEnergyIsConservedThroughTwentyImpacts) {
+    const TransientProblem p = test::cantilever_drop(10, 40.0, 0.0, 1e-6, 0.0, 0.0, 1.5e-4);
+    const TransientResult r = solve_exact(p);
+    EXPECT_GE(r.episodes.size(), 20u);
+    auto total = [](const EnergyLedger& e) { return e.kinetic + e.strain + e.contact_spring - e.external_work; };
+    const double e0 = total(r.initial_energy);
+    ASSERT_GT(e0, 0.0);
+    EXPECT_LT(std::abs(total(r.final_energy) - e0) / e0, 1e-8);
+    double worst = 0.0;
+    for (const EnergyLedger& e : r.history.energy) worst = std::max(worst, std::abs(total(e) - e0) / e0);
+    EXPECT_LT(worst, 1e-8);
+    std::printf("episodes %zu, worst relative energy drift %.2e\n", r.episodes.size(), worst);
+}
+
+TEST(ExactSolver, DampedEnergyLossEqualsDamperWork) {
+    const TransientProblem p = test::cantilever_drop(10, 40.0, 5e-7, 1e-6, 2e3, 2e-10, 1.2e-4);
+    const TransientResult r = solve_exact(p);
+    EXPECT_GE(r.episodes.size(), 5u);
+    auto total = [](const EnergyLedger& e) {
+        return e.kinetic + e.strain + e.contact_spring + e.rayleigh_dissipated + e.contact_dissipated - e.external_work;
+    };
+    const double e0 = total(r.initial_energy);
+    const EnergyLedger& f = r.final_energy;
+    EXPECT_GT(f.rayleigh_dissipated, 0.0);
+    EXPECT_GT(f.contact_dissipated, 0.0);
+    EXPECT_LT(std::abs(total(f) - e0) / e0, 1e-8);
+    for (const EnergyLedger& e : r.history.energy) EXPECT_LT(std::abs(total(e) - e0) / e0, 1e-8);
+}
+
+}  // namespace
+}  // namespace vi
