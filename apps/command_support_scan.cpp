@@ -1,5 +1,6 @@
 // `vibroimpact support-scan CASE`: supported-beam frequency ratios as supports[0] moves (paper Fig. 8).
 
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
@@ -48,7 +49,10 @@ CommandBody add_support_scan_command(CLI::App& app) {
         const Case c = read_case_file(opt->case_path);
         if (c.supports.empty()) throw InputError(opt->case_path + ": supports: the case has no support to move");
         const auto points = support_scan(c, positions, opt->count, parse_support_model(opt->support_model));
-        const std::string csv = support_scan_csv(points, opt->count).str();
+        // A coarse mesh may have fewer bending modes than asked for: report what exists.
+        std::size_t count = static_cast<std::size_t>(opt->count);
+        for (const auto& pt : points) count = std::min(count, pt.study.ratios.size());
+        const std::string csv = support_scan_csv(points, static_cast<int>(count)).str();
         if (opt->out_dir.empty()) {
             std::fputs(csv.c_str(), stdout);
         } else {

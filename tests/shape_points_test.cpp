@@ -102,3 +102,21 @@ TEST(ShapePoints, CoarseMeshFindsTwoZerosInsideOneElement) {
 
 }  // namespace
 }  // namespace vi
+
+namespace vi {
+namespace {
+
+TEST(ShapePoints, SupportAtTheFreeEndIsAlwaysANodalPoint) {
+    // The pinned tip's zero comes from the constrained DOF itself, so no mesh may lose it.
+    for (int m = 5; m <= 120; m += 23) {
+        const ModalStudy st = modal_study(test::paper_cantilever(m, 1.0), 6, SupportModel::pin);
+        for (const Mode& mode : st.supported.bending) {
+            ASSERT_FALSE(mode.features.nodes.empty()) << "m " << m << " mode " << mode.number;
+            EXPECT_EQ(mode.features.nodes.back(), 1.0) << "m " << m << " mode " << mode.number;
+            for (const ShapePeak& p : mode.features.peaks) EXPECT_GT(p.amplitude, 1e-6) << "m " << m;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace vi

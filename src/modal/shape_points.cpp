@@ -51,6 +51,7 @@ double bisect(const Eigen::Vector4d& c, double a, double b) {
 // Per element: polynomial of v (or theta, scaled to the same x) in xi.
 struct PiecewisePoly {
     std::vector<Eigen::Vector4d> coeffs;  // in xi, one per element
+    std::vector<double> node_values;      // exact values at the nodes (the DOFs themselves)
 };
 
 struct EndFlags {
@@ -73,10 +74,11 @@ void collect_peaks(const System& s, const PiecewisePoly& f, bool fixed_left, boo
     for (int e = 0; e < ne; ++e) {
         const Eigen::Vector4d& c = f.coeffs[e];
         const Eigen::Vector4d d1 = derivative(c);
+        const double f_end = f.node_values[static_cast<std::size_t>(e) + 1];
         const Eigen::Vector4d d2 = derivative(d1);
         const double L = mesh.element_length(e);
         // Left node of this element (a kink of a piecewise polynomial can be a peak).
-        const double f0 = c[0];
+        const double f0 = f.node_values[static_cast<std::size_t>(e)];
         const double right_slope = d1[0];
         if (e == 0) {
             if (!fixed_left && f0 * right_slope < 0) add(mesh.x[0], f0);
@@ -92,8 +94,7 @@ void collect_peaks(const System& s, const PiecewisePoly& f, bool fixed_left, boo
             if (v * poly(d2, t) < 0) add(mesh.x[e] + t * L, v);
         }
         if (e == ne - 1) {
-            const double f1 = poly(c, 1.0);
-            if (!fixed_right && f1 * poly(d1, 1.0) > 0) add(mesh.x[e + 1], f1);
+            if (!fixed_right && f_end * poly(d1, 1.0) > 0) add(mesh.x[e + 1], f_end);
         }
     }
 }
@@ -105,7 +106,8 @@ void collect_zeros(const System& s, const PiecewisePoly& f, bool fixed_left, boo
     const double l = s.length;
     const double end_tol = 1e-9;
     for (int e = 0; e < ne; ++e) {
-        for (double t : cubic_roots_in(f.coeffs[e], 0.0, 1.0)) {
+        const std::size_t k = static_cast<std::size_t>(e);
+        for (double t : cubic_roots_in(f.coeffs[e], 0.0, 1.0, f.node_values[k], f.node_values[k + 1])) {
             const double xl = (mesh.x[e] + t * mesh.element_length(e)) / l;
             if (fixed_left && xl <= end_tol) continue;
             if (fixed_right && xl >= 1.0 - end_tol) continue;
@@ -119,6 +121,10 @@ void collect_zeros(const System& s, const PiecewisePoly& f, bool fixed_left, boo
 }  // namespace
 
 std::vector<double> cubic_roots_in(const Eigen::Vector4d& c, double lo, double hi) {
+    return cubic_roots_in(c, lo, hi, poly(c, lo), poly(c, hi));
+}
+
+std::vector<double> cubic_roots_in(const Eigen::Vector4d& c, double lo, double hi, double f_lo, double f_hi) {
     // Split [lo, hi] at the critical points; on each monotone piece a sign change brackets one root.
     std::vector<double> cuts{lo};
     std::vector<double> crit = quadratic_roots(c[1], 2 * c[2], 3 * c[3]);
@@ -128,12 +134,12 @@ std::vector<double> cubic_roots_in(const Eigen::Vector4d& c, double lo, double h
     }
     cuts.push_back(hi);
     std::vector<double> roots;
-    if (poly(c, lo) == 0.0) roots.push_back(lo);
+    if (f_lo == 0.0) roots.push_back(lo);
     for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
         const double a = cuts[i];
         const double b = cuts[i + 1];
-        const double fa = poly(c, a);
-        const double fb = poly(c, b);
+        const double fa = i == 0 ? f_lo : poly(c, a);
+        const double fb = i + 2 == cuts.size() ? f_hi : poly(c, b);
         if (fb == 0.0) {
             roots.push_back(b);
         } else if (fa != 0.0 && (fa < 0) != (fb < 0)) {
@@ -154,6 +160,10 @@ ShapeFeatures shape_features(const System& s, const Eigen::VectorXd& g) {
                                                          g[global_dof(e + 1, 1)], g[global_dof(e + 1, 2)]);
         v.coeffs.push_back(c);
         theta.coeffs.push_back(derivative(c) / L);
+    }
+    for (int node = 0; node < mesh.node_count(); ++node) {
+        v.node_values.push_back(g[global_dof(node, 1)]);
+        theta.node_values.push_back(g[global_dof(node, 2)]);
     }
     // Only the end conditions exclude points: a pinned support at an end is still a nodal point.
     const EndFlags ends{s.left != EndCondition::free, s.right != EndCondition::free,

@@ -28,5 +28,7 @@ ShapeFeatures shape_features(const System& s, const Eigen::VectorXd& global_shap
 
 // Real roots of c0 + c1 t + c2 t^2 + c3 t^3 in [lo, hi], ascending; exact zeros at the ends kept.
 std::vector<double> cubic_roots_in(const Eigen::Vector4d& c, double lo, double hi);
+// Same, with the exact end values f(lo), f(hi) given (nodal DOFs: exact zeros stay exact).
+std::vector<double> cubic_roots_in(const Eigen::Vector4d& c, double lo, double hi, double f_lo, double f_hi);
 
 }  // namespace vi
