@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>  // DEBUG
 #include <cstdlib>
 #include <limits>
 #include <stdexcept>
@@ -173,8 +174,6 @@ void Driver::setup() {
     check(CVodeSetJacFn(s_.mem, jac_fn), "CVodeSetJacFn");
     check(CVodeSetMaxNumSteps(s_.mem, o_.max_steps), "CVodeSetMaxNumSteps");
     check(CVodeSetMaxHnilWarns(s_.mem, -1), "CVodeSetMaxHnilWarns");
-    if (const char* e = std::getenv("VI_MAXORD")) check(CVodeSetMaxOrd(s_.mem, std::atoi(e)), "x");  // TEMP
-    if (std::getenv("VI_STAB")) check(CVodeSetStabLimDet(s_.mem, 1), "x");  // TEMP
     if (sys_.roots() > 0) {
         check(CVodeRootInit(s_.mem, sys_.roots(), root_fn), "CVodeRootInit");
         check(CVodeSetNoInactiveRootWarn(s_.mem), "CVodeSetNoInactiveRootWarn");
@@ -270,6 +269,7 @@ double Driver::locate_missed_closing(int j, double tret) {
     check(CVodeGetCurrentTime(s_.mem, &tcur), "CVodeGetCurrentTime");
     check(CVodeGetLastStep(s_.mem, &hlast), "CVodeGetLastStep");
     double lo = std::max(tcur - hlast, t_restart_), hi = tret;
+    std::fprintf(stderr, "GUARD j=%d lo=%.17g hi=%.17g\n", j, lo, hi);  // DEBUG
     check(CVodeGetDky(s_.mem, lo, 0, s_.tmp), "CVodeGetDky");
     if (sys_.closing_function(j, N_VGetArrayPointer(s_.tmp)) > 0.0) return lo;
     for (int it = 0; it < 200 && !same_time(lo, hi); ++it) {

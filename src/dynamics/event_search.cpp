@@ -70,3 +70,67 @@ std::optional<double> first_upcrossing(const ExpSignal& f, double tau0, double t
 }
 
 }  // namespace vi
+
+namespace vi {
+namespace {
+
+// Upper bound of f on [a, a + h]: modes slow on this interval enter through a Taylor bound with
+// their f(a), f'(a) and |f''|; fast ones (|lambda| h > 2) only through their amplitude.
+double upper_bound_on(const ExpSignal& f, double a, double h) {
+    double f0 = 0.0, f1 = 0.0, b2 = 0.0, fast = 0.0;
+    const Eigen::VectorXcd& lam = *f.lambda;
+    for (Eigen::Index k = 0; k < f.A.size(); ++k) {
+        const cd l = lam[k];
+        const double decay = std::exp(l.real() * a);
+        const double amp = std::abs(f.A[k]) * std::max(decay, std::exp(l.real() * (a + h)));
+        if (std::abs(l) * h > 2.0) {
+            fast += amp;
+        } else {
+            const cd v = f.A[k] * std::exp(l * a);
+            f0 += v.real();
+            f1 += (v * l).real();
+            b2 += amp * std::norm(l);
+        }
+    }
+    for (const ExpTerm& t : f.terms) {
+        ExpSignal one;
+        one.lambda = f.lambda;
+        one.terms = {t};
+        f0 += one.derivative(a, 0);
+        f1 += one.derivative(a, 1);
+        b2 += one.bound(a, h, 2);
+    }
+    return f0 + std::max(0.0, f1 * h + 0.5 * b2 * h * h) + fast;
+}
+
+}  // namespace
+
+SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double abs_tol, double h_min, int* evals,
+                             double floor) {
+    SignalMaximum best{floor, -1.0};
+    const double f0 = f.value(0.0);
+    if (f0 > best.value) best = {f0, 0.0};
+    const double fe = f.value(tau_end);
+    if (fe > best.value) best = {fe, tau_end};
+    struct Interval {
+        double a, h;
+    };
+    std::vector<Interval> stack{{0.0, tau_end}};
+    int guard = 0;
+    while (!stack.empty() && ++guard < 2000000) {
+        const Interval iv = stack.back();
+        stack.pop_back();
+        if (evals) ++*evals;
+        if (upper_bound_on(f, iv.a, iv.h) <= best.value + abs_tol) continue;
+        const double half = 0.5 * iv.h;
+        const double mid = iv.a + half;
+        const double fm = f.value(mid);
+        if (fm > best.value) best = {fm, mid};
+        if (half < h_min) continue;
+        stack.push_back({mid, half});
+        stack.push_back({iv.a, half});
+    }
+    return best;
+}
+
+}  // namespace vi

@@ -1,6 +1,7 @@
 #pragma once
 // Certified search for the first upward zero crossing of an ExpSignal: never steps over a root.
 
+#include <limits>
 #include <optional>
 
 #include "dynamics/exp_signal.hpp"
@@ -19,5 +20,20 @@ struct CrossingSearch {
 // over the step: f cannot reach zero in between, so no crossing is stepped over.
 std::optional<double> first_upcrossing(const ExpSignal& f, double tau0, double tau_max, const CrossingSearch& opt,
                                        int* evaluations = nullptr);
+
+}  // namespace vi
+
+namespace vi {
+
+// Where the largest value of f over [0, tau_end] lies, to within abs_tol in value (branch and bound:
+// an interval is dropped once an upper bound of f on it falls below the best value seen).
+struct SignalMaximum {
+    double value = 0.0;
+    double tau = 0.0;
+};
+// `floor`: a value already reached elsewhere; parts of the interval that cannot beat it are skipped
+// and, when nothing does, the result is {floor, -1}.
+SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double abs_tol, double h_min,
+                             int* evaluations = nullptr, double floor = -std::numeric_limits<double>::infinity());
 
 }  // namespace vi

@@ -6,6 +6,7 @@
 #include <map>
 #include <numbers>
 #include <stdexcept>
+#include <limits>
 #include <string>
 
 #include "dynamics/event_search.hpp"
@@ -17,28 +18,30 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-// Largest value of f over [0, tau_end] with the place where it is reached (certified search of the
-// downward crossings of f').
-double maximum_over(const ExpSignal& f, double tau_end, const CrossingSearch& cs, int* evals) {
-    const ExpSignal df = derivative_signal(f);
-    ExpSignal neg_df = df;
-    negate(neg_df);
-    double best = std::max(f.value(0.0), f.value(tau_end));
-    double tau = 0.0;
-    for (int guard = 0; guard < 100000 && tau < tau_end; ++guard) {
-        // Rising stretch: the next maximum is where f' turns negative.
-        if (df.value(tau) > 0.0) {
-            const auto top = first_upcrossing(neg_df, tau, tau_end, cs, evals);
-            if (!top) break;
-            best = std::max(best, f.value(*top));
-            tau = *top + cs.t_tol;
-        } else {
-            const auto bottom = first_upcrossing(df, tau, tau_end, cs, evals);
-            if (!bottom) break;
-            tau = *bottom + cs.t_tol;
-        }
+// Largest value of f over [0, tau_end] and where: to 1e-12 of the signal's size.
+SignalMaximum maximum_over(const ExpSignal& f, double tau_end, const CrossingSearch& cs, int* evals,
+                           double floor = -std::numeric_limits<double>::infinity()) {
+    const double tol = 1e-12 * f.bound(0.0, tau_end, 0);
+    return global_maximum(f, tau_end, tol, cs.t_tol, evals, floor);
+}
+
+void track_extremes(const PieceSolution& s, double t, double tau_e, int nc, const CrossingSearch& cs, int* evals,
+                    Extremes& ex) {
+    const double none = -std::numeric_limits<double>::infinity();
+    ExpSignal neg_tip = s.tip_displacement();
+    negate(neg_tip);
+    const SignalMaximum top = maximum_over(s.tip_displacement(), tau_e, cs, evals, ex.valid ? ex.tip_max : none);
+    const SignalMaximum bottom = maximum_over(neg_tip, tau_e, cs, evals, ex.valid ? -ex.tip_min : none);
+    if (top.tau >= 0.0) {
+        ex.tip_max = top.value;
+        ex.tip_max_t = t + top.tau;
     }
-    return best;
+    if (bottom.tau >= 0.0) {
+        ex.tip_min = -bottom.value;
+        ex.tip_min_t = t + bottom.tau;
+    }
+    if (nc > 0) ex.contact_max = maximum_over(s.contact_displacement(0), tau_e, cs, evals, ex.valid ? ex.contact_max : none).value;
+    ex.valid = true;
 }
 
 }  // namespace
@@ -137,10 +140,10 @@ TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o) {
             ContactEpisode& ep = res.episodes[static_cast<std::size_t>(e)];
             const ExpSignal& F = s.contact_force(c);
             ep.impulse += F.integral(tau_e);
-            ep.peak_force = std::max(ep.peak_force, maximum_over(F, tau_e, cs, &res.stats.steps));
-            ep.peak_penetration =
-                std::max(ep.peak_penetration, maximum_over(s.penetration(c), tau_e, cs, &res.stats.steps));
+            ep.peak_force = maximum_over(F, tau_e, cs, &res.stats.steps, ep.peak_force).value;
+            ep.peak_penetration = maximum_over(s.penetration(c), tau_e, cs, &res.stats.steps, ep.peak_penetration).value;
         }
+        if (!res.episodes.empty() && tau_e > 0.0) track_extremes(s, t, tau_e, nc, cs, &res.stats.steps, res.extremes);
         if (o.energy) s.accumulate_dissipation(tau_e, ledger);
         x = s.state_at(tau_e);
         res.stats.propagation_s += seconds_since(t_prop);

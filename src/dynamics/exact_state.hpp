@@ -39,6 +39,8 @@ public:
     [[nodiscard]] const ExpSignal& contact_force(int c) const { return force_[static_cast<std::size_t>(c)]; }
     [[nodiscard]] const ExpSignal& penetration(int c) const { return pen_[static_cast<std::size_t>(c)]; }
     [[nodiscard]] const ExpSignal& contact_velocity(int c) const { return vel_[static_cast<std::size_t>(c)]; }
+    [[nodiscard]] const ExpSignal& tip_displacement() const { return tip_v_; }
+    [[nodiscard]] const ExpSignal& contact_displacement(int c) const { return v_[static_cast<std::size_t>(c)]; }
     [[nodiscard]] Eigen::VectorXd state_at(double tau) const;
     // Energy terms at tau, with `start` the ledger's integrals at the start of the piece.
     [[nodiscard]] EnergyLedger energy_at(double tau, const EnergyLedger& start) const;

@@ -50,11 +50,23 @@ struct SolverStats {
     std::string method;            // "exact" or "cvode"
 };
 
+// Exact extremes of the watched point and of the first contact's point after the first contact
+// begins (DESIGN.md section 3: y_max and the deepest deflection), located by root finding.
+struct Extremes {
+    bool valid = false;           // false when no contact ever began
+    double tip_max = 0.0;         // largest tip v [m]
+    double tip_max_t = 0.0;       // when [s]
+    double tip_min = 0.0;         // smallest tip v [m]
+    double tip_min_t = 0.0;
+    double contact_max = 0.0;     // largest v at contact 0 [m]
+};
+
 struct TransientResult {
     TimeHistory history;
     std::vector<ContactEpisode> episodes;  // in onset order
     EnergyLedger initial_energy;           // at t = 0
     EnergyLedger final_energy;             // at t_end
+    Extremes extremes;
     double t_end = 0.0;
     SolverStats stats;
 };

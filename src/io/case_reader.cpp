@@ -20,8 +20,9 @@
 // Reading happens in two passes. The first reads the TOML tree into a Case, one function per table,
 // and collects every problem with the text (unknown or missing key, wrong type, bad unit, value not
 // finite) at its position; the earliest in the file is thrown. Only when the text is clean does the
-// second pass check the values (check_case plus the few checks made while reading), each problem
-// placed at the line of the key it names, and again the earliest is thrown. To add a table, write a
+// load tables named by [[loads]] get read (CSV files: their first bad line is thrown) and the second
+// pass checks the values (check_case plus the few checks made while reading), each problem placed at
+// the line of the key it names, and again the earliest is thrown. To add a table, write a
 // read_<table> function and call it from read_root with its key in the root's accepted list.
 
 namespace vi {

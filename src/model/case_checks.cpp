@@ -47,7 +47,7 @@ bool at_fixed_end(const Case& c, double position) {
 
 std::string number_text(double v) {
     std::ostringstream s;
-    s << v;
+    s << (v == 0.0 ? 0.0 : v);  // no "-0"
     return s.str();
 }
 

@@ -1,0 +1,50 @@
+#pragma once
+// Impact characteristics of a transient (DESIGN.md section 3): episodes grouped into impacts, the
+// periods T, T1, T2, the transient duration T_p, rebound y_max and their dimensionless forms.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dynamics/transient_result.hpp"
+
+namespace vi {
+
+// One impact in the paper's sense: episodes of one support separated by flights shorter than
+// group_gap. Onset and pre-impact velocity of the first episode, end of the last, largest peaks,
+// summed impulse.
+struct Impact {
+    int support = 0;
+    double t_on = 0.0, t_off = 0.0;   // [s]
+    double v_in = 0.0, v_out = 0.0;   // contact point velocity at onset / final separation [m/s]
+    double peak_force = 0.0;          // [N]
+    double peak_penetration = 0.0;    // [m]
+    double impulse = 0.0;             // [N s]
+    int episodes = 0;
+    bool closed_at_end = false;
+};
+
+// What the summary needs besides the solver's result.
+struct ImpactSettings {
+    double omega1 = 0.0;             // first circular frequency of the unsupported beam [rad/s]
+    double group_gap = 0.0;          // [s]; 0 = a quarter of 2 pi / omega1
+    double settle_tolerance = 0.01;  // fraction of the first impact's peak penetration
+    double length = 0.0;             // l [m], for z_max
+    double tip_equilibrium = 0.0;    // final static v of the watched point [m]
+    double contact_equilibrium = 0.0;  // final static v at support 0 [m]
+};
+
+struct ImpactSummary {
+    double group_gap = 0.0;
+    std::vector<Impact> impacts;        // in onset order, all supports
+    int cycle_support = 0;              // support whose impacts define T, T1, T2
+    std::vector<double> T, T1, T2;      // per cycle [s]
+    std::optional<double> T_first, T1_first, T2_first;
+    std::optional<double> Tp;           // [s]; empty when the horizon ended first or nothing hit
+    std::string Tp_reason;              // "settled", "persistent_contact", "horizon", "no_impact"
+    std::optional<double> y_max, z_max, y_max_contact, tip_min;  // [m], [-], [m], [m]
+};
+
+ImpactSummary summarize_impacts(const TransientResult& r, const ImpactSettings& s);
+
+}  // namespace vi

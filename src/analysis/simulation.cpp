@@ -1,0 +1,42 @@
+#include "analysis/simulation.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "dynamics/cvode_solver.hpp"
+#include "io/input_error.hpp"
+
+namespace vi {
+
+SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
+    if (!(c.solver.horizon > 0.0)) throw InputError("solver.horizon: required for a transient (e.g. \"200 us\")");
+    SimulationRun run;
+    run.built = build_transient_problem(c);
+    const TransientProblem& p = run.built.problem;
+    if (c.solver.method == SolverSettings::Method::cvode) {
+        CvodeOptions co;
+        co.rtol = c.solver.rtol;
+        run.result = solve_cvode(p, co);
+    } else {
+        ExactOptions eo;
+        eo.history = o.history;
+        eo.energy = o.energy;
+        run.result = solve_exact(p, eo);
+    }
+    const bool touching_at_start = std::find(p.active0.begin(), p.active0.end(), true) != p.active0.end();
+    if (run.result.episodes.empty() && !touching_at_start && !p.contacts.empty()) {
+        throw InputError("solver.horizon: too short to see the first impact (no contact before " +
+                         std::to_string(p.t_end * 1e6) + " us)");
+    }
+    ImpactSettings s;
+    s.omega1 = run.built.omega1;
+    s.group_gap = c.solver.group_gap;
+    s.settle_tolerance = c.solver.settle_tolerance;
+    s.length = c.beam.length;
+    if (p.tip_dof >= 0) s.tip_equilibrium = run.built.q_equilibrium[p.tip_dof];
+    if (!p.contacts.empty()) s.contact_equilibrium = run.built.q_equilibrium[p.contacts.front().dof];
+    run.summary = summarize_impacts(run.result, s);
+    return run;
+}
+
+}  // namespace vi

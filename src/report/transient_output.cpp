@@ -1,0 +1,178 @@
+#include "report/transient_output.hpp"
+
+#include <string>
+
+namespace vi {
+namespace {
+
+nlohmann::json opt(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+
+nlohmann::json scaled(const std::optional<double>& v, double k) {
+    return v ? nlohmann::json(*v * k) : nlohmann::json(nullptr);
+}
+
+nlohmann::json energy_json(const EnergyLedger& e) {
+    return {{"kinetic_j", e.kinetic},
+            {"strain_j", e.strain},
+            {"contact_spring_j", e.contact_spring},
+            {"rayleigh_dissipated_j", e.rayleigh_dissipated},
+            {"contact_dissipated_j", e.contact_dissipated},
+            {"external_work_j", e.external_work}};
+}
+
+template <class Row>
+nlohmann::json contact_row(const Row& e) {
+    return {{"support", e.support},         {"t_on_s", e.t_on},
+            {"t_off_s", e.t_off},           {"v_in_m_s", e.v_in},
+            {"v_out_m_s", e.v_out},         {"peak_force_n", e.peak_force},
+            {"peak_penetration_m", e.peak_penetration}, {"impulse_n_s", e.impulse},
+            {"closed_at_end", e.closed_at_end}};
+}
+
+const char* end_name(EndCondition e) {
+    switch (e) {
+        case EndCondition::clamped: return "clamped";
+        case EndCondition::pinned: return "pinned";
+        case EndCondition::free: return "free";
+    }
+    return "?";
+}
+
+}  // namespace
+
+nlohmann::json resolved_case_json(const Case& c, const BuiltProblem& b, const ImpactSummary& s) {
+    nlohmann::json j;
+    j["name"] = c.name;
+    j["beam"] = {{"length_m", c.beam.length},       {"width_m", c.beam.width},
+                 {"thickness_m", c.beam.thickness}, {"elements", c.beam.elements},
+                 {"left", end_name(c.beam.left)},   {"right", end_name(c.beam.right)},
+                 {"nodes", b.system.mesh.node_count()}, {"bending_dofs", b.problem.size()}};
+    j["material"] = {{"youngs_modulus_pa", c.material.youngs_modulus},
+                     {"density_kg_m3", c.material.density},
+                     {"poisson_ratio", c.material.poisson_ratio},
+                     {"plate_modulus", c.material.plate_modulus},
+                     {"effective_modulus_pa", c.material.effective_modulus()}};
+    nlohmann::json sup = nlohmann::json::array();
+    for (std::size_t k = 0; k < c.supports.size(); ++k) {
+        const Support& p = c.supports[k];
+        sup.push_back({{"position", p.position},
+                       {"side", p.side == Side::below ? "below" : "above"},
+                       {"surface_m", p.surface},
+                       {"stiffness_n_m", b.contact_stiffness.at(k)},
+                       {"damping_n_s_m", b.contact_damping.at(k)},
+                       {"damping_ratio", p.damping_ratio ? nlohmann::json(*p.damping_ratio) : nlohmann::json(nullptr)}});
+    }
+    j["supports"] = sup;
+    j["damping"] = {{"alpha_1_s", b.rayleigh.alpha}, {"beta_s", b.rayleigh.beta},
+                    {"from_ratios", c.damping.from_ratios}, {"ratios", {c.damping.ratio1, c.damping.ratio2}},
+                    {"modes", {c.damping.mode1, c.damping.mode2}}};
+    const char* kinds[] = {"rest", "displacement", "force"};
+    const char* vkinds[] = {"none", "uniform", "mode"};
+    j["initial"] = {{"kind", kinds[static_cast<int>(c.initial.kind)]},
+                    {"position", c.initial.position},
+                    {"y0_m", b.y0_m},
+                    {"static_force_n", b.static_force_n},
+                    {"velocity_shape", vkinds[static_cast<int>(c.initial.velocity_kind)]},
+                    {"velocity_m_s", c.initial.velocity},
+                    {"velocity_mode", c.initial.velocity_mode}};
+    j["loads"] = static_cast<int>(c.loads.size());
+    j["solver"] = {{"method", c.solver.method == SolverSettings::Method::exact ? "exact" : "cvode"},
+                   {"horizon_s", b.problem.t_end},
+                   {"output_step_s", b.problem.output_step},
+                   {"group_gap_s", s.group_gap},
+                   {"settle_tolerance", c.solver.settle_tolerance},
+                   {"rtol", c.solver.rtol}};
+    j["omega1_rad_s"] = b.omega1;
+    return j;
+}
+
+nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, const TransientResult& r,
+                                      const ImpactSummary& s) {
+    const double w1 = b.omega1;
+    nlohmann::json j;
+    j["omega1_rad_s"] = w1;
+    nlohmann::json impacts = nlohmann::json::array();
+    for (const Impact& im : s.impacts) {
+        nlohmann::json row = contact_row(im);
+        row["episodes"] = im.episodes;
+        impacts.push_back(row);
+    }
+    j["impacts"] = impacts;
+    nlohmann::json eps = nlohmann::json::array();
+    for (const ContactEpisode& e : r.episodes) eps.push_back(contact_row(e));
+    j["episodes"] = eps;
+    j["T_s"] = opt(s.T_first);
+    j["T1_s"] = opt(s.T1_first);
+    j["T2_s"] = opt(s.T2_first);
+    j["Tp_s"] = opt(s.Tp);
+    j["Tp_reason"] = s.Tp_reason;
+    j["tau"] = scaled(s.T_first, w1);
+    j["tau1"] = scaled(s.T1_first, w1);
+    j["tau2"] = scaled(s.T2_first, w1);
+    j["tau_p"] = scaled(s.Tp, w1);
+    j["cycles"] = {{"support", s.cycle_support}, {"T_s", s.T}, {"T1_s", s.T1}, {"T2_s", s.T2}};
+    j["y_max_m"] = opt(s.y_max);
+    j["z_max"] = opt(s.z_max);
+    j["y_max_contact_m"] = opt(s.y_max_contact);
+    j["tip_min_m"] = opt(s.tip_min);
+    j["energy"] = {{"initial", energy_json(r.initial_energy)}, {"final", energy_json(r.final_energy)}};
+    j["solver"] = {{"method", r.stats.method},
+                   {"decompositions", r.stats.decompositions},
+                   {"events", r.stats.events},
+                   {"steps", r.stats.steps}};
+    j["resolved"] = resolved_case_json(c, b, s);
+    return j;
+}
+
+CsvTable history_csv(const TransientResult& r) {
+    const TimeHistory& h = r.history;
+    CsvTable t;
+    t.header = {"t_s", "tip_m", "tip_velocity_m_s"};
+    for (std::size_t k = 0; k < h.contact_v.size(); ++k) {
+        const std::string p = "contact" + std::to_string(k);
+        t.header.insert(t.header.end(), {p + "_m", p + "_velocity_m_s", p + "_force_n"});
+    }
+    const bool energy = h.energy.size() == h.t.size();
+    if (energy) {
+        t.header.insert(t.header.end(), {"kinetic_j", "strain_j", "contact_spring_j", "rayleigh_dissipated_j",
+                                         "contact_dissipated_j", "external_work_j"});
+    }
+    for (std::size_t i = 0; i < h.t.size(); ++i) {
+        std::vector<double> row{h.t[i], h.tip_v[i], h.tip_velocity[i]};
+        for (std::size_t k = 0; k < h.contact_v.size(); ++k) {
+            row.insert(row.end(), {h.contact_v[k][i], h.contact_velocity[k][i], h.contact_force[k][i]});
+        }
+        if (energy) {
+            const EnergyLedger& e = h.energy[i];
+            row.insert(row.end(), {e.kinetic, e.strain, e.contact_spring, e.rayleigh_dissipated, e.contact_dissipated,
+                                   e.external_work});
+        }
+        t.add_row(std::move(row));
+    }
+    return t;
+}
+
+CsvTable events_csv(const TransientResult& r, const ImpactSummary& s) {
+    CsvTable t;
+    t.header = {"episode", "impact", "support", "t_on_s", "t_off_s", "v_in_m_s", "v_out_m_s",
+                "peak_force_n", "peak_penetration_m", "impulse_n_s", "closed_at_end"};
+    for (std::size_t i = 0; i < r.episodes.size(); ++i) {
+        const ContactEpisode& e = r.episodes[i];
+        double impact = -1;
+        for (std::size_t k = 0; k < s.impacts.size(); ++k) {
+            const Impact& im = s.impacts[k];
+            if (im.support == e.support && e.t_on >= im.t_on && e.t_on <= im.t_off) impact = static_cast<double>(k);
+        }
+        t.add_row({static_cast<double>(i), impact, static_cast<double>(e.support), e.t_on, e.t_off, e.v_in, e.v_out,
+                   e.peak_force, e.peak_penetration, e.impulse, e.closed_at_end ? 1.0 : 0.0});
+    }
+    return t;
+}
+
+OutputFiles transient_files(const Case& c, const BuiltProblem& b, const TransientResult& r, const ImpactSummary& s) {
+    return {{"history.csv", history_csv(r).str()},
+            {"events.csv", events_csv(r, s).str()},
+            {"summary.json", transient_summary_json(c, b, r, s).dump(2) + "\n"}};
+}
+
+}  // namespace vi

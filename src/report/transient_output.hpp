@@ -1,0 +1,33 @@
+#pragma once
+// Transient results as files: time-history CSV, events CSV (episodes with their impact), summary JSON.
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "analysis/impact_summary.hpp"
+#include "dynamics/problem_builder.hpp"
+#include "dynamics/transient_result.hpp"
+#include "io/csv_table.hpp"
+#include "io/output_files.hpp"
+#include "model/case.hpp"
+
+namespace vi {
+
+// Every parameter of the run, defaults and derived values included, so it can be reproduced.
+nlohmann::json resolved_case_json(const Case& c, const BuiltProblem& b, const ImpactSummary& s);
+
+// The summary: impacts, episodes, T, T1, T2, T_p (with its reason), tau's, y_max, z_max, energy.
+nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, const TransientResult& r,
+                                      const ImpactSummary& s);
+
+// t_s, tip_m, tip_velocity_m_s, per support k: contact<k>_m, contact<k>_velocity_m_s,
+// contact<k>_force_n, then the energy terms in J.
+CsvTable history_csv(const TransientResult& r);
+
+// One row per contact episode with the index of the impact it belongs to.
+CsvTable events_csv(const TransientResult& r, const ImpactSummary& s);
+
+// history.csv, events.csv and summary.json.
+OutputFiles transient_files(const Case& c, const BuiltProblem& b, const TransientResult& r, const ImpactSummary& s);
+
+}  // namespace vi
