@@ -8,7 +8,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>  // DEBUG
 #include <cstdlib>
 #include <limits>
 #include <stdexcept>
@@ -21,6 +20,9 @@ namespace vi {
 namespace {
 
 using cvode_detail::CvodeSystem;
+using cvode_detail::jac_fn;
+using cvode_detail::rhs_fn;
+using cvode_detail::root_fn;
 using Clock = std::chrono::steady_clock;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
@@ -31,25 +33,6 @@ double seconds_since(Clock::time_point t0) {
 // True when a and b are the same instant up to a few ulps.
 bool same_time(double a, double b) {
     return std::abs(a - b) <= 8.0 * kEps * std::max({std::abs(a), std::abs(b), 1e-300});
-}
-
-void validate(const TransientProblem& p) {
-    const int n = p.size();
-    auto bad = [](const std::string& what) { throw std::invalid_argument("solve_cvode: " + what); };
-    if (n <= 0 || p.M.cols() != n || p.K.rows() != n || p.K.cols() != n) bad("M and K must be n x n, n > 0");
-    if (p.q0.size() != n || p.v0.size() != n) bad("q0 and v0 must have one entry per DOF");
-    if (!p.M.allFinite() || !p.K.allFinite() || !p.q0.allFinite() || !p.v0.allFinite()) bad("non-finite input");
-    if (!p.active0.empty() && p.active0.size() != p.contacts.size()) bad("active0 must have one entry per contact");
-    for (const ContactElement& c : p.contacts) {
-        if (c.dof < 0 || c.dof >= n) bad("contact DOF out of range");
-        if (std::abs(c.sign) != 1.0) bad("contact sign must be +1 or -1");
-        if (!(c.stiffness >= 0.0) || !(c.damping >= 0.0) || !std::isfinite(c.surface)) bad("contact data");
-    }
-    for (const LoadTerm& l : p.loads) {
-        if (l.shape.size() != n || !std::isfinite(l.amplitude)) bad("load shape size or amplitude");
-    }
-    if (p.tip_dof < 0 || p.tip_dof >= n) bad("tip_dof out of range");
-    if (!(p.t_end > 0.0) || !std::isfinite(p.t_end)) bad("t_end must be positive");
 }
 
 // SUNDIALS objects, freed in reverse order of creation.
@@ -72,28 +55,6 @@ struct Sundials {
         if (ctx) SUNContext_Free(&ctx);
     }
 };
-
-// The callbacks never let an exception cross the C library: they report an unrecoverable error.
-int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void* ud) {
-    try {
-        static_cast<const CvodeSystem*>(ud)->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
-        return 0;
-    } catch (...) { return -1; }
-}
-
-int jac_fn(realtype t, N_Vector y, N_Vector, SUNMatrix J, void* ud, N_Vector, N_Vector, N_Vector) {
-    try {
-        static_cast<const CvodeSystem*>(ud)->jacobian(t, N_VGetArrayPointer(y), SUNDenseMatrix_Data(J));
-        return 0;
-    } catch (...) { return -1; }
-}
-
-int root_fn(realtype t, N_Vector y, realtype* g, void* ud) {
-    try {
-        static_cast<const CvodeSystem*>(ud)->events(t, N_VGetArrayPointer(y), g);
-        return 0;
-    } catch (...) { return -1; }
-}
 
 // Nothing below the command line prints: CVODE's messages are kept for the exception text.
 void error_fn(int code, const char* module, const char* function, char* msg, void* ud) {
@@ -139,6 +100,7 @@ private:
     double jump_ = 0.0;
     long steps_done_ = 0, setups_done_ = 0;
     double t_restart_ = 0.0, last_event_t_ = -1.0;
+    double t_done_ = 0.0;                // time of the last return of CVODE (all before is recorded)
     int burst_ = 0;
 };
 
@@ -268,8 +230,8 @@ double Driver::locate_missed_closing(int j, double tret) {
     double tcur = 0.0, hlast = 0.0;
     check(CVodeGetCurrentTime(s_.mem, &tcur), "CVodeGetCurrentTime");
     check(CVodeGetLastStep(s_.mem, &hlast), "CVodeGetLastStep");
-    double lo = std::max(tcur - hlast, t_restart_), hi = tret;
-    std::fprintf(stderr, "GUARD j=%d lo=%.17g hi=%.17g\n", j, lo, hi);  // DEBUG
+    // Not before the previous return either: what lies before it is already recorded.
+    double lo = std::max({tcur - hlast, t_restart_, t_done_}), hi = tret;
     check(CVodeGetDky(s_.mem, lo, 0, s_.tmp), "CVodeGetDky");
     if (sys_.closing_function(j, N_VGetArrayPointer(s_.tmp)) > 0.0) return lo;
     for (int it = 0; it < 200 && !same_time(lo, hi); ++it) {
@@ -411,6 +373,7 @@ TransientResult Driver::run() {
             update_peaks(N_VGetArrayPointer(s_.y));
             t = flag == CV_TSTOP_RETURN ? t_stop : tret;
         }
+        t_done_ = t;
     }
     add_counters();
 
@@ -428,6 +391,7 @@ TransientResult Driver::run() {
     r_.t_end = p_.t_end;
     r_.stats.method = "cvode";
     r_.stats.steps = static_cast<int>(std::min<long>(steps_done_, std::numeric_limits<int>::max()));
+    // For CVODE, "decompositions" counts the LU factorisations of I - gamma J (linear solver setups).
     r_.stats.decompositions = static_cast<int>(std::min<long>(setups_done_, std::numeric_limits<int>::max()));
     r_.stats.propagation_s = seconds_since(t_run);
     return std::move(r_);
@@ -436,7 +400,7 @@ TransientResult Driver::run() {
 }  // namespace
 
 TransientResult solve_cvode(const TransientProblem& p, const CvodeOptions& o) {
-    validate(p);
+    cvode_detail::validate(p);
     Driver driver(p, o);
     return driver.run();
 }

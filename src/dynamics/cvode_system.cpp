@@ -1,9 +1,12 @@
 #include "dynamics/cvode_system.hpp"
 
+#include <sunmatrix/sunmatrix_dense.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace vi::cvode_detail {
 
@@ -241,6 +244,47 @@ Eigen::VectorXd CvodeSystem::absolute_tolerances(double atol_scale) const {
         scale[impulse_index(j)] = f > 0.0 ? f / w : energy / (w * L);
     }
     return atol_scale * scale;
+}
+
+void validate(const TransientProblem& p) {
+    const int n = p.size();
+    auto bad = [](const std::string& what) { throw std::invalid_argument("solve_cvode: " + what); };
+    if (n <= 0 || p.M.cols() != n || p.K.rows() != n || p.K.cols() != n) bad("M and K must be n x n, n > 0");
+    if (p.q0.size() != n || p.v0.size() != n) bad("q0 and v0 must have one entry per DOF");
+    if (!p.M.allFinite() || !p.K.allFinite() || !p.q0.allFinite() || !p.v0.allFinite()) bad("non-finite input");
+    if (!p.active0.empty() && p.active0.size() != p.contacts.size()) bad("active0 must have one entry per contact");
+    for (const ContactElement& c : p.contacts) {
+        if (c.dof < 0 || c.dof >= n) bad("contact DOF out of range");
+        if (std::abs(c.sign) != 1.0) bad("contact sign must be +1 or -1");
+        if (!(c.stiffness >= 0.0) || !(c.damping >= 0.0) || !std::isfinite(c.surface)) bad("contact data");
+    }
+    for (const LoadTerm& l : p.loads) {
+        if (l.shape.size() != n || !std::isfinite(l.amplitude)) bad("load shape size or amplitude");
+    }
+    if (p.tip_dof < 0 || p.tip_dof >= n) bad("tip_dof out of range");
+    if (!(p.t_end > 0.0) || !std::isfinite(p.t_end)) bad("t_end must be positive");
+    if (!std::isfinite(p.output_step)) bad("output_step must be finite");
+}
+
+int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void* ud) {
+    try {
+        static_cast<const CvodeSystem*>(ud)->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+        return 0;
+    } catch (...) { return -1; }
+}
+
+int jac_fn(realtype t, N_Vector y, N_Vector /*fy*/, SUNMatrix J, void* ud, N_Vector, N_Vector, N_Vector) {
+    try {
+        static_cast<const CvodeSystem*>(ud)->jacobian(t, N_VGetArrayPointer(y), SUNDenseMatrix_Data(J));
+        return 0;
+    } catch (...) { return -1; }
+}
+
+int root_fn(realtype t, N_Vector y, realtype* g, void* ud) {
+    try {
+        static_cast<const CvodeSystem*>(ud)->events(t, N_VGetArrayPointer(y), g);
+        return 0;
+    } catch (...) { return -1; }
 }
 
 }  // namespace vi::cvode_detail

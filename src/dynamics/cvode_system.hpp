@@ -2,6 +2,9 @@
 // CvodeSystem: the first-order form of a TransientProblem for CVODE (right-hand side, analytic
 // Jacobian, event functions, contact quantities, energy). Internal to the CVODE solver.
 
+#include <sundials/sundials_matrix.h>
+#include <sundials/sundials_nvector.h>
+
 #include <Eigen/Dense>
 #include <vector>
 
@@ -90,5 +93,14 @@ private:
     double t_limit_ = 0.0;
     mutable Eigen::VectorXd acc_;    // scratch for events()
 };
+
+// Throws std::invalid_argument when p is inconsistent (sizes, DOF indices, signs, horizon).
+void validate(const TransientProblem& p);
+
+// CVODE callbacks; user_data is the CvodeSystem. They never let an exception into the C library:
+// one becomes an unrecoverable error (-1) and CVODE fails.
+int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void* user_data);
+int jac_fn(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void* user_data, N_Vector, N_Vector, N_Vector);
+int root_fn(realtype t, N_Vector y, realtype* g, void* user_data);
 
 }  // namespace vi::cvode_detail

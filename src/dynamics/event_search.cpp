@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <queue>
+#include <vector>
 
 namespace vi {
 namespace {
@@ -74,31 +76,51 @@ std::optional<double> first_upcrossing(const ExpSignal& f, double tau0, double t
 namespace vi {
 namespace {
 
-// Upper bound of f on [a, a + h]: modes slow on this interval enter through a Taylor bound with
-// their f(a), f'(a) and |f''|; fast ones (|lambda| h > 2) only through their amplitude.
-double upper_bound_on(const ExpSignal& f, double a, double h) {
-    double f0 = 0.0, f1 = 0.0, b2 = 0.0, fast = 0.0;
-    const Eigen::VectorXcd& lam = *f.lambda;
-    for (Eigen::Index k = 0; k < f.A.size(); ++k) {
-        const cd l = lam[k];
-        const double decay = std::exp(l.real() * a);
-        const double amp = std::abs(f.A[k]) * std::max(decay, std::exp(l.real() * (a + h)));
-        if (std::abs(l) * h > 2.0) {
-            fast += amp;
-        } else {
-            const cd v = f.A[k] * std::exp(l * a);
-            f0 += v.real();
-            f1 += (v * l).real();
-            b2 += amp * std::norm(l);
+// Per-mode constants of a signal for repeated bounds: amplitude, |lambda|, |lambda|^2, Re lambda.
+struct PreparedModes {
+    std::vector<double> amp, mag, mag2, decay;
+    explicit PreparedModes(const ExpSignal& f) {
+        const Eigen::VectorXcd& lam = *f.lambda;
+        for (Eigen::Index k = 0; k < f.A.size(); ++k) {
+            const double m = std::abs(lam[k]);
+            amp.push_back(std::abs(f.A[k]));
+            mag.push_back(m);
+            mag2.push_back(m * m);
+            decay.push_back(lam[k].real());
         }
     }
-    for (const ExpTerm& t : f.terms) {
-        ExpSignal one;
-        one.lambda = f.lambda;
-        one.terms = {t};
-        f0 += one.derivative(a, 0);
-        f1 += one.derivative(a, 1);
-        b2 += one.bound(a, h, 2);
+};
+
+// Upper bound of f on [a, a + h]: modes slow on this interval enter through a Taylor bound with
+// their f(a), f'(a) and |f''|; fast ones (|lambda| h > 2) only through their amplitude.
+double upper_bound_on(const ExpSignal& f, const PreparedModes& pm, double a, double h) {
+    double f0 = 0.0, f1 = 0.0, b2 = 0.0, fast = 0.0;
+    const Eigen::VectorXcd& lam = *f.lambda;
+    const std::size_t n = pm.amp.size();
+    for (std::size_t k = 0; k < n; ++k) {
+        const double re = pm.decay[k];
+        // max of exp(re t) over [a, a + h]: at a when decaying (the usual case).
+        const double grow = std::exp(re * (re <= 0.0 ? a : a + h));
+        const double amp = pm.amp[k] * grow;
+        if (pm.mag[k] * h > 2.0) {
+            fast += amp;
+        } else {
+            const cd l = lam[static_cast<Eigen::Index>(k)];
+            const double e0 = std::exp(re * a);
+            const double ph = l.imag() * a;
+            const cd v = f.A[static_cast<Eigen::Index>(k)] * cd(e0 * std::cos(ph), e0 * std::sin(ph));
+            f0 += v.real();
+            f1 += (v * l).real();
+            b2 += amp * pm.mag2[k];
+        }
+    }
+    if (!f.terms.empty()) {
+        ExpSignal part;  // the particular terms alone, with no homogeneous amplitudes
+        part.lambda = f.lambda;
+        part.terms = f.terms;
+        f0 += part.derivative(a, 0);
+        f1 += part.derivative(a, 1);
+        b2 += part.bound(a, h, 2);
     }
     return f0 + std::max(0.0, f1 * h + 0.5 * b2 * h * h) + fast;
 }
@@ -108,27 +130,35 @@ double upper_bound_on(const ExpSignal& f, double a, double h) {
 SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double abs_tol, double h_min, int* evals,
                              double floor) {
     SignalMaximum best{floor, -1.0};
-    const double f0 = f.value(0.0);
-    if (f0 > best.value) best = {f0, 0.0};
-    const double fe = f.value(tau_end);
-    if (fe > best.value) best = {fe, tau_end};
-    struct Interval {
-        double a, h;
-    };
-    std::vector<Interval> stack{{0.0, tau_end}};
-    int guard = 0;
-    while (!stack.empty() && ++guard < 2000000) {
-        const Interval iv = stack.back();
-        stack.pop_back();
+    auto consider = [&](double tau) {
+        const double v = f.value(tau);
         if (evals) ++*evals;
-        if (upper_bound_on(f, iv.a, iv.h) <= best.value + abs_tol) continue;
+        if (v > best.value) best = {v, tau};
+    };
+    consider(0.0);
+    consider(tau_end);
+    // Best first: always refine the interval with the highest upper bound; once that bound cannot
+    // beat the best value seen, no interval can, and the search ends.
+    struct Interval {
+        double bound, a, h;
+        bool operator<(const Interval& o) const { return bound < o.bound; }
+    };
+    const PreparedModes pm(f);
+    std::priority_queue<Interval> queue;
+    queue.push({upper_bound_on(f, pm, 0.0, tau_end), 0.0, tau_end});
+    for (int guard = 0; !queue.empty() && guard < 2000000; ++guard) {
+        const Interval iv = queue.top();
+        queue.pop();
+        if (iv.bound <= best.value + abs_tol) break;
         const double half = 0.5 * iv.h;
         const double mid = iv.a + half;
-        const double fm = f.value(mid);
-        if (fm > best.value) best = {fm, mid};
+        consider(mid);
         if (half < h_min) continue;
-        stack.push_back({mid, half});
-        stack.push_back({iv.a, half});
+        for (const double a : {iv.a, mid}) {
+            const double b = upper_bound_on(f, pm, a, half);
+            if (evals) ++*evals;
+            if (b > best.value + abs_tol) queue.push({b, a, half});
+        }
     }
     return best;
 }

@@ -1,0 +1,78 @@
+// Wall time of the default free-impact transient (examples/paper/free_impact_tip.toml, m = 50)
+// through T_p, for the exact and the CVODE solver, with the exact solver's time split.
+
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <string>
+
+#include "analysis/simulation.hpp"
+#include "dynamics/cvode_solver.hpp"
+#include "dynamics/exact_solver.hpp"
+#include "io/case_reader.hpp"
+
+namespace {
+
+// The example with its horizon cut to its own T_p (found once by a full run).
+vi::Case example_through_tp() {
+    static const vi::Case c = [] {
+        vi::Case k = vi::read_case_file(std::string(VI_SOURCE_DIR) + "/examples/paper/free_impact_tip.toml");
+        vi::SimulationOptions o;
+        o.history = false;
+        o.energy = false;
+        const vi::SimulationRun run = vi::run_simulation(k, o);
+        if (run.summary.Tp) k.solver.horizon = *run.summary.Tp;
+        std::printf("example: T_p = %.4f us (%s), %zu episodes\n", k.solver.horizon * 1e6,
+                    run.summary.Tp_reason.c_str(), run.result.episodes.size());
+        return k;
+    }();
+    return c;
+}
+
+void report(benchmark::State& state, const vi::TransientResult& r) {
+    state.counters["decomposition_ms"] = r.stats.decomposition_s * 1e3;
+    state.counters["propagation_ms"] = r.stats.propagation_s * 1e3;
+    state.counters["event_location_ms"] = r.stats.event_location_s * 1e3;
+    state.counters["episodes"] = static_cast<double>(r.episodes.size());
+    state.counters["states"] = r.stats.decompositions;
+}
+
+// Exact solver: events, episode peaks and extremes (y_max), no sampled history or energy ledger.
+void BM_ExactThroughTp(benchmark::State& state) {
+    const vi::Case c = example_through_tp();
+    const vi::BuiltProblem b = vi::build_transient_problem(c);
+    vi::ExactOptions o;
+    o.history = state.range(0) != 0;
+    o.energy = state.range(0) != 0;
+    vi::TransientResult r;
+    for (auto _ : state) {
+        r = vi::solve_exact(b.problem, o);
+        benchmark::DoNotOptimize(r.episodes.data());
+    }
+    report(state, r);
+}
+BENCHMARK(BM_ExactThroughTp)->Arg(0)->Arg(1)->ArgName("history_and_energy")->Unit(benchmark::kMillisecond);
+
+void BM_CvodeThroughTp(benchmark::State& state) {
+    const vi::Case c = example_through_tp();
+    const vi::BuiltProblem b = vi::build_transient_problem(c);
+    vi::TransientResult r;
+    for (auto _ : state) {
+        r = vi::solve_cvode(b.problem);
+        benchmark::DoNotOptimize(r.episodes.data());
+    }
+    report(state, r);
+}
+BENCHMARK(BM_CvodeThroughTp)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// Building the problem (modes, static step) is part of every run of a sweep.
+void BM_BuildProblem(benchmark::State& state) {
+    const vi::Case c = example_through_tp();
+    for (auto _ : state) {
+        vi::BuiltProblem b = vi::build_transient_problem(c);
+        benchmark::DoNotOptimize(b.problem.q0.data());
+    }
+}
+BENCHMARK(BM_BuildProblem)->Unit(benchmark::kMillisecond);
+
+}  // namespace
