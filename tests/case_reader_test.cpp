@@ -76,18 +76,28 @@ TEST(CaseReader, ReadsThePaperCantilever) {
     EXPECT_DOUBLE_EQ(c.supports[0].position, 1.0);
     EXPECT_EQ(c.supports[0].side, vi::Side::below);
     EXPECT_EQ(c.supports[0].surface, 0.0);
-    EXPECT_DOUBLE_EQ(c.supports[0].stiffness, 50.0);
+    EXPECT_DOUBLE_EQ(c.supports[0].stiffness, 1000.0);
     EXPECT_EQ(c.supports[0].damping, 0.0);
-    EXPECT_FALSE(c.supports[0].damping_ratio.has_value());
+    ASSERT_TRUE(c.supports[0].damping_ratio.has_value());
+    EXPECT_DOUBLE_EQ(*c.supports[0].damping_ratio, 0.2);
     EXPECT_FALSE(c.damping.from_ratios);
     EXPECT_EQ(c.damping.alpha, 0.0);
     EXPECT_EQ(c.damping.beta, 0.0);
+    // The modal example has no [initial] or [solver]: rest, and no horizon.
+    EXPECT_EQ(c.initial.kind, vi::InitialState::Kind::rest);
+    EXPECT_EQ(c.solver.method, vi::SolverSettings::Method::exact);
+    EXPECT_EQ(c.solver.horizon, 0.0);
+}
+
+TEST(CaseReader, ReadsTheFreeImpactExample) {
+    const vi::Case c = vi::read_case_file(std::string(VI_SOURCE_DIR) + "/examples/paper/free_impact_tip.toml");
+    EXPECT_TRUE(c.damping.from_ratios);
+    EXPECT_DOUBLE_EQ(c.damping.ratio1, 0.005);
     EXPECT_EQ(c.initial.kind, vi::InitialState::Kind::displacement);
     EXPECT_DOUBLE_EQ(c.initial.position, 1.0);
     EXPECT_DOUBLE_EQ(c.initial.displacement, 1e-6);
     EXPECT_EQ(c.initial.velocity_kind, vi::InitialState::Velocity::none);
-    EXPECT_EQ(c.solver.method, vi::SolverSettings::Method::exact);
-    EXPECT_DOUBLE_EQ(c.solver.horizon, 200e-6);
+    EXPECT_DOUBLE_EQ(c.solver.horizon, 150e-6);
     EXPECT_DOUBLE_EQ(c.solver.output_step, 10e-9);
 }
 
