@@ -75,7 +75,10 @@ ImpactSummary summarize_impacts(const TransientResult& r, const ImpactSettings& 
         if (im.peak_penetration > threshold) last_big = &im;
     }
     const Impact& final_impact = out.impacts.back();
-    if (final_impact.closed_at_end && final_impact.peak_penetration > threshold) {
+    // A bounce lasts a fraction of a period; contact held for a whole first period is lasting.
+    const double period1 = 2.0 * std::numbers::pi / s.omega1;
+    const bool lasting = final_impact.closed_at_end && final_impact.t_off - final_impact.t_on > period1;
+    if (lasting) {
         // Contact never lost again (prestress, or a beam come to rest on its support): T_p is the
         // onset of that lasting contact, provided the bouncing before it had settled.
         out.Tp = final_impact.t_on;
