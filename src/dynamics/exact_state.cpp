@@ -243,22 +243,32 @@ ExpSignal PieceSolution::channel(const Eigen::RowVectorXcd& row, double scale, d
     return f;
 }
 
-Eigen::VectorXcd PieceSolution::coords_at(double tau) const {
+Eigen::VectorXcd PieceSolution::exponentials(double tau) const {
     const Eigen::VectorXcd& lam = s_->modes.lambda;
-    Eigen::VectorXcd c(a_.size());
-    for (Eigen::Index k = 0; k < c.size(); ++k) c[k] = a_[k] * std::exp(lam[k] * tau);
+    Eigen::VectorXcd e(lam.size());
+    for (Eigen::Index k = 0; k < e.size(); ++k) e[k] = std::exp(lam[k] * tau);
+    return e;
+}
+
+Eigen::VectorXcd PieceSolution::coords_at(double tau, const Eigen::VectorXcd& e) const {
+    Eigen::VectorXcd c = a_.cwiseProduct(e);
     for (const Term& t : terms_) c += t.C * (std::exp(t.s * tau) * (t.power == 1 ? tau : 1.0));
     return c;
 }
 
-Eigen::VectorXd PieceSolution::state_at(double tau) const { return (s_->modes.R * coords_at(tau)).real(); }
+Eigen::VectorXd PieceSolution::state_at(double tau) const { return state_at(tau, exponentials(tau)); }
 
-double PieceSolution::quadratic_integral(const Eigen::MatrixXcd& w, const Eigen::MatrixXcd& wc, double tau) const {
-    // Integral over [0, tau] of c^T W c with c = a e^(lambda tau) + sum_m C_m tau^p e^(s tau).
+Eigen::VectorXd PieceSolution::state_at(double tau, const Eigen::VectorXcd& e) const {
+    return (s_->modes.R * coords_at(tau, e)).real();
+}
+
+// Integral over [0, tau] of c^T W c, c = a e^(lambda tau) + sum_m C_m tau^p e^(s tau), given
+// W (for the particular terms), W .* cauchy, and the constant a^T (W .* cauchy) a of the piece.
+double PieceSolution::quadratic_integral(const Eigen::MatrixXcd& w, const Eigen::MatrixXcd& wc, cd a_wc_a,
+                                         double tau, const Eigen::VectorXcd& e) const {
     const Eigen::VectorXcd& lam = s_->modes.lambda;
-    Eigen::VectorXcd ae(a_.size());
-    for (Eigen::Index k = 0; k < ae.size(); ++k) ae[k] = a_[k] * std::exp(lam[k] * tau);
-    cd sum = (ae.transpose() * wc * ae)(0) - (a_.transpose() * wc * a_)(0);
+    const Eigen::VectorXcd ae = a_.cwiseProduct(e);
+    cd sum = (ae.transpose() * wc * ae)(0) - a_wc_a;
     for (const Term& t : terms_) {
         const Eigen::VectorXcd wC = w * t.C;
         for (Eigen::Index k = 0; k < a_.size(); ++k) sum += 2.0 * a_[k] * wC[k] * exp_moment(lam[k] + t.s, t.power, tau);
@@ -267,23 +277,54 @@ double PieceSolution::quadratic_integral(const Eigen::MatrixXcd& w, const Eigen:
     return sum.real();
 }
 
-void PieceSolution::accumulate_dissipation(double tau, EnergyLedger& e) const {
-    if (tau <= 0.0) return;
-    e.rayleigh_dissipated += quadratic_integral(s_->rayleigh_w, s_->rayleigh_wc, tau);
+// The same for a rank-one W = kappa g g^T (a contact damper): no n x n matrix is formed.
+double PieceSolution::rank_one_integral(const Eigen::RowVectorXcd& g, double kappa, cd alpha_c_alpha, double tau,
+                                        const Eigen::VectorXcd& e) const {
+    const Eigen::VectorXcd& lam = s_->modes.lambda;
+    const Eigen::VectorXcd alpha_e = g.transpose().cwiseProduct(a_).cwiseProduct(e);
+    cd sum = (alpha_e.transpose() * s_->cauchy * alpha_e)(0) - alpha_c_alpha;
+    for (const Term& t : terms_) {
+        const cd gC = (g * t.C)(0);
+        for (Eigen::Index k = 0; k < a_.size(); ++k) sum += 2.0 * g[k] * a_[k] * gC * exp_moment(lam[k] + t.s, t.power, tau);
+        for (const Term& u : terms_) sum += gC * (g * u.C)(0) * exp_moment(t.s + u.s, t.power + u.power, tau);
+    }
+    return kappa * sum.real();
+}
+
+void PieceSolution::prepare_energy() const {
+    if (energy_ready_) return;
+    a_wc_a_ = (a_.transpose() * s_->rayleigh_wc * a_)(0);
+    alpha_c_alpha_.assign(p_->contacts.size(), cd(0.0));
     for (std::size_t c = 0; c < p_->contacts.size(); ++c) {
         if (!active_[c] || p_->contacts[c].damping == 0.0) continue;
-        const Eigen::RowVectorXcd g = s_->contact_vel.row(static_cast<Eigen::Index>(c));
-        const Eigen::MatrixXcd w = p_->contacts[c].damping * (g.transpose() * g);
-        e.contact_dissipated += quadratic_integral(w, w.cwiseProduct(s_->cauchy), tau);
+        const Eigen::VectorXcd alpha = s_->contact_vel.row(static_cast<Eigen::Index>(c)).transpose().cwiseProduct(a_);
+        alpha_c_alpha_[c] = (alpha.transpose() * s_->cauchy * alpha)(0);
+    }
+    energy_ready_ = true;
+}
+
+void PieceSolution::accumulate_dissipation(double tau, EnergyLedger& e) const {
+    accumulate_dissipation(tau, exponentials(tau), e);
+}
+
+void PieceSolution::accumulate_dissipation(double tau, const Eigen::VectorXcd& ex, EnergyLedger& e) const {
+    if (tau <= 0.0) return;
+    prepare_energy();
+    e.rayleigh_dissipated += quadratic_integral(s_->rayleigh_w, s_->rayleigh_wc, a_wc_a_, tau, ex);
+    for (std::size_t c = 0; c < p_->contacts.size(); ++c) {
+        if (!active_[c] || p_->contacts[c].damping == 0.0) continue;
+        e.contact_dissipated += rank_one_integral(s_->contact_vel.row(static_cast<Eigen::Index>(c)),
+                                                  p_->contacts[c].damping, alpha_c_alpha_[c], tau, ex);
     }
     for (std::size_t l = 0; l < load_vel_.size(); ++l) e.external_work += product_integral(load_vel_[l], load_time_[l], tau);
 }
 
 EnergyLedger PieceSolution::energy_at(double tau, const EnergyLedger& start) const {
     EnergyLedger e = start;
-    accumulate_dissipation(tau, e);
+    const Eigen::VectorXcd ex = exponentials(tau);
+    accumulate_dissipation(tau, ex, e);
     const int n = b_->n;
-    const Eigen::VectorXd x = state_at(tau);
+    const Eigen::VectorXd x = state_at(tau, ex);
     e.kinetic = 0.5 * x.tail(n).squaredNorm();
     e.strain = 0.5 * x.head(n).cwiseProduct(b_->omega).squaredNorm();
     e.contact_spring = 0.0;

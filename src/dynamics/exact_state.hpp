@@ -56,8 +56,15 @@ private:
         int power;
     };
     ExpSignal channel(const Eigen::RowVectorXcd& row, double scale, double offset) const;
-    [[nodiscard]] Eigen::VectorXcd coords_at(double tau) const;
-    [[nodiscard]] double quadratic_integral(const Eigen::MatrixXcd& w, const Eigen::MatrixXcd& wc, double tau) const;
+    [[nodiscard]] Eigen::VectorXcd exponentials(double tau) const;
+    [[nodiscard]] Eigen::VectorXcd coords_at(double tau, const Eigen::VectorXcd& e) const;
+    [[nodiscard]] Eigen::VectorXd state_at(double tau, const Eigen::VectorXcd& e) const;
+    [[nodiscard]] double quadratic_integral(const Eigen::MatrixXcd& w, const Eigen::MatrixXcd& wc, cd a_wc_a, double tau,
+                                            const Eigen::VectorXcd& e) const;
+    [[nodiscard]] double rank_one_integral(const Eigen::RowVectorXcd& g, double kappa, cd alpha_c_alpha, double tau,
+                                           const Eigen::VectorXcd& e) const;
+    void accumulate_dissipation(double tau, const Eigen::VectorXcd& e, EnergyLedger& ledger) const;
+    void prepare_energy() const;  // the piece's constant parts of the dissipation integrals
 
     const TransientProblem* p_;
     const BaseModes* b_;
@@ -69,6 +76,9 @@ private:
     std::vector<bool> release_;
     ExpSignal tip_v_, tip_vel_;
     std::vector<ExpSignal> load_vel_, load_time_;
+    mutable bool energy_ready_ = false;
+    mutable cd a_wc_a_;
+    mutable std::vector<cd> alpha_c_alpha_;
 };
 
 // The model shared by all pieces: base modes and a cache of decomposed contact states.
