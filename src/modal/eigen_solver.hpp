@@ -15,7 +15,7 @@ struct ModeSet {
 
 // Problems up to this size are solved densely (all modes, LAPACK-free Eigen); larger ones by
 // Spectra's shift-invert Lanczos for the requested count only.
-inline constexpr int kDenseEigenLimit = 600;
+inline constexpr int kDenseEigenLimit = 200;
 
 // The lowest count modes of (K, M); count is clipped to the problem size. Throws
 // std::runtime_error when the solver does not converge or K is not positive definite.
