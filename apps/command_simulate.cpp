@@ -8,6 +8,7 @@
 #include "analysis/simulation.hpp"
 #include "commands.hpp"
 #include "io/case_reader.hpp"
+#include "io/input_error.hpp"
 #include "io/output_files.hpp"
 #include "report/transient_output.hpp"
 
@@ -37,7 +38,12 @@ CommandBody add_simulate_command(CLI::App& app) {
 
     return [opt]() {
         const Case c = read_case_file(opt->case_path);
-        const SimulationRun run = run_simulation(c);
+        SimulationRun run;
+        try {
+            run = run_simulation(c);
+        } catch (const InputError& e) {
+            throw locate_in_case(c, e);
+        }
         const OutputFiles files = transient_files(c, run.built, run.result, run.summary);
         if (!opt->out_dir.empty()) write_output_files(opt->out_dir, files);
         if (opt->json) {

@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
     add(add_modes_command);
     add(add_support_scan_command);
     add(add_simulate_command);
+    add(add_validate_command);
 
     try {
         app.parse(argc, argv);

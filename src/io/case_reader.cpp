@@ -114,10 +114,12 @@ Support read_support(const toml::table& t, const std::string& path, Position at,
     f.exclusive("gap", "prestress");
     if (auto v = f.quantity("gap", Dimension::length, false)) {
         s.surface = -*v;
+        s.surface_key = "gap";
         if (*v < 0.0) r.value_problems.push_back({path + ".gap", "must not be negative"});
     }
     if (auto v = f.quantity("prestress", Dimension::length, false)) {
         s.surface = *v;
+        s.surface_key = "prestress";
         if (*v < 0.0) r.value_problems.push_back({path + ".prestress", "must not be negative"});
     }
     if (auto v = f.quantity("stiffness", Dimension::stiffness, true)) s.stiffness = *v;
@@ -410,7 +412,29 @@ Case read_case_text(const std::string& text, const std::string& source_name) {
     ReadLog placed;
     for (const CaseProblem& p : problems) placed.problem(r.log.where(p.key), p.key, p.message);
     if (auto p = placed.first()) throw_problem(source_name, *p);
+    c.origin.file = source_name;
+    c.origin.key_lines = r.log.lines();
     return c;
+}
+
+InputError locate_in_case(const Case& c, const InputError& e) {
+    const std::string what = e.what();
+    const auto colon = what.find(": ");
+    if (c.origin.file.empty() || colon == std::string::npos) return e;
+    // The key, or failing that its nearest parent ("supports[1].gap" -> "supports[1]" -> "supports").
+    std::string key = what.substr(0, colon);
+    if (key.find(' ') != std::string::npos) return e;
+    int line = 0;
+    for (std::string k = key; !k.empty();) {
+        const auto it = c.origin.key_lines.find(k);
+        if (it != c.origin.key_lines.end()) {
+            line = it->second;
+            break;
+        }
+        const auto cut = k.find_last_of(".[");
+        k = cut == std::string::npos ? std::string() : k.substr(0, cut);
+    }
+    return InputError(c.origin.file + ":" + std::to_string(line > 0 ? line : 1) + ": " + what);
 }
 
 Case read_case_file(const std::string& path) {

@@ -64,6 +64,12 @@ void ReadLog::problem(Position at, std::string key, std::string message) {
 
 void ReadLog::locate(const std::string& key, Position at) { positions_[key] = at; }
 
+std::map<std::string, int> ReadLog::lines() const {
+    std::map<std::string, int> out;
+    for (const auto& [key, pos] : positions_) out[key] = static_cast<int>(pos.line);
+    return out;
+}
+
 Position ReadLog::where(std::string key) const {
     while (!key.empty()) {
         if (const auto it = positions_.find(key); it != positions_.end()) return it->second;

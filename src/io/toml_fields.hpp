@@ -37,6 +37,8 @@ public:
     void locate(const std::string& key, Position at);
     // Position of key; else of its nearest recorded parent ("beam.right" -> "beam"); else line 1.
     [[nodiscard]] Position where(std::string key) const;
+    // Line of every key and table recorded, by dotted path.
+    [[nodiscard]] std::map<std::string, int> lines() const;
     // The problem that comes first in the file (ties: the one found first); none when clean.
     [[nodiscard]] std::optional<SourceProblem> first() const;
 

@@ -1,6 +1,7 @@
 #pragma once
 // Case: the validated, unit-free (SI) description of one beam with its supports, damping and loads.
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,6 +45,9 @@ struct Support {
     // Height of the support surface above the beam's unloaded axis, on the support's own side
     // convention: s = -gap; s > 0 is a prestress [m].
     double surface = 0.0;
+    // Which key set the surface in the case file ("gap", "prestress", or "" when neither), so that
+    // problems with it name the key the user wrote.
+    std::string surface_key;
     double stiffness = 0.0;                  // Kc [N/m]
     double damping = 0.0;                    // Cc [N s/m]
     std::optional<double> damping_ratio;     // if set, Cc is derived from it (see docs/model.md)
@@ -98,8 +102,16 @@ struct SolverSettings {
     double rtol = 1e-10;             // CVODE relative tolerance
 };
 
+// Where a case came from: the file and the line of every key read, for messages about problems
+// found after reading (e.g. while building the transient problem).
+struct CaseOrigin {
+    std::string file;                        // as given; empty for cases built in code
+    std::map<std::string, int> key_lines;    // dotted key -> 1-based line
+};
+
 // Everything read from one case file, in SI units.
 struct Case {
+    CaseOrigin origin;
     std::string name;             // for output files and reports
     Beam beam;
     Material material;

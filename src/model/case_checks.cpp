@@ -64,8 +64,11 @@ void check_opposite_supports(std::vector<CaseProblem>& out, const std::vector<Su
             const double below = surface_height(s.side == Side::below ? s : o);
             const double above = surface_height(s.side == Side::above ? s : o);
             if (below < above) continue;
-            const char* key = s.surface < 0.0 ? "gap" : s.surface > 0.0 ? "prestress" : "position";
-            out.push_back({support_key(i, key),
+            const std::string key = !s.surface_key.empty() ? s.surface_key
+                                    : s.surface < 0.0     ? "gap"
+                                    : s.surface > 0.0     ? "prestress"
+                                                          : "position";
+            out.push_back({support_key(i, key.c_str()),
                            "overlaps supports[" + std::to_string(j) + "] on the other side (the surface below, at v = " +
                                number_text(below) + " m, must lie under the surface above, at v = " +
                                number_text(above) + " m)"});

@@ -1,0 +1,65 @@
+// `vibroimpact validate`: regenerates docs/validation.md (or, with --paper-parameters,
+// docs/paper-parameters.md) from closed forms and independent methods.
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "analysis/validation_report.hpp"
+#include "commands.hpp"
+#include "io/case_reader.hpp"
+#include "io/input_error.hpp"
+#include "io/output_files.hpp"
+
+namespace vi::cli {
+
+CommandBody add_validate_command(CLI::App& app) {
+    struct Options {
+        std::string out;
+        bool quick = false;
+        bool paper_parameters = false;
+        bool quiet = false;
+        std::string example = "examples/paper/free_impact_tip.toml";
+    };
+    auto opt = std::make_shared<Options>();
+    CLI::App* sub = app.add_subcommand(
+        "validate", "Validation document (docs/validation.md): the model against closed forms and independent methods");
+    sub->add_option("--out,-o", opt->out, "Write the Markdown document to FILE (atomically) instead of stdout");
+    sub->add_flag("--quick", opt->quick, "Skip the slow parts (exact vs CVODE on the example, the m = 200 mesh)");
+    sub->add_flag("--paper-parameters", opt->paper_parameters,
+                  "Write docs/paper-parameters.md instead: the parameters the paper does not give, and the Kc scan");
+    sub->add_option("--case", opt->example, "The default example the transient sections run")->capture_default_str();
+    sub->add_flag("--quiet,-q", opt->quiet, "No progress lines on stderr");
+
+    return [opt]() {
+        std::filesystem::path out_path(opt->out);
+        if (!opt->out.empty() && out_path.filename().empty()) throw InputError("--out: expected a file name, got a folder");
+        ValidationOptions vo;
+        vo.quick = opt->quick;
+        vo.example = read_case_file(opt->example);
+        vo.example_path = opt->example;
+        const auto t0 = std::chrono::steady_clock::now();
+        auto elapsed = [t0]() {
+            return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        };
+        if (!opt->quiet) {
+            vo.progress = [elapsed](const std::string& line) {
+                std::fprintf(stderr, "validate: [%6.1f s] %s\n", elapsed(), line.c_str());
+            };
+        }
+        const std::string text = opt->paper_parameters ? paper_parameters_report(vo) : validation_report(vo);
+        if (opt->out.empty()) {
+            std::fputs(text.c_str(), stdout);
+        } else {
+            const std::filesystem::path dir = out_path.parent_path().empty() ? "." : out_path.parent_path();
+            write_output_files(dir.string(), {{out_path.filename().string(), text}});
+            std::printf("Written to %s\n", opt->out.c_str());
+        }
+        if (!opt->quiet) std::fprintf(stderr, "validate: done in %.1f s\n", elapsed());
+        return kExitOk;
+    };
+}
+
+}  // namespace vi::cli

@@ -1,0 +1,89 @@
+// Every case file under examples/ runs: `modes` on each, `simulate` on each that sets a horizon; the
+// paper's free impact example keeps the headline numbers its comments and docs quote.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "support/run_command.hpp"
+
+namespace vi {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using test::run_vibroimpact;
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+// Every .toml under examples/, in a stable order.
+std::vector<fs::path> example_files() {
+    std::vector<fs::path> files;
+    for (const auto& e : fs::recursive_directory_iterator(test::source_path("examples"))) {
+        if (e.is_regular_file() && e.path().extension() == ".toml") files.push_back(e.path());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+// A case sets a horizon when a line (not a comment) assigns the key `horizon`.
+bool sets_horizon(const std::string& text) {
+    static const std::regex key(R"((^|\n)[ \t]*horizon[ \t]*=)");
+    return std::regex_search(text, key);
+}
+
+TEST(Examples, EveryCaseFileRuns) {
+    const std::vector<fs::path> files = example_files();
+    ASSERT_GE(files.size(), 2u) << "examples/ should hold at least the paper's cases";
+    int simulated = 0;
+    for (const fs::path& f : files) {
+        SCOPED_TRACE(f.string());
+        const auto modes = run_vibroimpact({"modes", f.string(), "--json"});
+        EXPECT_EQ(modes.exit_code, 0) << modes.err;
+        EXPECT_TRUE(modes.err.empty()) << modes.err;
+        if (modes.exit_code == 0) {
+            const json j = json::parse(modes.out, nullptr, false);
+            ASSERT_FALSE(j.is_discarded()) << modes.out;
+            EXPECT_FALSE(j["unsupported"]["bending"].empty());
+        }
+        if (!sets_horizon(read_text(f))) continue;
+        ++simulated;
+        const auto sim = run_vibroimpact({"simulate", f.string(), "--json"});
+        EXPECT_EQ(sim.exit_code, 0) << sim.err;
+        EXPECT_TRUE(sim.err.empty()) << sim.err;
+        if (sim.exit_code == 0) {
+            const json j = json::parse(sim.out, nullptr, false);
+            ASSERT_FALSE(j.is_discarded()) << sim.out;
+            EXPECT_TRUE(j["Tp_reason"].is_string());
+        }
+    }
+    EXPECT_GE(simulated, 1) << "no example sets [solver] horizon";
+}
+
+TEST(Examples, FreeImpactTipKeepsItsHeadlineNumbers) {
+    const auto r = run_vibroimpact({"simulate", test::source_path("examples/paper/free_impact_tip.toml"), "--json"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const json j = json::parse(r.out);
+    ASSERT_TRUE(j["T_s"].is_number()) << j["T_s"].dump();
+    const double T = j["T_s"].get<double>();
+    EXPECT_GT(T, 5.3e-6);
+    EXPECT_LT(T, 5.6e-6);
+    EXPECT_EQ(j["Tp_reason"], "settled");
+    ASSERT_TRUE(j["Tp_s"].is_number());
+    EXPECT_LT(j["Tp_s"].get<double>(), 150e-6);  // settles within the horizon
+}
+
+}  // namespace
+}  // namespace vi
