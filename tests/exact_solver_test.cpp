@@ -73,3 +73,33 @@ TEST(ExactSolver, DampedEnergyLossEqualsDamperWork) {
 
 }  // namespace
 }  // namespace vi
+
+namespace vi {
+namespace {
+
+// A mass on a spring released from +A swings down to exactly -A. A support below at -A (1 - delta)
+// is touched with a penetration of only A delta; at -A (1 + delta) it is never touched.
+TransientProblem grazing_oscillator(double delta_gap) {
+    const double m = 1e-9, k = 1.0, A = 1e-6;
+    TransientProblem p = test::single_dof_drop(m, 1e3, 0.0, A, 0.0, 0.0);
+    p.K(0, 0) = k;
+    p.contacts[0].surface = -A * (1.0 + delta_gap);
+    p.t_end = 1.2 * std::numbers::pi * std::sqrt(m / k);  // past the lowest point at pi sqrt(m/k)
+    p.output_step = p.t_end / 10;
+    return p;
+}
+
+TEST(ExactSolver, GrazingContactsAreNeverMissed) {
+    for (double delta : {1e-3, 1e-6, 1e-9, 1e-11}) {
+        const TransientResult hit = solve_exact(grazing_oscillator(-delta));
+        ASSERT_EQ(hit.episodes.size(), 1u) << "delta " << delta;
+        // The stiff contact stops the mass well before the free swing's overshoot A delta.
+        EXPECT_GT(hit.episodes[0].peak_penetration, 0.0) << delta;
+        EXPECT_LT(hit.episodes[0].peak_penetration, 1e-6 * delta) << delta;
+        const TransientResult miss = solve_exact(grazing_oscillator(+delta));
+        EXPECT_TRUE(miss.episodes.empty()) << "delta " << delta;
+    }
+}
+
+}  // namespace
+}  // namespace vi
