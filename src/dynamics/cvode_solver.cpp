@@ -75,6 +75,7 @@ private:
     void sample_until(double t_lim, bool interpolate);
     void record(double t, const double* y);
     void update_peaks(const double* y);
+    void update_extremes(double t, const double* y);
     double handle_roots(double tret);
     double locate_missed_closing(int j, double tret);
     void toggle(double t, const std::vector<int>& which);
@@ -181,6 +182,29 @@ void Driver::record(double t, const double* y) {
 // exactly: events 1 and 2 are dd/dt and dF/dt of a closed contact, direction -1) or at a stop
 // where dF/dt jumps (another contact switching, a load breakpoint). This runs at every return of
 // CVODE (each step, root and stop), so all of those are covered.
+// Extremes (y_max, deepest tip deflection, contact point maximum) after the first onset: local
+// extrema are roots of the velocities (located by CVODE); values at every return cover the ends.
+void Driver::update_extremes(double t, const double* y) {
+    if (r_.episodes.empty()) return;
+    Extremes& ex = r_.extremes;
+    const double tip = y[p_.tip_dof];
+    if (!ex.valid) {
+        ex.valid = true;
+        ex.tip_max = ex.contact_max = -std::numeric_limits<double>::infinity();
+        ex.tip_min = std::numeric_limits<double>::infinity();
+    }
+    if (tip > ex.tip_max) {
+        ex.tip_max = tip;
+        ex.tip_max_t = t;
+    }
+    const bool in_contact = std::find(active_.begin(), active_.end(), true) != active_.end();
+    if (in_contact && tip < ex.tip_min) {
+        ex.tip_min = tip;
+        ex.tip_min_t = t;
+    }
+    if (sys_.contacts() > 0) ex.contact_max = std::max(ex.contact_max, y[p_.contacts.front().dof]);
+}
+
 void Driver::update_peaks(const double* y) {
     for (int j = 0; j < sys_.contacts(); ++j) {
         const int e = open_[static_cast<std::size_t>(j)];
@@ -219,7 +243,9 @@ double Driver::handle_roots(double tret) {
     }
     sample_until(t_ev, true);
     update_peaks(N_VGetArrayPointer(s_.y));
+    update_extremes(t_ev, N_VGetArrayPointer(s_.y));
     if (!which.empty()) toggle(t_ev, which);
+    update_extremes(t_ev, N_VGetArrayPointer(s_.y));
     return t_ev;
 }
 
@@ -299,6 +325,8 @@ void Driver::restart(double t) {
     if (sys_.roots() > 0) {
         std::vector<int> dir(static_cast<std::size_t>(sys_.roots()));
         for (std::size_t i = 0; i < dir.size(); ++i) dir[i] = i % 3 == 0 ? 1 : -1;
+        dir[static_cast<std::size_t>(sys_.extreme_root())] = 0;
+        dir[static_cast<std::size_t>(sys_.extreme_root()) + 1] = 0;
         check(CVodeSetRootDirection(s_.mem, dir.data()), "CVodeSetRootDirection");
     }
     t_restart_ = t;
@@ -371,6 +399,7 @@ TransientResult Driver::run() {
         } else {
             sample_until(tret, true);
             update_peaks(N_VGetArrayPointer(s_.y));
+            update_extremes(tret, N_VGetArrayPointer(s_.y));
             t = flag == CV_TSTOP_RETURN ? t_stop : tret;
         }
         t_done_ = t;

@@ -161,6 +161,8 @@ void CvodeSystem::events(double t, const double* y, double* g) const {
             gj[2] = 1.0;
         }
     }
+    g[3 * nc_] = y[n_ + p_.tip_dof];
+    g[3 * nc_ + 1] = nc_ > 0 ? y[n_ + p_.contacts.front().dof] : 1.0;
 }
 
 EnergyLedger CvodeSystem::energy(const double* y, double jump) const {

@@ -38,7 +38,10 @@ public:
     [[nodiscard]] int dofs() const { return n_; }
     [[nodiscard]] int size() const { return 2 * n_ + 3 + nc_; }
     [[nodiscard]] int contacts() const { return nc_; }
-    [[nodiscard]] int roots() const { return 3 * nc_; }
+    // 3 per contact, then 2 for the extremes: the watched point's velocity and contact 0's
+    // velocity (zero crossings in either direction are its local maxima and minima).
+    [[nodiscard]] int roots() const { return 3 * nc_ + 2; }
+    [[nodiscard]] int extreme_root() const { return 3 * nc_; }
     [[nodiscard]] int rayleigh_index() const { return 2 * n_; }
     [[nodiscard]] int contact_damping_index() const { return 2 * n_ + 1; }
     [[nodiscard]] int work_index() const { return 2 * n_ + 2; }
