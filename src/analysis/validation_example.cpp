@@ -195,9 +195,19 @@ std::string section_mesh(const ValidationOptions& o) {
           << (all ? "" : " (where both are defined)") << ".\n";
     }
     s << "\n";
+    // Failures, the meshes with the same message together.
+    std::vector<std::pair<std::string, std::string>> failures;  // message, meshes
     for (const Row& row : rows) {
         if (row.summary) continue;
-        s << "m = " << row.m << " could not run: the exact solver stopped with \"" << row.failure << "\".\n\n";
+        auto it = std::find_if(failures.begin(), failures.end(), [&](const auto& f) { return f.first == row.failure; });
+        if (it == failures.end()) {
+            failures.emplace_back(row.failure, "m = " + std::to_string(row.m));
+        } else {
+            it->second += " and " + std::to_string(row.m);
+        }
+    }
+    for (const auto& [message, which] : failures) {
+        s << which << " could not run: the exact solver stopped with \"" << message << "\".\n\n";
     }
     return s.str();
 }

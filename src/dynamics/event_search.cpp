@@ -41,8 +41,8 @@ std::optional<double> first_upcrossing(const ExpSignal& f, double tau0, double t
     const double noise = 64.0 * std::numeric_limits<double>::epsilon() * f.bound(tau0, 0.0, 0);
     if (std::abs(fv) <= noise) fv = 0.0;
     bool first = true;
+    double fp = f.derivative(tau, 1);
     while (tau < tau_max) {
-        const double fp = f.derivative(tau, 1);
         if (evals) ++*evals;
         if (fv > 0.0) return tau;  // already positive (caller's state was inconsistent by more than roundoff)
         if (fv == 0.0 && fp > 0.0 && !first) return tau;
@@ -62,11 +62,12 @@ std::optional<double> first_upcrossing(const ExpSignal& f, double tau0, double t
         }
         if (!(h >= opt.h_min)) h = opt.h_min;
         const double next = std::min(tau + h, tau_max);
-        const double fn = f.value(next);
+        const auto [fn, fpn] = f.value_and_slope(next);
         if (evals) ++*evals;
         if (fn > 0.0) return refine(f, tau, next, fv, fn, opt.t_tol, evals);
         tau = next;
         fv = fn;
+        fp = fpn;
     }
     return std::nullopt;
 }

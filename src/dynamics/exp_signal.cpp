@@ -16,6 +16,21 @@ cd term_derivative(const ExpTerm& t, double tau, int d) {
 
 }  // namespace
 
+std::pair<double, double> ExpSignal::value_and_slope(double tau) const {
+    cd v = 0.0, s = 0.0;
+    for (Eigen::Index k = 0; k < A.size(); ++k) {
+        const cd l = (*lambda)[k];
+        const cd f = A[k] * std::exp(l * tau);
+        v += f;
+        s += f * l;
+    }
+    for (const ExpTerm& t : terms) {
+        v += term_derivative(t, tau, 0);
+        s += term_derivative(t, tau, 1);
+    }
+    return {v.real(), s.real()};
+}
+
 double ExpSignal::derivative(double tau, int d) const {
     cd sum = 0.0;
     for (Eigen::Index k = 0; k < A.size(); ++k) {
@@ -32,8 +47,14 @@ double ExpSignal::bound(double tau, double h, int d) const {
     double b = 0.0;
     for (Eigen::Index k = 0; k < A.size(); ++k) {
         const cd l = (*lambda)[k];
-        const double growth = std::max(std::exp(l.real() * tau), std::exp(l.real() * (tau + h)));
-        b += std::abs(A[k]) * std::pow(std::abs(l), d) * growth;
+        // max of exp(Re l t) over [tau, tau + h]: at tau for a decaying mode.
+        const double growth = std::exp(l.real() * (l.real() <= 0.0 ? tau : tau + h));
+        const double mag2 = std::norm(l);
+        double m = 1.0;
+        if (d == 1) m = std::sqrt(mag2);
+        if (d == 2) m = mag2;
+        if (d >= 3) m = std::pow(mag2, 0.5 * d);
+        b += std::abs(A[k]) * m * growth;
     }
     for (const ExpTerm& t : terms) {
         const double growth = std::max(std::exp(t.s.real() * tau), std::exp(t.s.real() * (tau + h)));

@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <complex>
+#include <utility>
 #include <vector>
 
 namespace vi {
@@ -25,6 +26,8 @@ struct ExpSignal {
     // d-th derivative (0..3) at tau [s].
     [[nodiscard]] double derivative(double tau, int d) const;
     [[nodiscard]] double value(double tau) const { return derivative(tau, 0); }
+    // f and f' together (one exponential per mode).
+    [[nodiscard]] std::pair<double, double> value_and_slope(double tau) const;
     // An upper bound of |f^(d)| over [tau, tau + h].
     [[nodiscard]] double bound(double tau, double h, int d) const;
     // Integral of f over [0, tau].
