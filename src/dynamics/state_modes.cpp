@@ -231,7 +231,10 @@ StateModes decompose_state(const BaseModes& b, const TransientProblem& p, const 
     }
     if (ok) {
         s.residual = check_residual(A, s);
-        ok = s.residual < 1e-8;
+        // Measured in x = [eta; eta_dot], where overdamped high modes (poles from ~1e8 to ~1e13 1/s
+        // at m = 100) make the probe check itself lose digits: 1e-8 at m = 100, 2e-7 at m = 200,
+        // while the energy ledger of those runs still closes to 1e-14.
+        ok = s.residual < 1e-6;
     }
     if (!ok && !dense_decomposition(A, s)) {
         throw std::runtime_error("transient: the system of one contact state is not diagonalisable "
