@@ -5,35 +5,15 @@
 #include <cmath>
 
 #include "analysis/closed_forms.hpp"
+#include "analysis/reference_problems.hpp"
 #include "analysis/support_scan.hpp"
 #include "paper_cases.hpp"
 
 namespace vi {
 namespace {
 
-double first_ratio(double x0) {
-    const Case c = test::paper_cantilever(50, x0);
-    return modal_study(c, 1, SupportModel::pin).ratios.at(0);
-}
-
 TEST(SupportScan, FirstFrequencyRatioPeaksNear078At627) {
-    // Coarse scan, then golden-section search around the best point.
-    double best = 0.02;
-    for (double x = 0.02; x <= 1.0 + 1e-12; x += 0.02) {
-        if (first_ratio(x) > first_ratio(best)) best = x;
-    }
-    double a = best - 0.02, b = std::min(1.0, best + 0.02);
-    const double g = (std::sqrt(5.0) - 1) / 2;
-    for (int it = 0; it < 40; ++it) {
-        const double x1 = b - g * (b - a), x2 = a + g * (b - a);
-        if (first_ratio(x1) > first_ratio(x2)) {
-            b = x2;
-        } else {
-            a = x1;
-        }
-    }
-    const double x_star = 0.5 * (a + b);
-    const double r_star = first_ratio(x_star);
+    const auto [x_star, r_star] = first_ratio_peak(50);
     EXPECT_NEAR(x_star, 0.78, 0.01);
     EXPECT_NEAR(r_star, 6.27, 0.01);
     // Independent check of the peak value from the transfer determinant.

@@ -244,32 +244,7 @@ std::string section_supported(const ValidationOptions& o) {
     s << "## 4. Supported beam\n\n"
       << "The support as a pin v(x0) = 0 (`SupportModel::pin`), m = 50 (the mesh gets a node at x0). "
          "ratio_i = omega_i(supported) / omega_i(unsupported).\n\n";
-    std::map<double, double> cache;
-    auto first_ratio = [&](double x0) {
-        const auto it = cache.find(x0);
-        if (it != cache.end()) return it->second;
-        const double r = modal_study(paper_cantilever(50, x0), 1, SupportModel::pin).ratios.at(0);
-        cache.emplace(x0, r);
-        return r;
-    };
-    // As tests/support_scan_test.cpp: a coarse scan, then golden-section search around the best point.
-    double best = 0.02;
-    for (int k = 1; k <= 50; ++k) {
-        const double x = 0.02 * k;
-        if (first_ratio(x) > first_ratio(best)) best = x;
-    }
-    double a = best - 0.02, b = std::min(1.0, best + 0.02);
-    const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-    for (int it = 0; it < 40; ++it) {
-        const double x1 = b - g * (b - a), x2 = a + g * (b - a);
-        if (first_ratio(x1) > first_ratio(x2)) {
-            b = x2;
-        } else {
-            a = x1;
-        }
-    }
-    const double x_star = 0.5 * (a + b);
-    const double r_star = first_ratio(x_star);
+    const auto [x_star, r_star] = first_ratio_peak(50);
     const double beta1 = closed_form::cantilever_beta_l(1)[0];
     const double r_exact = std::pow(closed_form::pinned_cantilever_beta_l(x_star) / beta1, 2);
     Table t{{"quantity", "computed", "reference", "error", "test asserts"}, {}};

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "analysis/reference_problems.hpp"
 #include "dynamics/transient_problem.hpp"
 #include "model/case.hpp"
 
@@ -33,11 +34,6 @@ std::string paper_parameters_report(const ValidationOptions& o);
 // Pieces shared by the report's source files (validation_*.cpp); not a stable interface.
 namespace validation_detail {
 
-// The paper's nickel cantilever, l = 117 um, w = 30 um, t = 2 um, m elements; optionally one
-// support below at x0/l = support_at (Kc = 50 N/m; only its position matters for modal work).
-Case paper_cantilever(int elements, double support_at = -1.0);
-Case clamped_clamped(int elements);
-
 // Circular frequency of a bending mode with the given beta l on the case's beam [rad/s].
 double closed_omega(const Case& c, double beta_l);
 
@@ -57,14 +53,6 @@ struct Table {
     void add(std::vector<std::string> row) { rows.push_back(std::move(row)); }
     [[nodiscard]] std::string str() const;
 };
-
-// The tip drop of tests/transient_fixtures.hpp (cantilever_drop): the paper's cantilever with m
-// elements, a Kelvin-Voigt contact at its tip with zero gap, released from rest in its static shape
-// under a tip force with the tip lifted by y0.
-TransientProblem cantilever_drop(int m, double Kc, double Cc, double y0, double alpha, double beta, double t_end);
-
-// One mass on a contact below at height 0, from height h moving down at v (tests' single_dof_drop).
-TransientProblem single_dof_drop(double m, double Kc, double Cc, double h, double v, double t_end);
 
 // Sections of docs/validation.md, each a Markdown fragment starting with its "## N." heading.
 std::string section_static(const ValidationOptions& o);
