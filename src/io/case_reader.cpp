@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "io/input_error.hpp"
+#include "io/load_table.hpp"
+#include "io/text_file.hpp"
 #include "io/toml_fields.hpp"
 #include "io/units.hpp"
 #include "model/case_checks.hpp"
@@ -280,20 +282,6 @@ Case read_root(const toml::table& root, const std::string& default_name, Reading
 }
 
 // Escapes line breaks so that every message is one line, whatever the file name or text holds.
-std::string one_line(std::string s) {
-    std::string out;
-    for (const char ch : s) {
-        if (ch == '\n') {
-            out += "\\n";
-        } else if (ch == '\r') {
-            out += "\\r";
-        } else {
-            out += ch;
-        }
-    }
-    return out;
-}
-
 [[noreturn]] void throw_problem(const std::string& source, const tomlio::SourceProblem& p) {
     throw InputError(one_line(source + ":" + std::to_string(p.at.line) + ": " + p.key + ": " + p.message));
 }
@@ -303,81 +291,6 @@ std::string default_name(const std::string& source_name) {
     return stem.empty() ? "case" : stem;
 }
 
-// The whole file as text; nullopt with the reason ("No such file or directory") when unreadable.
-std::optional<std::string> file_text(const std::string& path, std::string& reason) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) {
-        reason = "it is a directory";
-        return std::nullopt;
-    }
-    errno = 0;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        const int err = errno;
-        reason = err != 0 ? std::generic_category().message(err) : "cannot open";
-        return std::nullopt;
-    }
-    std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (in.bad()) {
-        reason = "read error";
-        return std::nullopt;
-    }
-    return text;
-}
-
-std::string trimmed(std::string_view s) {
-    const auto b = s.find_first_not_of(" \t\r");
-    if (b == std::string_view::npos) return {};
-    return std::string(s.substr(b, s.find_last_not_of(" \t\r") - b + 1));
-}
-
-// A load's time-function table from CSV text: the header row "t_s,g", then one "time,value" row per
-// line (plain numbers, SI seconds), times strictly increasing; blank lines are skipped. Throws
-// InputError("FILE:LINE: reason") at the first bad line.
-void parse_load_table(const std::string& text, const std::string& file, TimeFunction& g) {
-    std::size_t line_no = 0;
-    const auto fail = [&](const std::string& why) {
-        throw InputError(one_line(file + ":" + std::to_string(std::max<std::size_t>(line_no, 1)) + ": " + why));
-    };
-    const auto number = [&](const std::string& field, const char* column) {
-        try {
-            return parse_quantity(field, Dimension::dimensionless);
-        } catch (const std::invalid_argument& e) {
-            fail(std::string(column) + ": " + e.what());
-        }
-        return 0.0;
-    };
-    bool header = false;
-    std::size_t begin = 0;
-    while (begin < text.size()) {
-        std::size_t end = text.find('\n', begin);
-        if (end == std::string::npos) end = text.size();
-        const std::string_view line(text.data() + begin, end - begin);
-        begin = end + 1;
-        ++line_no;
-        if (trimmed(line).empty()) continue;
-        const std::size_t comma = line.find(',');
-        if (comma == std::string_view::npos || line.find(',', comma + 1) != std::string_view::npos) {
-            fail("expected 2 comma-separated columns (t_s,g), got " + vi::quoted(line));
-        }
-        const std::string a = trimmed(line.substr(0, comma));
-        const std::string b = trimmed(line.substr(comma + 1));
-        if (!header) {
-            if (a != "t_s" || b != "g") fail("expected the header row \"t_s,g\", got " + vi::quoted(line));
-            header = true;
-            continue;
-        }
-        const double t = number(a, "t_s");
-        const double v = number(b, "g");
-        if (!g.times.empty() && !(t > g.times.back())) fail("t_s: times must increase strictly down the table");
-        g.times.push_back(t);
-        g.values.push_back(v);
-    }
-    if (!header) fail("empty table (expected the header row \"t_s,g\")");
-    if (g.times.empty()) fail("no rows below the header");
-}
-
-// Reads every [[loads]] table file, relative to the case file's folder.
 void read_load_tables(const std::string& source_name, Reading& r, Case& c) {
     const std::filesystem::path folder = std::filesystem::path(source_name).parent_path();
     for (const TableFile& t : r.tables) {
