@@ -8,24 +8,14 @@
 #include <string>
 
 #include "io/case_reader.hpp"
+#include "case_text_fixture.hpp"
 #include "io/input_error.hpp"
 
 namespace {
 
 using vi::read_case_text;
 
-// A valid case, one key per line; tests below edit it line by line so line numbers stay known.
-const std::string kBase =
-    "name = \"t\"\n"                  // 1
-    "[beam]\n"                        // 2
-    "length = \"100 um\"\n"           // 3
-    "width = \"30 um\"\n"             // 4
-    "thickness = \"2 um\"\n"          // 5
-    "elements = 20\n"                 // 6
-    "[material]\n"                    // 7
-    "youngs_modulus = \"200 GPa\"\n"  // 8
-    "density = \"8900 kg/m^3\"\n"     // 9
-    "poisson_ratio = 0.3\n";          // 10
+const std::string& kBase = vi::test::kBaseCase;
 
 // kBase with line n (1-based) replaced by `text` (which may hold several lines, or none: "").
 std::string with_line(int n, const std::string& text, std::string base = kBase) {
