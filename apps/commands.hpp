@@ -18,5 +18,6 @@ CommandBody add_modes_command(CLI::App& app);
 CommandBody add_support_scan_command(CLI::App& app);
 CommandBody add_simulate_command(CLI::App& app);
 CommandBody add_validate_command(CLI::App& app);
+CommandBody add_sweep_command(CLI::App& app);
 
 }  // namespace vi::cli

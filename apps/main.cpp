@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     add(add_support_scan_command);
     add(add_simulate_command);
     add(add_validate_command);
+    add(add_sweep_command);
 
     try {
         app.parse(argc, argv);

@@ -1,6 +1,7 @@
 #include "support/run_command.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -9,6 +10,8 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+
+extern char** environ;
 
 namespace vi::test {
 namespace {
@@ -20,18 +23,27 @@ std::string slurp(const std::filesystem::path& p) {
     return ss.str();
 }
 
-}  // namespace
-
-CommandResult run_vibroimpact(const std::vector<std::string>& args) {
-    const std::filesystem::path dir = make_temp_dir();
-    const std::string out_path = (dir / "stdout").string();
-    const std::string err_path = (dir / "stderr").string();
-
-    std::vector<std::string> argv_store{VI_EXE};
-    argv_store.insert(argv_store.end(), args.begin(), args.end());
+// Forks and execs argv with stdout and stderr into dir/stdout and dir/stderr, stdin from /dev/null.
+// Everything the child needs is built before fork, so the child only makes system calls.
+pid_t spawn(const std::vector<std::string>& args, const std::vector<std::string>& env, const std::string& dir) {
+    const std::string out_path = dir + "/stdout";
+    const std::string err_path = dir + "/stderr";
+    std::vector<std::string> argv_store = args;
     std::vector<char*> argv;
     for (auto& a : argv_store) argv.push_back(a.data());
     argv.push_back(nullptr);
+    // The extra entries replace variables of the same name.
+    std::vector<std::string> env_store = env;
+    for (char** e = environ; *e; ++e) {
+        const std::string entry = *e;
+        const std::string name = entry.substr(0, entry.find('=') + 1);
+        bool replaced = false;
+        for (const std::string& x : env) replaced = replaced || x.compare(0, name.size(), name) == 0;
+        if (!replaced) env_store.push_back(entry);
+    }
+    std::vector<char*> envp;
+    for (auto& e : env_store) envp.push_back(e.data());
+    envp.push_back(nullptr);
 
     const pid_t pid = fork();
     if (pid < 0) throw std::runtime_error("fork failed");
@@ -43,18 +55,54 @@ CommandResult run_vibroimpact(const std::vector<std::string>& args) {
         dup2(fi, 0);
         dup2(fo, 1);
         dup2(fe, 2);
-        execv(argv[0], argv.data());
+        execvpe(argv[0], argv.data(), envp.data());
         _exit(127);
     }
+    return pid;
+}
+
+CommandResult reap(pid_t pid, const std::string& dir) {
     int status = 0;
     waitpid(pid, &status, 0);
     CommandResult r;
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    r.out = slurp(out_path);
-    r.err = slurp(err_path);
+    r.out = slurp(dir + "/stdout");
+    r.err = slurp(dir + "/stderr");
+    return r;
+}
+
+}  // namespace
+
+CommandResult run_program(const std::vector<std::string>& argv, const std::vector<std::string>& env) {
+    const std::string dir = make_temp_dir();
+    const CommandResult r = reap(spawn(argv, env, dir), dir);
     std::filesystem::remove_all(dir);
     return r;
 }
+
+CommandResult run_vibroimpact(const std::vector<std::string>& args) {
+    std::vector<std::string> argv{VI_EXE};
+    argv.insert(argv.end(), args.begin(), args.end());
+    return run_program(argv);
+}
+
+ChildProcess::ChildProcess(const std::vector<std::string>& argv, const std::vector<std::string>& env)
+    : dir_(make_temp_dir()), pid_(spawn(argv, env, dir_)) {}
+
+ChildProcess::~ChildProcess() {
+    if (!reaped_) {
+        kill(pid_, SIGKILL);
+        wait();
+    }
+    std::filesystem::remove_all(dir_);
+}
+
+CommandResult ChildProcess::wait() {
+    reaped_ = true;
+    return reap(pid_, dir_);
+}
+
+std::string vibroimpact_path() { return VI_EXE; }
 
 std::string source_path(const std::string& relative) {
     return (std::filesystem::path(VI_SOURCE_DIR) / relative).string();

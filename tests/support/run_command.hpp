@@ -1,5 +1,7 @@
 #pragma once
-// Runs the vibroimpact command in a child process for command-line tests.
+// Runs the vibroimpact command (or another program) in a child process for command-line tests.
+
+#include <sys/types.h>
 
 #include <string>
 #include <vector>
@@ -15,6 +17,30 @@ struct CommandResult {
 
 // Runs the built vibroimpact executable with args (no shell involved) and waits for it.
 CommandResult run_vibroimpact(const std::vector<std::string>& args);
+
+// Runs argv[0] (searched on PATH when it has no slash) with the rest of argv and waits for it;
+// env holds extra "NAME=value" entries for the child's environment.
+CommandResult run_program(const std::vector<std::string>& argv, const std::vector<std::string>& env = {});
+
+// A program started in the background, its output into files; wait() reaps it.
+class ChildProcess {
+public:
+    ChildProcess(const std::vector<std::string>& argv, const std::vector<std::string>& env = {});
+    ~ChildProcess();
+    ChildProcess(const ChildProcess&) = delete;
+    ChildProcess& operator=(const ChildProcess&) = delete;
+    [[nodiscard]] pid_t pid() const { return pid_; }
+    // Waits for the end: the exit code, or 128 + the signal that ended it.
+    CommandResult wait();
+
+private:
+    std::string dir_;
+    pid_t pid_ = -1;
+    bool reaped_ = false;
+};
+
+// Path of the built vibroimpact executable.
+std::string vibroimpact_path();
 
 // Path of a file under the source tree, e.g. source_path("examples/paper/cantilever.toml").
 std::string source_path(const std::string& relative);

@@ -1,0 +1,77 @@
+// Wall time of a 1000-point support-position sweep at m = 50 (the paper's free-impact example,
+// examples/paper/free_impact_tip.toml, x0/l from 0.3 to 1) on 1 and 2 worker threads: total
+// seconds and points per second. VI_SWEEP_BENCH_POINTS=N runs N points instead (quick checks).
+
+#include <benchmark/benchmark.h>
+#include <sys/resource.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "analysis/sweep_grid.hpp"
+#include "analysis/sweep_runner.hpp"
+#include "io/case_reader.hpp"
+#include "report/sweep_table.hpp"
+
+namespace {
+
+// CPU time of the whole process (every thread) [s]: with wall time, how many cores the sweep got
+// (the machine may be shared).
+double process_cpu_s() {
+    rusage u{};
+    getrusage(RUSAGE_SELF, &u);
+    return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+           1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+}
+
+std::size_t point_count() {
+    const char* env = std::getenv("VI_SWEEP_BENCH_POINTS");
+    const long n = env ? std::atol(env) : 0;
+    return n > 0 ? static_cast<std::size_t>(n) : 1000;
+}
+
+void BM_SupportPositionSweep(benchmark::State& state) {
+    const vi::Case base = vi::read_case_file(std::string(VI_SOURCE_DIR) + "/examples/paper/free_impact_tip.toml");
+    const std::size_t n = point_count();
+    const vi::SweepGrid grid =
+        vi::parse_sweep_grid({"supports[0].position=0.3:1:" + std::to_string(n), "beam.elements=50"}, base);
+    const vi::SweepSettings settings;
+    const auto columns = vi::sweep_result_columns(settings.analysis, settings.modes);
+    std::vector<std::size_t> all(grid.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+    const int threads = static_cast<int>(state.range(0));
+
+    std::size_t failed = 0;
+    double seconds = 0.0;
+    double cpu = 0.0;
+    for (auto _ : state) {
+        failed = 0;
+        const double cpu0 = process_cpu_s();
+        const auto t0 = std::chrono::steady_clock::now();
+        vi::run_sweep_points(base, grid, all, settings, threads, [&](const vi::SweepPointResult& r) {
+            // The row text is part of what a sweep does for every point.
+            benchmark::DoNotOptimize(vi::sweep_csv_row(r, columns.size()));
+            if (!r.ok()) ++failed;
+        });
+        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        cpu = process_cpu_s() - cpu0;
+    }
+    const double rate = static_cast<double>(grid.size()) / seconds;
+    state.counters["points"] = static_cast<double>(grid.size());
+    state.counters["failed_points"] = static_cast<double>(failed);
+    state.counters["total_s"] = seconds;
+    state.counters["points_per_s"] = rate;
+    state.counters["cpu_s"] = cpu;
+    state.counters["cores_used"] = cpu / seconds;
+    std::printf(
+        "sweep: %zu support positions at m = 50 on %d thread%s: %.2f s, %.2f points/s, %.1f ms of CPU per point, "
+        "%.2f cores busy on average (%zu points failed)\n",
+        grid.size(), threads, threads == 1 ? "" : "s", seconds, rate, 1e3 * cpu / static_cast<double>(grid.size()),
+        cpu / seconds, failed);
+}
+BENCHMARK(BM_SupportPositionSweep)->Arg(1)->Arg(2)->ArgName("threads")->Iterations(1)->UseRealTime()->Unit(
+    benchmark::kSecond);
+
+}  // namespace

@@ -1,0 +1,52 @@
+#pragma once
+// Numeric values of a Case addressed by a path such as "supports[0].position" (what a sweep varies).
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "model/case.hpp"
+
+namespace vi {
+
+// A path to one number of a Case: section[i].field[k], the indices only where the section or the
+// field is a list (supports[i], loads[i], damping.ratios[k], damping.modes[k]).
+struct CasePath {
+    std::string section;                       // "beam", "material", "supports", ...
+    std::optional<std::size_t> section_index;  // i of supports[i] and loads[i]
+    std::string field;                         // "position", "gap", ...
+    std::optional<std::size_t> field_index;    // k of damping.ratios[k] and damping.modes[k]
+    // The canonical text, e.g. "supports[0].position".
+    [[nodiscard]] std::string text() const;
+    friend bool operator==(const CasePath&, const CasePath&) = default;
+};
+
+// Parses `text` and checks it against the case: a known key, indices within the case's lists, and
+// a key that means something for this case (damping.ratios[k] only when the case gives ratios,
+// loads[i].frequency only for a harmonic load, ...). Throws InputError with a one-line reason.
+CasePath resolve_case_path(std::string_view text, const Case& c);
+
+// True where the value must be a whole number: beam.elements, damping.modes[k],
+// initial.velocity_mode.
+bool is_integer_path(const CasePath& p);
+
+// SI unit of the value at p: "m", "Pa", "kg/m^3", "N/m", "N s/m", "N", "s", "m/s", "Hz", "1/s",
+// "rad", "x/l" for positions along the beam, or "-" for other dimensionless values.
+std::string case_path_unit(const CasePath& p);
+
+// The value at p (a path from resolve_case_path on a case of the same shape). gap reads as
+// -surface and prestress as +surface, whichever key the case file used.
+double get_case_value(const Case& c, const CasePath& p);
+
+// Sets the value at p. Setting supports[i].gap or .prestress replaces the other; .damping clears
+// .damping_ratio and .damping_ratio replaces .damping. Throws InputError("KEY: reason") for a
+// value the key cannot hold at all (a negative gap or prestress, a non-integer where one is
+// needed); every other check is check_case's.
+void set_case_value(Case& c, const CasePath& p, double value);
+
+// Every accepted path, with i and k for the indices ("supports[i].position", ...), for help texts.
+std::vector<std::string> case_path_forms();
+
+}  // namespace vi
