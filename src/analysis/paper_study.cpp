@@ -1,5 +1,7 @@
 #include "analysis/paper_study.hpp"
 
+#include <time.h>
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -22,6 +24,14 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// CPU time of the calling thread [s]: unlike wall time per job, it does not grow when other work
+// shares the machine.
+double thread_cpu_seconds() {
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
 
 void check_options(const PaperStudyOptions& o) {
     if (o.positions < 2) throw InputError("--positions: at least 2 support positions");
@@ -191,10 +201,10 @@ PaperStudy run_paper_study(const PaperStudyOptions& options) {
     };
     const int threads = resolve_thread_count(options.threads);
     parallel_for(jobs.size(), threads, [&](std::size_t k) {
-        const auto start = Clock::now();
+        const double start = thread_cpu_seconds();
         jobs[k].run();
         Part& p = parts[jobs[k].part];
-        p.cpu_us += std::chrono::duration_cast<std::chrono::microseconds>(Clock::now() - start).count();
+        p.cpu_us += static_cast<long long>(1e6 * (thread_cpu_seconds() - start));
         if (--p.left == 0) {
             char buf[160];
             std::snprintf(buf, sizeof buf, "%s: done (%.2f s of CPU), %.2f s since start", p.name.c_str(), p.cpu_us.load() * 1e-6,

@@ -108,7 +108,8 @@ struct RatioPeak {
     double ratio = 0.0;
 };
 
-// CPU seconds spent per part (summed over threads) and the wall time of the whole study.
+// CPU seconds spent per part (summed over threads; thread CPU time, so other work on the machine
+// does not inflate them) and the wall time of the whole study.
 struct StudyTiming {
     double wall_s = 0.0;
     int threads = 1;

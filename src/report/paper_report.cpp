@@ -109,15 +109,16 @@ void what_was_run(ReportDocument& d, const PaperStudy& st, const ReportRun& run)
 void timing(ReportDocument& d, const PaperStudy& st, const ReportRun& run) {
     const StudyTiming& t = st.timing;
     d.heading(2, "Timing", "timing");
-    d.paragraph("Wall time of this run on " + std::to_string(t.threads) + " thread(s); the study's parts ran as one parallel batch, so "
-                "their times are summed over threads (CPU seconds, including waiting for a core when the machine is shared).");
+    d.paragraph("Wall time of this run on " + std::to_string(t.threads) + " thread(s). The study's parts ran as one parallel batch; "
+                "their times are CPU seconds summed over threads (thread CPU time, which other work on a shared machine does not "
+                "inflate). `vi_bench_paper` times whole runs.");
     d.table({"part", "time"},
             {{"the study (" + std::to_string(t.transients) + " transients and the modal scans), wall", seconds(t.wall_s)},
-             {"  Fig. 3 transient (with history)", seconds(t.typical_s)},
-             {"  Figs. 4, 5, 10 support-position transients", seconds(t.position_scans_s)},
-             {"  Fig. 9 prestress transients", seconds(t.prestress_s)},
-             {"  Fig. 11 impact forces", seconds(t.forces_s)},
-             {"  modes (Figs. 2, 6-8, ratio peak)", seconds(t.modes_s)},
+             {"  Fig. 3 transient (with history), CPU", seconds(t.typical_s)},
+             {"  Figs. 4, 5, 10 support-position transients, CPU", seconds(t.position_scans_s)},
+             {"  Fig. 9 prestress transients, CPU", seconds(t.prestress_s)},
+             {"  Fig. 11 impact forces, CPU", seconds(t.forces_s)},
+             {"  modes (Figs. 2, 6-8, ratio peak), CPU", seconds(t.modes_s)},
              {"figures (gnuplot, PNG and SVG), wall", seconds(run.figures_s)},
              {"total before writing the files, wall", seconds(run.total_s)}});
 }
