@@ -9,7 +9,7 @@ std::string colors_command() { return std::string("colors = \"") + kColors + "\"
 
 std::string particular_points() {
     // Tags from 91 on, so that a figure's own numbered arrows and labels never replace them.
-    std::string s = "set tmargin 3.5\n";
+    std::string s = "set tmargin 3.5\nset key opaque\n";  // opaque: the legend hides the dashed lines behind it
     int tag = 91;
     for (const char* p : {"0.67", "0.78", "0.87"}) {
         const std::string t = std::to_string(tag++);
