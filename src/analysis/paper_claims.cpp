@@ -111,7 +111,7 @@ void rebound_claims(const PaperStudy& st, std::vector<Claim>& out) {
         const TransientPoint* at = point_at(ref, c.p);
         if (at && at->z_max) ours += "; z_max(" + fixed(c.p, 2) + ") = " + fixed(*at->z_max * 1e3, 3) + "e-3";
         const Verdict v = at_point(near, c.p);
-        out.push_back({"Fig. 4 (m = " + m + ")", c.text, ours, v,
+        out.push_back({"Fig. 4, m = " + m, c.text, ours, v,
                        v == Verdict::agrees ? "Within " + fixed(kPointTolerance, 3) + " of the paper's point."
                                             : "Local minima of our m = " + m + " curve: x0/l = " + minima_list(minima, 3) + "."});
         out.back().id = c.id;

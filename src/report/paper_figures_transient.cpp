@@ -111,8 +111,8 @@ FigureSpec fig3(const PaperStudy& st) {
         p << "plot 'fig3.csv' using 1:2 with lines linewidth 1.5 linecolor rgb '#1f77b4' title 'free end (grey: in contact)'\n";
     }
     p << "unset multiplot\n";
-    std::string text = "The free end of the paper's cantilever, lifted " + num(y0_nm, 4) +
-                       " nm by a static tip force and released onto a support at its free end (zero gap; Kc and Cc in the "
+    std::string text = "The free end of the paper's cantilever, lifted " + num(y0_nm / 1e3, 4) +
+                       " um by a static tip force and released onto a support at its free end (zero gap; Kc and Cc in the "
                        "parameter table), relative to its final equilibrium. First cycle: T = " +
                        (s.T_first ? us(*s.T_first) : "n/a") + " us, T1 = " + (s.T1_first ? us(*s.T1_first) : "n/a") +
                        " us, T2 = " + (s.T2_first ? us(*s.T2_first) : "n/a") + " us; T_p = " + (s.Tp ? us(*s.Tp) + " us (" + s.Tp_reason + ")" : "not reached (" + s.Tp_reason + ")") +
@@ -158,7 +158,7 @@ FigureSpec fig4(const PaperStudy& st) {
     p << "\n";
     std::string caption = "Largest rebound of the free end above its equilibrium, z_max = y_max/l (upper curves), and its deepest "
                           "deflection while the beam is in contact (lower curves), as the support moves along the beam; lift " +
-                          num(st.typical.y0 * 1e9, 4) + " nm at the free end, zero gap, Kc and Cc fixed. " +
+                          num(st.typical.y0 * 1e6, 4) + " um at the free end, zero gap, Kc and Cc fixed. " +
                           std::to_string(n) + " positions per mesh.";
     for (const TransientScan& s : st.position_scans) caption += failures(s);
     return {"fig4", "Fig. 4: rebound against support position", caption, {{"fig4.csv", t.str()}}, p.str(), 1000, 620};
