@@ -11,6 +11,9 @@ inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;
 inline constexpr int kExitBadInput = 2;
 
+// What --version prints, and what reports name as their author.
+inline constexpr const char* kVersionText = "vibroimpact 0.1.0";
+
 // A subcommand's body, run after parsing; returns the exit code.
 using CommandBody = std::function<int()>;
 
@@ -19,5 +22,6 @@ CommandBody add_support_scan_command(CLI::App& app);
 CommandBody add_simulate_command(CLI::App& app);
 CommandBody add_validate_command(CLI::App& app);
 CommandBody add_sweep_command(CLI::App& app);
+CommandBody add_paper_command(CLI::App& app);
 
 }  // namespace vi::cli

@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
     using namespace vi::cli;
     CLI::App app{"vibroimpact: vibro-impact dynamics of MEMS beams on viscoelastic supports", "vibroimpact"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", "vibroimpact 0.1.0");
+    app.set_version_flag("--version", kVersionText);
 
     std::map<CLI::App*, CommandBody> bodies;
     auto add = [&](CommandBody (*adder)(CLI::App&)) {
@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
     add(add_simulate_command);
     add(add_validate_command);
     add(add_sweep_command);
+    add(add_paper_command);
 
     try {
         app.parse(argc, argv);

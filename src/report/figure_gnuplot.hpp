@@ -1,0 +1,46 @@
+#pragma once
+// Figures drawn by gnuplot: a figure is its data (CSV text) and the gnuplot commands that plot it;
+// rendering writes both into a temporary folder, runs gnuplot there and reads back PNG and SVG.
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace vi {
+
+// One figure. The plot commands name their data files as they are named here, relative to the
+// folder the figure is written to, and set no terminal or output (rendering adds those).
+struct FigureSpec {
+    std::string name;     // file stem: "fig4" -> fig4.png, fig4.svg, fig4.gp
+    std::string title;    // short title for the report, e.g. "Fig. 4: rebound against support position"
+    std::string caption;  // what it shows and how it compares with the paper (plain text)
+    std::vector<std::pair<std::string, std::string>> data;  // file name -> CSV text; the first is the main one
+    std::string plot;     // gnuplot commands
+    int width = 1000;     // [px]
+    int height = 620;     // [px]
+};
+
+// What rendering produced for one figure.
+struct RenderedFigure {
+    std::string png;      // bytes
+    std::string svg;      // text
+    std::string script;   // the stand-alone .gp file (draws both from the CSVs beside it)
+};
+
+// The gnuplot executable: `requested` if it names one (a path, or a name looked up on PATH), else
+// "gnuplot" on PATH; nullopt when it cannot be found or run.
+std::optional<std::string> find_gnuplot(const std::string& requested = "gnuplot");
+
+// The stand-alone gnuplot script of a figure: PNG (pngcairo, DejaVu Sans 11) then SVG.
+std::string gnuplot_script(const FigureSpec& f);
+
+// Renders every figure with `gnuplot` in a temporary folder that is removed afterwards: one gnuplot
+// process per thread, each drawing its share of the figures. Throws std::runtime_error with
+// gnuplot's first error line (which names the figure's script) when a figure fails.
+std::vector<RenderedFigure> render_figures(const std::string& gnuplot, const std::vector<FigureSpec>& figures, int threads);
+
+// Text for a gnuplot string in single quotes (quotes doubled).
+std::string gp_quote(const std::string& s);
+
+}  // namespace vi

@@ -1,0 +1,43 @@
+#pragma once
+// A report as a list of blocks (headings, paragraphs, lists, tables, figures), rendered to one
+// self-contained HTML page (images embedded) or to Markdown (images linked beside it).
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vi {
+
+// One block of a report. Text is plain; `code` in backquotes is set in a fixed font.
+struct ReportBlock {
+    enum class Kind { heading, paragraph, list, table, figure };
+    Kind kind = Kind::paragraph;
+    int level = 2;                           // heading level (1 = title)
+    std::string text;                        // heading or paragraph text; a figure's title
+    std::vector<std::string> items;          // list items; a figure's files (for links)
+    std::vector<std::string> header;         // table header
+    std::vector<std::vector<std::string>> rows;  // table rows
+    std::string figure;                      // figure: file stem ("fig4"); the PNG is <figure>.png
+    std::string caption;                     // figure caption
+    std::string id;                          // anchor (headings, figures); may be empty
+    int verdict_column = -1;                 // table: the column whose cells are verdicts (coloured)
+};
+
+struct ReportDocument {
+    std::string title;
+    std::vector<ReportBlock> blocks;
+    void heading(int level, std::string text, std::string id = "");
+    void paragraph(std::string text);
+    void list(std::vector<std::string> items);
+    void table(std::vector<std::string> header, std::vector<std::vector<std::string>> rows, int verdict_column = -1);
+    void figure(std::string stem, std::string title, std::string caption, std::vector<std::string> files);
+};
+
+// The whole page: inline CSS, figures as PNG data URIs from `png` (file stem -> bytes); a figure
+// without its PNG is an error (std::invalid_argument). Opens offline in any browser.
+std::string render_html(const ReportDocument& doc, const std::map<std::string, std::string>& png);
+
+// Markdown (GitHub flavour): figures as links to <stem>.png beside the file.
+std::string render_markdown(const ReportDocument& doc);
+
+}  // namespace vi
