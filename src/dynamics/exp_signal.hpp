@@ -3,6 +3,7 @@
 // f(tau) = Re[ sum_k A_k exp(lambda_k tau) + sum_m c_m tau^p_m exp(s_m tau) ].
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <complex>
 #include <utility>
 #include <vector>
@@ -17,6 +18,9 @@ struct ExpTerm {
     cd s;
     int power = 0;
 };
+
+// d-th derivative of one particular term at tau.
+cd term_derivative(const ExpTerm& t, double tau, int d);
 
 struct ExpSignal {
     const Eigen::VectorXcd* lambda = nullptr;  // exponents of the homogeneous part [1/s]
@@ -33,6 +37,16 @@ struct ExpSignal {
     // Integral of f over [0, tau].
     [[nodiscard]] double integral(double tau) const;
 };
+
+// exp(z tau) as exp(Re) (cos, sin): no complex-library call, and 0 without libm's underflow path once
+// |exp(z tau)| < 1e-307 (a heavily damped mode long after its start: below roundoff of any sum).
+inline cd fast_exp(cd z, double tau) {
+    const double x = z.real() * tau;
+    if (x < -707.0) return cd(0.0, 0.0);
+    const double e = std::exp(x);
+    const double ph = z.imag() * tau;
+    return cd(e * std::cos(ph), e * std::sin(ph));
+}
 
 // Integral over [0, tau] of t^p exp(mu t) (p = 0, 1, 2), accurate also for small |mu tau|.
 cd exp_moment(cd mu, int p, double tau);

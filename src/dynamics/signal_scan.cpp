@@ -1,0 +1,178 @@
+#include "dynamics/signal_scan.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace vi {
+namespace {
+
+// Prefix arrays per point: f0 (upper bound of the slow modes' value), f1 (of their slope), mag
+// (sum |v_k|) and b2 (sum |v_k| |lambda_k|^2).
+constexpr int kF0 = 0, kF1 = 1, kMag = 2, kB2 = 3, kArrays = 4;
+
+// A mode is not evaluated once |v_k| falls below this fraction of the signal's size: its exact
+// magnitude still bounds it, so nothing is lost but a contribution far below roundoff of the sum.
+constexpr double kSkipFraction = 1e-18;
+
+// Largest s >= 0 with c0 + c1 s + c2 s^2 / 2 < 0 on [0, s), given c0 < 0 and c2 >= 0 (inf if none).
+double quadratic_reach(double c0, double c1, double c2) {
+    const double disc = c1 * c1 - 2.0 * c2 * c0;  // > c1^2 since c0 < 0
+    const double root = std::sqrt(disc);
+    if (c1 <= 0.0) return c2 > 0.0 ? (root - c1) / c2 : std::numeric_limits<double>::infinity();
+    return -2.0 * c0 / (c1 + root);  // the same root without cancellation
+}
+
+}  // namespace
+
+SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
+    m_ = static_cast<int>(f.A.size());
+    const Eigen::VectorXcd& lam = *f.lambda;
+    std::vector<int> order(static_cast<std::size_t>(m_));
+    std::iota(order.begin(), order.end(), 0);
+    // Decompositions come sorted; signals built by hand may not be.
+    bool sorted = true;
+    for (int k = 1; k < m_; ++k) sorted = sorted && std::abs(lam[k - 1]) <= std::abs(lam[k]);
+    if (!sorted) std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return std::abs(lam[a]) < std::abs(lam[b]); });
+    for (const int k : order) {
+        const cd l = lam[k];
+        A_.push_back(sign * f.A[k]);
+        re_.push_back(l.real());
+        im_.push_back(l.imag());
+        mag_.push_back(std::abs(l));
+        mag2_.push_back(std::norm(l));
+        amp_.push_back(std::abs(f.A[k]));
+        gamma_ = std::max(gamma_, l.real());
+        size_ += amp_.back();
+    }
+    for (const ExpTerm& t : f.terms) {
+        terms_.push_back({sign * t.coef, t.s, t.power});
+        size_ += std::abs(t.coef);
+    }
+    ExpSignal part;
+    part.lambda = f.lambda;
+    part.terms = f.terms;
+    terms_b2_ = terms_.empty() ? 0.0 : part.bound(0.0, t_end, 2);
+    skip_ = kSkipFraction * size_;
+}
+
+ScanPoint SignalScan::evaluate(double t) {
+    ScanPoint p;
+    p.t = t;
+    p.offset = store_.size();
+    store_.resize(store_.size() + static_cast<std::size_t>(kArrays * (m_ + 1)));
+    double* f0 = store_.data() + p.offset;
+    double* f1 = f0 + (m_ + 1);
+    double* mg = f1 + (m_ + 1);
+    double* b2 = mg + (m_ + 1);
+    f0[0] = f1[0] = mg[0] = b2[0] = 0.0;
+    double value = 0.0, slope = 0.0, abs1 = 0.0;
+    for (int k = 0; k < m_; ++k) {
+        const std::size_t i = static_cast<std::size_t>(k);
+        const double x = re_[i] * t;
+        // |v_k| exactly (or, below exp(-707), an upper bound) before deciding whether to evaluate it.
+        const double e = x < -707.0 ? 1e-307 : std::exp(x);
+        const double mk = amp_[i] * e;
+        double vre = 0.0, lre = 0.0, unc = 0.0;
+        if (mk < skip_) {
+            unc = mk;  // Re v and Re(lambda v) lie within +-|v| and +-|lambda||v|
+        } else {
+            const double ph = im_[i] * t;
+            const cd v = A_[i] * cd(e * std::cos(ph), e * std::sin(ph));
+            vre = v.real();
+            lre = re_[i] * v.real() - im_[i] * v.imag();
+        }
+        value += vre;
+        slope += lre;
+        abs1 += mk * mag_[i];
+        f0[k + 1] = f0[k] + vre + unc;
+        f1[k + 1] = f1[k] + lre + unc * mag_[i];
+        mg[k + 1] = mg[k] + mk;
+        b2[k + 1] = b2[k] + mk * mag2_[i];
+    }
+    p.abs0 = mg[m_];
+    for (const ExpTerm& term : terms_) {
+        const cd v0 = term_derivative(term, t, 0), v1 = term_derivative(term, t, 1);
+        p.p0 += v0.real();
+        p.p1 += v1.real();
+        p.abs0 += std::abs(v0);
+        abs1 += std::abs(v1);
+    }
+    p.value = value + p.p0;
+    p.slope = slope + p.p1;
+    p.abs1 = abs1;
+    return p;
+}
+
+double SignalScan::value(double t) const {
+    double v = 0.0;
+    for (int k = 0; k < m_; ++k) {
+        const std::size_t i = static_cast<std::size_t>(k);
+        const double x = re_[i] * t;
+        if (x < -707.0) continue;
+        const double e = std::exp(x);
+        if (amp_[i] * e < skip_) continue;
+        const double ph = im_[i] * t;
+        v += (A_[i] * cd(e * std::cos(ph), e * std::sin(ph))).real();
+    }
+    for (const ExpTerm& term : terms_) v += term_derivative(term, t, 0).real();
+    return v;
+}
+
+double SignalScan::growth(double h) const { return gamma_ > 0.0 ? std::exp(gamma_ * h) : 1.0; }
+
+int SignalScan::slow_count(double h) const {
+    // Modes with |lambda| h <= 2 change little over h: Taylor bounds them well; faster ones do better
+    // by their amplitude alone.
+    if (!(h > 0.0)) return m_;
+    return static_cast<int>(std::upper_bound(mag_.begin(), mag_.end(), 2.0 / h) - mag_.begin());
+}
+
+double SignalScan::certified_step(const ScanPoint& p, double H, double value_used) const {
+    // For slow modes k < J: f_slow(t + s) <= f0 + f1 s + G b2 s^2 / 2 (Taylor, |v_k| not growing by more
+    // than G = exp(gamma H)); for fast ones |f_fast| <= G sum |v_k|. Any J gives a valid bound; the
+    // step is the longest any of them proves.
+    const double G = growth(H);
+    const double* f0 = prefix(p, kF0);
+    const double* f1 = prefix(p, kF1);
+    const double* mg = prefix(p, kMag);
+    const double* b2 = prefix(p, kB2);
+    const double shift = value_used - p.value;
+    double best = 0.0;
+    for (int J = m_; J >= 0; --J) {
+        const double c0 = p.p0 + f0[J] + G * (mg[m_] - mg[J]) + shift;
+        if (!(c0 < 0.0)) continue;
+        const double c1 = p.p1 + f1[J];
+        const double c2 = terms_b2_ + G * b2[J];
+        best = std::max(best, quadratic_reach(c0, c1, c2));
+        if (best >= H) return H;
+    }
+    return std::min(best, H);
+}
+
+double SignalScan::upper_bound(const ScanPoint& a, const ScanPoint& b) const {
+    const double h = b.t - a.t;
+    const int J = slow_count(h);
+    const double G = growth(h);
+    const double* f0a = prefix(a, kF0);
+    const double* f1a = prefix(a, kF1);
+    const double* mga = prefix(a, kMag);
+    const double* b2a = prefix(a, kB2);
+    const double* f0b = prefix(b, kF0);
+    // Fast modes: at most their size at a (decaying) times G. Slow ones: |f''| <= B over [a, b].
+    const double fast = G * (mga[m_] - mga[J]);
+    const double B = terms_b2_ + G * b2a[J];
+    const double ya = a.p0 + f0a[J];
+    const double yb = b.p0 + f0b[J];
+    const double taylor = ya + std::max(0.0, (a.p1 + f1a[J]) * h + 0.5 * B * h * h);
+    double interp = std::max(ya, yb);
+    if (B > 0.0 && h > 0.0) {
+        // max over s in [0, h] of ya + (yb - ya) s / h + B s (h - s) / 2
+        const double s = std::clamp(0.5 * h + (yb - ya) / (B * h), 0.0, h);
+        interp = ya + (yb - ya) * (s / h) + 0.5 * B * s * (h - s);
+    }
+    return std::min(taylor, interp) + fast;
+}
+
+}  // namespace vi
