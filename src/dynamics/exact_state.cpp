@@ -35,14 +35,12 @@ void negate(ExpSignal& f) {
 
 // ---------------------------------------------------------------------------------------------
 
-ExactModel::ExactModel(const TransientProblem& p, bool energy) : p_(&p), energy_(energy), base_(base_modes(p)) {
-    phit_m_ = base_.phi.transpose() * p.M;
-}
+ExactModel::ExactModel(const TransientProblem& p, bool energy) : p_(&p), energy_(energy), base_(base_modes(p)) {}
 
 Eigen::VectorXd ExactModel::initial_state(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0) const {
     Eigen::VectorXd x(2 * base_.n);
-    x.head(base_.n) = phit_m_ * q0;
-    x.tail(base_.n) = phit_m_ * v0;
+    x.head(base_.n) = base_.phi.transpose() * (p_->M * q0);
+    x.tail(base_.n) = base_.phi.transpose() * (p_->M * v0);
     return x;
 }
 

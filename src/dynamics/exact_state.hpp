@@ -108,7 +108,6 @@ private:
     const TransientProblem* p_;
     bool energy_;
     BaseModes base_;
-    Eigen::MatrixXd phit_m_;
     std::map<std::vector<bool>, std::unique_ptr<StateData>> cache_;
     std::unique_ptr<PieceSolution> piece_;
     double decomposition_s_ = 0.0;

@@ -53,7 +53,7 @@ double ExpSignal::bound(double tau, double h, int d) const {
         if (d == 1) m = std::sqrt(mag2);
         if (d == 2) m = mag2;
         if (d >= 3) m = std::pow(mag2, 0.5 * d);
-        b += std::abs(A[k]) * m * growth;
+        b += std::sqrt(std::norm(A[k])) * m * growth;
     }
     for (const ExpTerm& t : terms) {
         const double growth = std::max(std::exp(t.s.real() * tau), std::exp(t.s.real() * (tau + h)));

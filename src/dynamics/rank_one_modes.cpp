@@ -124,8 +124,19 @@ bool rank_one_modes(const BaseModes& b, const ContactElement& ce, StateModes& s)
     const int m = static_cast<int>(cand.size());
     s.lambda.resize(m);
     s.paired.assign(static_cast<std::size_t>(m), false);
-    s.V = Eigen::MatrixXcd::Zero(n, m);
-    s.Lt = Eigen::MatrixXcd::Zero(2 * n, m);
+    // Written column by column (no zero fill first: these are the largest arrays of a transient).
+    s.vl.resize(6 * n, m);
+    // V(r, k) and L^T(r, k) = v into the real and imaginary blocks of s.vl.
+    auto put_v = [&](int r, int k, cd v) {
+        s.vl(r, k) = v.real();
+        s.vl(n + r, k) = v.imag();
+    };
+    auto put_l = [&](int r, int k, cd v) {
+        s.vl(2 * n + r, k) = v.real();
+        s.vl(4 * n + r, k) = v.imag();
+    };
+    std::vector<bool> is_coupled(static_cast<std::size_t>(n), false);
+    for (const int i : coupled) is_coupled[static_cast<std::size_t>(i)] = true;
     std::vector<cd> d(np);
     for (int k = 0; k < m; ++k) {
         const Candidate& c = cand[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])];
@@ -134,9 +145,10 @@ bool rank_one_modes(const BaseModes& b, const ContactElement& ce, StateModes& s)
         s.paired[static_cast<std::size_t>(k)] = c.paired;
         if (c.free_mode >= 0) {
             const int i = c.free_mode;
-            s.V(i, k) = 1.0;
-            s.Lt(i, k) = c.partner / (c.partner - z);
-            s.Lt(n + i, k) = -1.0 / (c.partner - z);
+            s.vl.col(k).setZero();
+            put_v(i, k, 1.0);
+            put_l(i, k, c.partner / (c.partner - z));
+            put_l(n + i, k, -1.0 / (c.partner - z));
             continue;
         }
         cd N = 0.0;
@@ -146,14 +158,20 @@ bool rank_one_modes(const BaseModes& b, const ContactElement& ce, StateModes& s)
         }
         if (!(std::abs(N) > 0.0) || !std::isfinite(std::abs(N))) return false;
         const cd inv_n = 1.0 / N;
+        for (int i = 0; i < n; ++i) {
+            if (is_coupled[static_cast<std::size_t>(i)]) continue;
+            put_v(i, k, 0.0);
+            put_l(i, k, 0.0);
+            put_l(n + i, k, 0.0);
+        }
         for (std::size_t j = 0; j < modes.size(); ++j) {
             const int i = coupled[j];
             const cd ra = rho_hat[2 * j] * d[2 * j], rb = rho_hat[2 * j + 1] * d[2 * j + 1];
             const cd scaled = inv_n / phi[i];
-            s.V(i, k) = phi[i] * d[2 * j] * d[2 * j + 1];
+            put_v(i, k, phi[i] * d[2 * j] * d[2 * j + 1]);
             // l L0 with L0's rows [b, -1] / (b - a) and [-a, 1] / (b - a) for this mode's (eta, eta_dot).
-            s.Lt(i, k) = -(ra * modes[j].pole_b + rb * modes[j].pole_a) * scaled;
-            s.Lt(n + i, k) = (ra + rb) * scaled;
+            put_l(i, k, -(ra * modes[j].pole_b + rb * modes[j].pole_a) * scaled);
+            put_l(n + i, k, (ra + rb) * scaled);
         }
     }
     return true;

@@ -6,7 +6,7 @@
 
 namespace vi {
 
-// Fills s.lambda, s.paired, s.V and s.Lt (sorted by |lambda|) for the contact ce closed; s.active and
+// Fills s.lambda, s.paired and s.vl (sorted by |lambda|) for the contact ce closed; s.active and
 // s.damping are set by the caller. False when the secular roots cannot be found or do not belong to
 // this contact's equation closely enough (the caller then falls back to a dense solve).
 bool rank_one_modes(const BaseModes& b, const ContactElement& ce, StateModes& s);

@@ -70,7 +70,7 @@ bool symmetric_aberth(const std::vector<SecularMode>& modes, double kc, double c
                 next = cd(next.real(), std::max(-next.imag(), 1e-3 * std::abs(next)));
             }
             r.z[k] = next;
-            const double rel = std::abs(step) / std::max(std::abs(next), std::numeric_limits<double>::min());
+            const double rel = std::sqrt(std::norm(step) / std::max(std::norm(next), std::numeric_limits<double>::min()));
             // A root whose last correction was below kSettled of its size is not moved again: most
             // roots (weakly coupled modes) settle in a few sweeps, and each sweep costs O(m) per root.
             if (rel < kSettled) done[k] = true;
@@ -104,7 +104,7 @@ bool general_aberth(const std::vector<SecularMode>& modes, double kc, double cc,
             const cd step = ratio / (1.0 - ratio * repel);
             z[k] -= step;
             if (!std::isfinite(z[k].real()) || !std::isfinite(z[k].imag())) return false;
-            const double rel = std::abs(step) / std::max(std::abs(z[k]), std::numeric_limits<double>::min());
+            const double rel = std::sqrt(std::norm(step) / std::max(std::norm(z[k]), std::numeric_limits<double>::min()));
             if (rel < kSettled) done[k] = true;
             worst = std::max(worst, rel);
         }

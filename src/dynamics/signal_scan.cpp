@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <numeric>
 
 namespace vi {
@@ -24,45 +25,85 @@ double quadratic_reach(double c0, double c1, double c2) {
     return -2.0 * c0 / (c1 + root);  // the same root without cancellation
 }
 
+double magnitude(cd z) { return std::sqrt(std::norm(z)); }  // no hypot: nothing here nears overflow
+
+// The spare buffer of this thread: a scan takes it and gives it back when done.
+struct SpareStore {
+    std::unique_ptr<double[]> data;
+    std::size_t capacity = 0;
+};
+thread_local SpareStore spare;
+
 }  // namespace
 
+SignalScan::~SignalScan() {
+    if (capacity_ > spare.capacity) {
+        spare.data = std::move(store_);
+        spare.capacity = capacity_;
+    }
+}
+
 SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
+    store_ = std::move(spare.data);
+    capacity_ = spare.capacity;
+    spare.capacity = 0;
     m_ = static_cast<int>(f.A.size());
     const Eigen::VectorXcd& lam = *f.lambda;
     std::vector<int> order(static_cast<std::size_t>(m_));
     std::iota(order.begin(), order.end(), 0);
     // Decompositions come sorted; signals built by hand may not be.
     bool sorted = true;
-    for (int k = 1; k < m_; ++k) sorted = sorted && std::abs(lam[k - 1]) <= std::abs(lam[k]);
-    if (!sorted) std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return std::abs(lam[a]) < std::abs(lam[b]); });
+    for (int k = 1; k < m_; ++k) sorted = sorted && std::norm(lam[k - 1]) <= std::norm(lam[k]);
+    if (!sorted) std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return std::norm(lam[a]) < std::norm(lam[b]); });
     for (const int k : order) {
         const cd l = lam[k];
         A_.push_back(sign * f.A[k]);
         re_.push_back(l.real());
         im_.push_back(l.imag());
-        mag_.push_back(std::abs(l));
         mag2_.push_back(std::norm(l));
-        amp_.push_back(std::abs(f.A[k]));
+        mag_.push_back(std::sqrt(mag2_.back()));
+        amp_.push_back(magnitude(f.A[k]));
         gamma_ = std::max(gamma_, l.real());
         size_ += amp_.back();
     }
     for (const ExpTerm& t : f.terms) {
         terms_.push_back({sign * t.coef, t.s, t.power});
-        size_ += std::abs(t.coef);
+        size_ += magnitude(t.coef);
     }
     ExpSignal part;
     part.lambda = f.lambda;
     part.terms = f.terms;
     terms_b2_ = terms_.empty() ? 0.0 : part.bound(0.0, t_end, 2);
     skip_ = kSkipFraction * size_;
+    // amp e^(re t) <= skip once t >= ln(amp / skip) / -re; ln x <= e ln 2 for x = mant 2^e, mant < 1,
+    // so the exponent of frexp gives a time that is never early.
+    for (std::size_t k = 0; k < amp_.size(); ++k) {
+        if (amp_[k] <= skip_) {
+            dead_.push_back(0.0);
+        } else if (re_[k] < 0.0) {
+            int e = 0;
+            std::frexp(amp_[k] / skip_, &e);
+            dead_.push_back(e * std::numbers::ln2 / -re_[k]);
+        } else {
+            dead_.push_back(std::numeric_limits<double>::infinity());
+        }
+    }
 }
 
 ScanPoint SignalScan::evaluate(double t) {
     ScanPoint p;
     p.t = t;
-    p.offset = store_.size();
-    store_.resize(store_.size() + static_cast<std::size_t>(kArrays * (m_ + 1)));
-    double* f0 = store_.data() + p.offset;
+    const std::size_t need = static_cast<std::size_t>(kArrays * (m_ + 1));
+    if (used_ + need > capacity_) {
+        const std::size_t cap = std::max(2 * capacity_, used_ + 64 * need);
+        std::unique_ptr<double[]> bigger(new double[cap]);
+        std::copy(store_.get(), store_.get() + used_, bigger.get());
+        store_ = std::move(bigger);
+        capacity_ = cap;
+    }
+    p.offset = used_;
+    used_ += need;
+    double* f0 = store_.get() + p.offset;
     double* f1 = f0 + (m_ + 1);
     double* mg = f1 + (m_ + 1);
     double* b2 = mg + (m_ + 1);
@@ -70,12 +111,13 @@ ScanPoint SignalScan::evaluate(double t) {
     double value = 0.0, slope = 0.0, abs1 = 0.0;
     for (int k = 0; k < m_; ++k) {
         const std::size_t i = static_cast<std::size_t>(k);
+        double vre = 0.0, lre = 0.0, unc = 0.0, mk = skip_;
+        // |v_k| exactly (or an upper bound: skip_ once dead, 1e-307 amp below exp(-707)) before
+        // deciding whether to evaluate it.
         const double x = re_[i] * t;
-        // |v_k| exactly (or, below exp(-707), an upper bound) before deciding whether to evaluate it.
-        const double e = x < -707.0 ? 1e-307 : std::exp(x);
-        const double mk = amp_[i] * e;
-        double vre = 0.0, lre = 0.0, unc = 0.0;
-        if (mk < skip_) {
+        const double e = t >= dead_[i] ? 0.0 : x < -707.0 ? 1e-307 : std::exp(x);
+        if (e > 0.0) mk = amp_[i] * e;
+        if (mk <= skip_) {
             unc = mk;  // Re v and Re(lambda v) lie within +-|v| and +-|lambda||v|
         } else {
             const double ph = im_[i] * t;
@@ -96,8 +138,8 @@ ScanPoint SignalScan::evaluate(double t) {
         const cd v0 = term_derivative(term, t, 0), v1 = term_derivative(term, t, 1);
         p.p0 += v0.real();
         p.p1 += v1.real();
-        p.abs0 += std::abs(v0);
-        abs1 += std::abs(v1);
+        p.abs0 += magnitude(v0);
+        abs1 += magnitude(v1);
     }
     p.value = value + p.p0;
     p.slope = slope + p.p1;
@@ -110,9 +152,9 @@ double SignalScan::value(double t) const {
     for (int k = 0; k < m_; ++k) {
         const std::size_t i = static_cast<std::size_t>(k);
         const double x = re_[i] * t;
-        if (x < -707.0) continue;
+        if (t >= dead_[i] || x < -707.0) continue;
         const double e = std::exp(x);
-        if (amp_[i] * e < skip_) continue;
+        if (amp_[i] * e <= skip_) continue;
         const double ph = im_[i] * t;
         v += (A_[i] * cd(e * std::cos(ph), e * std::sin(ph))).real();
     }

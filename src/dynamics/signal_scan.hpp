@@ -3,6 +3,8 @@
 // maxima: from one evaluation at t, upper bounds of f over [t, t + h] for every split of its modes
 // into slow ones (Taylor with exact value and slope) and fast ones (amplitude only).
 
+#include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "dynamics/exp_signal.hpp"
@@ -27,11 +29,14 @@ class SignalScan {
 public:
     // sign = -1 scans -f (for minima). t_end: the particular part's |f''| is bounded over [0, t_end].
     SignalScan(const ExpSignal& f, double sign, double t_end);
+    ~SignalScan();
+    SignalScan(const SignalScan&) = delete;
+    SignalScan& operator=(const SignalScan&) = delete;
     // Evaluates at t and keeps the point's prefix sums (until clear()).
     ScanPoint evaluate(double t);
     // Only the value (for root refinement).
     [[nodiscard]] double value(double t) const;
-    void clear() { store_.clear(); }
+    void clear() { used_ = 0; }
     // The longest h <= H such that f < 0 on [p.t, p.t + h] is proven by some slow/fast split, taking
     // the value at p.t as `value_used` (the caller may set a value within roundoff of 0 to 0);
     // 0 when no split proves any step.
@@ -43,19 +48,25 @@ public:
     [[nodiscard]] double size() const { return size_; }
 
 private:
-    const double* prefix(const ScanPoint& p, int which) const { return store_.data() + p.offset + which * (m_ + 1); }
+    const double* prefix(const ScanPoint& p, int which) const {
+        return store_.get() + p.offset + static_cast<std::size_t>(which * (m_ + 1));
+    }
     int slow_count(double h) const;
     double growth(double h) const;
 
     int m_ = 0;
     std::vector<cd> A_;                  // amplitudes (times sign), ascending |lambda|
     std::vector<double> re_, im_, mag_, mag2_, amp_;
+    std::vector<double> dead_;           // from this time on |v_k| <= skip_ (no evaluation at all)
     std::vector<ExpTerm> terms_;         // particular part (times sign)
     double terms_b2_ = 0.0;              // bound of |particular''| over [0, t_end]
     double gamma_ = 0.0;                 // largest Re lambda > 0 (roundoff of undamped modes), else 0
     double size_ = 0.0;                  // sum |A_k| + sum |term coef|
     double skip_ = 0.0;                  // |v_k| below this: not evaluated
-    std::vector<double> store_;
+    // Prefix sums of the points, uninitialised and reused across scans of one thread (a B&B keeps
+    // thousands of points; zeroing or page-faulting fresh buffers cost more than the sums).
+    std::unique_ptr<double[]> store_;
+    std::size_t capacity_ = 0, used_ = 0;
 };
 
 }  // namespace vi

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
+#include <type_traits>
 
 #include "dynamics/rank_one_modes.hpp"
 #include "modal/eigen_solver.hpp"
@@ -20,7 +21,13 @@ Eigen::VectorXd contact_row(const BaseModes& b, const ContactElement& c) { retur
 
 // sum_k v_k a_k over the representatives (V a).
 Eigen::VectorXcd combine(const StateModes& s, const Eigen::VectorXcd& a) {
-    if (s.unit.empty()) return s.V * a;
+    if (s.unit.empty()) {
+        const Eigen::VectorXd ar = a.real(), ai = a.imag();
+        Eigen::VectorXcd out(s.dofs());
+        out.real() = s.Vr() * ar - s.Vi() * ai;
+        out.imag() = s.Vr() * ai + s.Vi() * ar;
+        return out;
+    }
     Eigen::VectorXcd out = Eigen::VectorXcd::Zero(s.dofs());
     for (int k = 0; k < s.size(); ++k) out[s.unit[static_cast<std::size_t>(k)]] += a[k];
     return out;
@@ -29,7 +36,18 @@ Eigen::VectorXcd combine(const StateModes& s, const Eigen::VectorXcd& a) {
 // L x. A free mode z of mode i whose other pole is z': L = [z' e_i^T, -e_i^T] / (z' - z).
 template <typename Vec>
 Eigen::VectorXcd left_apply(const StateModes& s, const Vec& x) {
-    if (s.unit.empty()) return s.Lt.transpose() * x.template cast<cd>();
+    if (s.unit.empty()) {
+        Eigen::VectorXcd c(s.size());
+        if constexpr (std::is_same_v<typename Vec::Scalar, double>) {
+            c.real() = s.Lr().transpose() * x;
+            c.imag() = s.Li().transpose() * x;
+        } else {
+            const Eigen::VectorXd xr = x.real(), xi = x.imag();
+            c.real() = s.Lr().transpose() * xr - s.Li().transpose() * xi;
+            c.imag() = s.Lr().transpose() * xi + s.Li().transpose() * xr;
+        }
+        return c;
+    }
     const int n = s.dofs();
     Eigen::VectorXcd c(s.size());
     for (int k = 0; k < s.size(); ++k) {
@@ -99,7 +117,7 @@ bool dense_modes(const BaseModes& b, const Eigen::MatrixXd& A, StateModes& s) {
     const std::vector<int> order = order_by_magnitude(z);
     s.lambda.resize(m);
     s.paired.assign(static_cast<std::size_t>(m), false);
-    s.V.resize(n, m);
+    Eigen::MatrixXcd V(n, m);
     s.unit.clear();
     Eigen::MatrixXcd R(2 * n, 2 * n);
     int next_mirror = m;
@@ -107,14 +125,19 @@ bool dense_modes(const BaseModes& b, const Eigen::MatrixXd& A, StateModes& s) {
         const int e = keep[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])];
         s.lambda[k] = ev[e];
         s.paired[static_cast<std::size_t>(k)] = ev[e].imag() > 0.0;
-        s.V.col(k) = b.omega.cwiseInverse().cast<cd>().cwiseProduct(vec.col(e).head(n));
-        R.col(k) << s.V.col(k), ev[e] * s.V.col(k);
+        V.col(k) = b.omega.cwiseInverse().cast<cd>().cwiseProduct(vec.col(e).head(n));
+        R.col(k) << V.col(k), ev[e] * V.col(k);
         if (ev[e].imag() > 0.0) R.col(next_mirror++) = R.col(k).conjugate();
     }
     Eigen::PartialPivLU<Eigen::MatrixXcd> lu(R);
-    s.Lt = lu.inverse().topRows(m).transpose();
+    const Eigen::MatrixXcd Lt = lu.inverse().topRows(m).transpose();
+    s.vl.resize(6 * n, m);
+    s.vl.topRows(n) = V.real();
+    s.vl.middleRows(n, n) = V.imag();
+    s.vl.middleRows(2 * n, 2 * n) = Lt.real();
+    s.vl.bottomRows(2 * n) = Lt.imag();
     s.method = "dense";
-    return s.Lt.allFinite();
+    return Lt.allFinite();
 }
 
 // Worst of: each eigenpair's backward error |(z^2 + z C~ + K~) v| / ((|z|^2 + |z||C~| + |K~|)|v|),
@@ -170,7 +193,7 @@ std::vector<int> order_by_magnitude(const std::vector<cd>& z) {
     std::vector<int> order(z.size());
     std::iota(order.begin(), order.end(), 0);
     std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-        return std::abs(z[static_cast<std::size_t>(a)]) < std::abs(z[static_cast<std::size_t>(b)]);
+        return std::norm(z[static_cast<std::size_t>(a)]) < std::norm(z[static_cast<std::size_t>(b)]);
     });
     return order;
 }
@@ -181,7 +204,10 @@ Eigen::VectorXcd StateModes::project(const Eigen::VectorXd& row) const {
         for (int k = 0; k < size(); ++k) out[k] = row[unit[static_cast<std::size_t>(k)]];
         return out;
     }
-    return V.transpose() * row.cast<cd>();
+    Eigen::VectorXcd out(size());
+    out.real() = Vr().transpose() * row;
+    out.imag() = Vi().transpose() * row;
+    return out;
 }
 
 Eigen::VectorXcd StateModes::coordinates(const Eigen::VectorXd& x) const { return left_apply(*this, x); }
@@ -193,21 +219,37 @@ Eigen::VectorXd StateModes::state(const Eigen::VectorXcd& c) const {
     for (int k = 0; k < size(); ++k) {
         if (paired[static_cast<std::size_t>(k)]) w[k] *= 2.0;
     }
+    const Eigen::VectorXcd lw = lambda.cwiseProduct(w);
     Eigen::VectorXd x(2 * dofs());
-    x.head(dofs()) = combine(*this, w).real();
-    x.tail(dofs()) = combine(*this, lambda.cwiseProduct(w)).real();
+    if (unit.empty()) {
+        x.head(dofs()) = Vr() * w.real() - Vi() * w.imag();
+        x.tail(dofs()) = Vr() * lw.real() - Vi() * lw.imag();
+    } else {
+        x.head(dofs()) = combine(*this, w).real();
+        x.tail(dofs()) = combine(*this, lw).real();
+    }
     return x;
 }
 
 Eigen::VectorXcd StateModes::right(int k) const {
-    if (unit.empty()) return V.col(k);
+    if (unit.empty()) {
+        Eigen::VectorXcd v(dofs());
+        v.real() = Vr().col(k);
+        v.imag() = Vi().col(k);
+        return v;
+    }
     Eigen::VectorXcd v = Eigen::VectorXcd::Zero(dofs());
     v[unit[static_cast<std::size_t>(k)]] = 1.0;
     return v;
 }
 
 Eigen::RowVectorXcd StateModes::left(int k) const {
-    if (unit.empty()) return Lt.col(k).transpose();
+    if (unit.empty()) {
+        Eigen::RowVectorXcd l(2 * dofs());
+        l.real() = Lr().col(k).transpose();
+        l.imag() = Li().col(k).transpose();
+        return l;
+    }
     const int n = dofs(), i = unit[static_cast<std::size_t>(k)];
     const cd zp = partner[k];
     Eigen::RowVectorXcd l = Eigen::RowVectorXcd::Zero(2 * n);

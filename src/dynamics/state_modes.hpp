@@ -42,8 +42,10 @@ struct StateModes {
     std::vector<bool> active;       // which contacts are closed
     Eigen::VectorXcd lambda;        // m representative eigenvalues, ascending |lambda| [1/s]
     std::vector<bool> paired;       // lambda[k] stands for itself and its conjugate
-    Eigen::MatrixXcd V;             // n x m displacement parts v (empty when `unit` is used)
-    Eigen::MatrixXcd Lt;            // 2n x m: left eigenvector rows, transposed (empty when `unit` is used)
+    // [Re V; Im V; Re L^T; Im L^T] (6n x m; V: the displacement parts v, L: the left rows): real and
+    // imaginary parts apart, as applied to real states two real products cost half of one complex
+    // product, and in one block, the largest allocation of a transient. Empty when `unit` is used.
+    Eigen::MatrixXd vl;
     std::vector<int> unit;          // free state: v_k is the unit vector of mode unit[k]
     Eigen::VectorXcd partner;       // free state: the other pole of mode unit[k] [1/s]
     Eigen::VectorXd damping;        // diag(2 zeta omega) [1/s]
@@ -51,6 +53,10 @@ struct StateModes {
     double residual = 0.0;          // worst eigenpair backward error or biorthogonality error, checked
 
     [[nodiscard]] int size() const { return static_cast<int>(lambda.size()); }
+    [[nodiscard]] auto Vr() const { return vl.topRows(dofs()); }
+    [[nodiscard]] auto Vi() const { return vl.middleRows(dofs(), dofs()); }
+    [[nodiscard]] auto Lr() const { return vl.middleRows(2 * dofs(), 2 * dofs()); }
+    [[nodiscard]] auto Li() const { return vl.bottomRows(2 * dofs()); }
     [[nodiscard]] int dofs() const { return static_cast<int>(damping.size()); }
     // row^T v_k for each k: how an output row^T eta reads each mode [m x 1].
     [[nodiscard]] Eigen::VectorXcd project(const Eigen::VectorXd& row) const;
