@@ -94,6 +94,19 @@ const StateData& ExactModel::state(const std::vector<bool>& active) {
         const Eigen::MatrixXcd rv = R.bottomRows(n);
         sd->rayleigh_w = rv.transpose() * (d.cast<cd>().asDiagonal() * rv);
         sd->rayleigh_wc = sd->rayleigh_w.cwiseProduct(sd->cauchy);
+        // What each mode's term alone could still dissipate per unit squared amplitude (exact_energy).
+        auto tail = [&](int k, double weight) {
+            const double decay = -fl[k].real();
+            return decay > 1e-12 * std::abs(fl[k]) ? weight / (2.0 * decay) : std::numeric_limits<double>::infinity();
+        };
+        sd->rayleigh_tail.resize(static_cast<std::size_t>(2 * n));
+        for (int k = 0; k < 2 * n; ++k) sd->rayleigh_tail[static_cast<std::size_t>(k)] = tail(k, d.dot(rv.col(k).cwiseAbs2()));
+        sd->contact_tail.assign(static_cast<std::size_t>(nc), std::vector<double>(static_cast<std::size_t>(2 * n)));
+        for (int c = 0; c < nc; ++c) {
+            for (int k = 0; k < 2 * n; ++k) {
+                sd->contact_tail[static_cast<std::size_t>(c)][static_cast<std::size_t>(k)] = tail(k, std::norm(sd->full_contact_vel(c, k)));
+            }
+        }
     }
     auto [pos, inserted] = cache_.emplace(active, std::move(sd));
     (void)inserted;
@@ -279,11 +292,17 @@ Eigen::VectorXcd PieceSolution::exponentials(double tau) const {
     return e;
 }
 
-Eigen::VectorXcd PieceSolution::full_exponentials(double tau) const {
-    const Eigen::VectorXcd& lam = s_->full.lambda;
-    Eigen::VectorXcd e(lam.size());
-    for (Eigen::Index k = 0; k < e.size(); ++k) e[k] = fast_exp(lam[k], tau);
-    return e;
+Eigen::VectorXcd PieceSolution::full_exponentials(const Eigen::VectorXcd& e) const {
+    // The conjugate modes follow the representatives in expand()'s order: their exponentials are
+    // the conjugates.
+    const std::vector<bool>& paired = s_->modes.paired;
+    Eigen::VectorXcd f(s_->full.lambda.size());
+    f.head(e.size()) = e;
+    Eigen::Index j = e.size();
+    for (Eigen::Index k = 0; k < e.size(); ++k) {
+        if (paired[static_cast<std::size_t>(k)]) f[j++] = std::conj(e[k]);
+    }
+    return f;
 }
 
 Eigen::VectorXcd PieceSolution::coords_at(double tau, const Eigen::VectorXcd& e) const {
@@ -294,78 +313,8 @@ Eigen::VectorXcd PieceSolution::coords_at(double tau, const Eigen::VectorXcd& e)
 
 Eigen::VectorXd PieceSolution::state_at(double tau) const { return s_->modes.state(coords_at(tau, exponentials(tau))); }
 
-// Integral over [0, tau] of c^T W c over all 2n modes, c = a e^(lambda tau) + sum_m C_m tau^p e^(s tau),
-// given W (for the particular terms), W .* cauchy, and the constant a^T (W .* cauchy) a of the piece.
-double PieceSolution::quadratic_integral(const Eigen::MatrixXcd& w, const Eigen::MatrixXcd& wc, cd a_wc_a,
-                                         double tau, const Eigen::VectorXcd& e) const {
-    const Eigen::VectorXcd& lam = s_->full.lambda;
-    const Eigen::VectorXcd ae = a_full_.cwiseProduct(e);
-    cd sum = (ae.transpose() * wc * ae)(0) - a_wc_a;
-    for (const Term& t : terms_full_) {
-        const Eigen::VectorXcd wC = w * t.C;
-        for (Eigen::Index k = 0; k < a_full_.size(); ++k) sum += 2.0 * a_full_[k] * wC[k] * exp_moment(lam[k] + t.s, t.power, tau);
-        for (const Term& u : terms_full_) sum += (t.C.transpose() * w * u.C)(0) * exp_moment(t.s + u.s, t.power + u.power, tau);
-    }
-    return sum.real();
-}
-
-// The same for a rank-one W = kappa g g^T (a contact damper): no n x n matrix is formed.
-double PieceSolution::rank_one_integral(const Eigen::RowVectorXcd& g, double kappa, cd alpha_c_alpha, double tau,
-                                        const Eigen::VectorXcd& e) const {
-    const Eigen::VectorXcd& lam = s_->full.lambda;
-    const Eigen::VectorXcd alpha_e = g.transpose().cwiseProduct(a_full_).cwiseProduct(e);
-    cd sum = (alpha_e.transpose() * s_->cauchy * alpha_e)(0) - alpha_c_alpha;
-    for (const Term& t : terms_full_) {
-        const cd gC = (g * t.C)(0);
-        for (Eigen::Index k = 0; k < a_full_.size(); ++k) sum += 2.0 * g[k] * a_full_[k] * gC * exp_moment(lam[k] + t.s, t.power, tau);
-        for (const Term& u : terms_full_) sum += gC * (g * u.C)(0) * exp_moment(t.s + u.s, t.power + u.power, tau);
-    }
-    return kappa * sum.real();
-}
-
-void PieceSolution::prepare_energy() const {
-    if (energy_ready_) return;
-    a_wc_a_ = (a_full_.transpose() * s_->rayleigh_wc * a_full_)(0);
-    alpha_c_alpha_.assign(p_->contacts.size(), cd(0.0));
-    for (std::size_t c = 0; c < p_->contacts.size(); ++c) {
-        if (!active_[c] || p_->contacts[c].damping == 0.0) continue;
-        const Eigen::VectorXcd alpha = s_->full_contact_vel.row(static_cast<Eigen::Index>(c)).transpose().cwiseProduct(a_full_);
-        alpha_c_alpha_[c] = (alpha.transpose() * s_->cauchy * alpha)(0);
-    }
-    energy_ready_ = true;
-}
-
-void PieceSolution::accumulate_dissipation(double tau, EnergyLedger& e) const {
-    accumulate_dissipation(tau, full_exponentials(tau), e);
-}
-
-void PieceSolution::accumulate_dissipation(double tau, const Eigen::VectorXcd& ex, EnergyLedger& e) const {
-    if (tau <= 0.0) return;
-    prepare_energy();
-    e.rayleigh_dissipated += quadratic_integral(s_->rayleigh_w, s_->rayleigh_wc, a_wc_a_, tau, ex);
-    for (std::size_t c = 0; c < p_->contacts.size(); ++c) {
-        if (!active_[c] || p_->contacts[c].damping == 0.0) continue;
-        e.contact_dissipated += rank_one_integral(s_->full_contact_vel.row(static_cast<Eigen::Index>(c)),
-                                                  p_->contacts[c].damping, alpha_c_alpha_[c], tau, ex);
-    }
-    for (std::size_t l = 0; l < load_vel_.size(); ++l) e.external_work += product_integral(load_vel_[l], load_time_[l], tau);
-}
-
-EnergyLedger PieceSolution::energy_at(double tau, const EnergyLedger& start) const {
-    EnergyLedger e = start;
-    accumulate_dissipation(tau, full_exponentials(tau), e);
-    const int n = b_->n;
-    const Eigen::VectorXd x = state_at(tau);
-    e.kinetic = 0.5 * x.tail(n).squaredNorm();
-    e.strain = 0.5 * x.head(n).cwiseProduct(b_->omega).squaredNorm();
-    e.contact_spring = 0.0;
-    for (std::size_t c = 0; c < p_->contacts.size(); ++c) {
-        if (!active_[c]) continue;
-        const ContactElement& ce = p_->contacts[c];
-        const double d = ce.sign * (ce.surface - b_->phi.row(ce.dof).dot(x.head(n)));
-        e.contact_spring += 0.5 * ce.stiffness * d * d;
-    }
-    return e;
+Eigen::VectorXd PieceSolution::state_at(double tau, const Eigen::VectorXcd& e) const {
+    return s_->modes.state(coords_at(tau, e));
 }
 
 void PieceSolution::sample(double tau, double t_abs, const std::vector<bool>& active, TimeHistory& h, bool energy,
@@ -376,15 +325,17 @@ void PieceSolution::sample(double tau, double t_abs, const std::vector<bool>& ac
         h.contact_velocity.resize(nc);
         h.contact_force.resize(nc);
     }
+    // One set of exponentials serves every channel, the state and the energy terms.
+    const Eigen::VectorXcd e = exponentials(tau);
     h.t.push_back(t_abs);
-    h.tip_v.push_back(tip_v_.value(tau));
-    h.tip_velocity.push_back(tip_vel_.value(tau));
+    h.tip_v.push_back(tip_v_.value(tau, e));
+    h.tip_velocity.push_back(tip_vel_.value(tau, e));
     for (std::size_t c = 0; c < nc; ++c) {
-        h.contact_v[c].push_back(v_[c].value(tau));
-        h.contact_velocity[c].push_back(vel_[c].value(tau));
-        h.contact_force[c].push_back(active[c] ? force_[c].value(tau) : 0.0);
+        h.contact_v[c].push_back(v_[c].value(tau, e));
+        h.contact_velocity[c].push_back(vel_[c].value(tau, e));
+        h.contact_force[c].push_back(active[c] ? force_[c].value(tau, e) : 0.0);
     }
-    if (energy) h.energy.push_back(energy_at(tau, start));
+    if (energy) h.energy.push_back(energy_at(tau, start, e));
 }
 
 }  // namespace vi

@@ -28,6 +28,11 @@ struct StateData {
     Eigen::MatrixXcd cauchy;        // 1 / (lambda_k + lambda_l), 0 where that sum vanishes
     Eigen::MatrixXcd rayleigh_w;    // Rv^T diag(2 zeta omega) Rv
     Eigen::MatrixXcd rayleigh_wc;   // rayleigh_w .* cauchy
+    // Per mode, the dissipation its term alone could still do from a sample on, per unit squared
+    // amplitude: |Rv_k|_D^2 / (2 |Re lambda_k|), and |g_k|^2 / (2 |Re lambda_k|) for each contact's
+    // velocity row g (infinite for an undamped mode).
+    std::vector<double> rayleigh_tail;
+    std::vector<std::vector<double>> contact_tail;
 };
 
 // The solution from x0 at t0 in one state with the loads of [t0, t1]: c(tau) = a exp(lambda tau) + P(tau).
@@ -61,14 +66,17 @@ private:
         int power;
     };
     ExpSignal channel(const Eigen::RowVectorXcd& row, double scale, double offset) const;
-    [[nodiscard]] Eigen::VectorXcd exponentials(double tau) const;       // representatives
-    [[nodiscard]] Eigen::VectorXcd full_exponentials(double tau) const;  // all 2n modes
+    [[nodiscard]] Eigen::VectorXcd exponentials(double tau) const;  // representatives
+    // All 2n modes' exponentials from the representatives' (the conjugates are conjugate).
+    [[nodiscard]] Eigen::VectorXcd full_exponentials(const Eigen::VectorXcd& e) const;
     [[nodiscard]] Eigen::VectorXcd coords_at(double tau, const Eigen::VectorXcd& e) const;
-    [[nodiscard]] double quadratic_integral(const Eigen::MatrixXcd& w, const Eigen::MatrixXcd& wc, cd a_wc_a, double tau,
-                                            const Eigen::VectorXcd& e) const;
-    [[nodiscard]] double rank_one_integral(const Eigen::RowVectorXcd& g, double kappa, cd alpha_c_alpha, double tau,
-                                           const Eigen::VectorXcd& e) const;
+    [[nodiscard]] Eigen::VectorXd state_at(double tau, const Eigen::VectorXcd& e) const;
+    // With e the representatives' exponentials at tau:
+    [[nodiscard]] EnergyLedger energy_at(double tau, const EnergyLedger& start, const Eigen::VectorXcd& e) const;
     void accumulate_dissipation(double tau, const Eigen::VectorXcd& e, EnergyLedger& ledger) const;
+    // Integral over [0, tau] of c^T W c for the Rayleigh W, and of kappa (g^T c)^2 for a contact damper.
+    [[nodiscard]] double rayleigh_integral(double tau, const Eigen::VectorXcd& ef) const;
+    [[nodiscard]] double damper_integral(std::size_t c, double tau, const Eigen::VectorXcd& ef) const;
     void prepare_energy() const;  // the piece's constant parts of the dissipation integrals
 
     void particular_solution(const Eigen::VectorXd& x0, double t0, double t1, bool energy);
@@ -86,8 +94,11 @@ private:
     ExpSignal tip_v_, tip_vel_;
     std::vector<ExpSignal> load_vel_, load_time_;
     mutable bool energy_ready_ = false;
-    mutable cd a_wc_a_;
-    mutable std::vector<cd> alpha_c_alpha_;
+    mutable cd a_wc_a_;                        // a^T (W .* cauchy) a
+    mutable std::vector<Eigen::VectorXcd> wC_; // W C_m per particular term
+    mutable Eigen::MatrixXcd CwC_;             // C_m^T W C_l
+    mutable std::vector<cd> alpha_c_alpha_;    // per contact: alpha^T cauchy alpha, alpha = g .* a
+    mutable std::vector<std::vector<cd>> gC_;  // per contact: g^T C_m
 };
 
 // The model shared by all pieces: base modes and a cache of decomposed contact states.

@@ -28,6 +28,12 @@ std::pair<double, double> ExpSignal::value_and_slope(double tau) const {
     return {v.real(), s.real()};
 }
 
+double ExpSignal::value(double tau, const Eigen::VectorXcd& e) const {
+    double v = A.cwiseProduct(e).sum().real();
+    for (const ExpTerm& t : terms) v += term_derivative(t, tau, 0).real();
+    return v;
+}
+
 double ExpSignal::derivative(double tau, int d) const {
     cd sum = 0.0;
     for (Eigen::Index k = 0; k < A.size(); ++k) {
@@ -65,7 +71,9 @@ double ExpSignal::bound(double tau, double h, int d) const {
     return b;
 }
 
-cd exp_moment(cd mu, int p, double tau) {
+cd exp_moment(cd mu, int p, double tau) { return exp_moment(mu, p, tau, std::abs(mu * tau) < 0.1 ? cd(0.0) : std::exp(mu * tau)); }
+
+cd exp_moment(cd mu, int p, double tau, cd e) {
     const cd x = mu * tau;
     if (std::abs(x) < 0.1) {
         // Series: tau^(p+1) sum_n x^n / (n! (n + p + 1)).
@@ -76,7 +84,6 @@ cd exp_moment(cd mu, int p, double tau) {
         }
         return sum * std::pow(tau, p + 1);
     }
-    const cd e = std::exp(x);
     const cd i0 = (e - 1.0) / mu;
     if (p == 0) return i0;
     const cd i1 = (tau * e - i0) / mu;

@@ -30,6 +30,8 @@ struct ExpSignal {
     // d-th derivative (0..3) at tau [s].
     [[nodiscard]] double derivative(double tau, int d) const;
     [[nodiscard]] double value(double tau) const { return derivative(tau, 0); }
+    // The value given e_k = exp(lambda_k tau) already computed (one set serves every channel of a piece).
+    [[nodiscard]] double value(double tau, const Eigen::VectorXcd& e) const;
     // f and f' together (one exponential per mode).
     [[nodiscard]] std::pair<double, double> value_and_slope(double tau) const;
     // An upper bound of |f^(d)| over [tau, tau + h].
@@ -44,12 +46,15 @@ inline cd fast_exp(cd z, double tau) {
     const double x = z.real() * tau;
     if (x < -707.0) return cd(0.0, 0.0);
     const double e = std::exp(x);
+    if (z.imag() == 0.0) return cd(e, 0.0);
     const double ph = z.imag() * tau;
     return cd(e * std::cos(ph), e * std::sin(ph));
 }
 
 // Integral over [0, tau] of t^p exp(mu t) (p = 0, 1, 2), accurate also for small |mu tau|.
 cd exp_moment(cd mu, int p, double tau);
+// The same given e = exp(mu tau).
+cd exp_moment(cd mu, int p, double tau, cd e);
 
 // Integral over [0, tau] of f(t) g(t) for two signals over the same piece.
 double product_integral(const ExpSignal& f, const ExpSignal& g, double tau);
