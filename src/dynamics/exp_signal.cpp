@@ -71,7 +71,7 @@ double ExpSignal::bound(double tau, double h, int d) const {
     return b;
 }
 
-cd exp_moment(cd mu, int p, double tau) { return exp_moment(mu, p, tau, std::abs(mu * tau) < 0.1 ? cd(0.0) : std::exp(mu * tau)); }
+cd exp_moment(cd mu, int p, double tau) { return exp_moment(mu, p, tau, fast_exp(mu, tau)); }
 
 cd exp_moment(cd mu, int p, double tau, cd e) {
     const cd x = mu * tau;

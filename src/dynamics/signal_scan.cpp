@@ -9,9 +9,10 @@
 namespace vi {
 namespace {
 
-// Prefix arrays per point: f0 (upper bound of the slow modes' value), f1 (of their slope), mag
-// (sum |v_k|) and b2 (sum |v_k| |lambda_k|^2).
-constexpr int kF0 = 0, kF1 = 1, kMag = 2, kB2 = 3, kArrays = 4;
+// Per point, one record per prefix of its live modes (index J = number of slow modes, 0..live):
+// f0 (upper bound of the slow modes' value), f1 (of their slope), mag (sum |v_k|), b2
+// (sum |v_k| |lambda_k|^2), and the |lambda| of live mode J (for the split by |lambda| h <= 2).
+constexpr int kF0 = 0, kF1 = 1, kMag = 2, kB2 = 3, kLambda = 4;
 
 // A mode is not evaluated once |v_k| falls below this fraction of the signal's size: its exact
 // magnitude still bounds it, so nothing is lost but a contribution far below roundoff of the sum.
@@ -93,7 +94,7 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
 ScanPoint SignalScan::evaluate(double t) {
     ScanPoint p;
     p.t = t;
-    const std::size_t need = static_cast<std::size_t>(kArrays * (m_ + 1));
+    const std::size_t need = static_cast<std::size_t>(kRecord * (m_ + 1));
     if (used_ + need > capacity_) {
         const std::size_t cap = std::max(2 * capacity_, used_ + 64 * need);
         std::unique_ptr<double[]> bigger(new double[cap]);
@@ -102,21 +103,23 @@ ScanPoint SignalScan::evaluate(double t) {
         capacity_ = cap;
     }
     p.offset = used_;
-    used_ += need;
-    double* f0 = store_.get() + p.offset;
-    double* f1 = f0 + (m_ + 1);
-    double* mg = f1 + (m_ + 1);
-    double* b2 = mg + (m_ + 1);
-    f0[0] = f1[0] = mg[0] = b2[0] = 0.0;
+    double* rec = store_.get() + p.offset;
+    rec[kF0] = rec[kF1] = rec[kMag] = rec[kB2] = 0.0;
     double value = 0.0, slope = 0.0, abs1 = 0.0;
+    int live = 0, dead = 0;
     for (int k = 0; k < m_; ++k) {
         const std::size_t i = static_cast<std::size_t>(k);
-        double vre = 0.0, lre = 0.0, unc = 0.0, mk = skip_;
-        // |v_k| exactly (or an upper bound: skip_ once dead, 1e-307 amp below exp(-707)) before
-        // deciding whether to evaluate it.
+        if (t >= dead_[i]) {
+            // Below skip_ for good: bounded by it, always among the fast modes, never evaluated.
+            ++dead;
+            abs1 += skip_ * mag_[i];
+            continue;
+        }
+        double vre = 0.0, lre = 0.0, unc = 0.0, mk = 0.0;
+        // |v_k| exactly (or, below exp(-707), an upper bound) before deciding whether to evaluate it.
         const double x = re_[i] * t;
-        const double e = t >= dead_[i] ? 0.0 : x < -707.0 ? 1e-307 : std::exp(x);
-        if (e > 0.0) mk = amp_[i] * e;
+        const double e = x < -707.0 ? 1e-307 : std::exp(x);
+        mk = amp_[i] * e;
         if (mk <= skip_) {
             unc = mk;  // Re v and Re(lambda v) lie within +-|v| and +-|lambda||v|
         } else {
@@ -128,12 +131,20 @@ ScanPoint SignalScan::evaluate(double t) {
         value += vre;
         slope += lre;
         abs1 += mk * mag_[i];
-        f0[k + 1] = f0[k] + vre + unc;
-        f1[k + 1] = f1[k] + lre + unc * mag_[i];
-        mg[k + 1] = mg[k] + mk;
-        b2[k + 1] = b2[k] + mk * mag2_[i];
+        rec[kLambda] = mag_[i];
+        double* next = rec + kRecord;
+        next[kF0] = rec[kF0] + vre + unc;
+        next[kF1] = rec[kF1] + lre + unc * mag_[i];
+        next[kMag] = rec[kMag] + mk;
+        next[kB2] = rec[kB2] + mk * mag2_[i];
+        rec = next;
+        ++live;
     }
-    p.abs0 = mg[m_];
+    rec[kLambda] = std::numeric_limits<double>::infinity();
+    used_ += static_cast<std::size_t>(kRecord * (live + 1));
+    p.live = live;
+    p.dead_mag = dead * skip_;
+    p.abs0 = rec[kMag] + p.dead_mag;
     for (const ExpTerm& term : terms_) {
         const cd v0 = term_derivative(term, t, 0), v1 = term_derivative(term, t, 1);
         p.p0 += v0.real();
@@ -164,29 +175,39 @@ double SignalScan::value(double t) const {
 
 double SignalScan::growth(double h) const { return gamma_ > 0.0 ? std::exp(gamma_ * h) : 1.0; }
 
-int SignalScan::slow_count(double h) const {
+int SignalScan::slow_count(const ScanPoint& p, double h) const {
     // Modes with |lambda| h <= 2 change little over h: Taylor bounds them well; faster ones do better
-    // by their amplitude alone.
-    if (!(h > 0.0)) return m_;
-    return static_cast<int>(std::upper_bound(mag_.begin(), mag_.end(), 2.0 / h) - mag_.begin());
+    // by their amplitude alone. Live modes are in ascending |lambda|: bisect their records.
+    if (!(h > 0.0)) return p.live;
+    const double* rec = record(p, 0);
+    const double limit = 2.0 / h;
+    int lo = 0, hi = p.live;  // the first J with |lambda_J| > limit lies in [lo, hi]
+    while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        if (rec[kRecord * mid + kLambda] <= limit) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    return lo;
 }
 
 double SignalScan::certified_step(const ScanPoint& p, double H, double value_used) const {
     // For slow modes k < J: f_slow(t + s) <= f0 + f1 s + G b2 s^2 / 2 (Taylor, |v_k| not growing by more
-    // than G = exp(gamma H)); for fast ones |f_fast| <= G sum |v_k|. Any J gives a valid bound; the
-    // step is the longest any of them proves.
+    // than G = exp(gamma H)); for fast ones, dead ones included, |f_fast| <= G sum |v_k|. Any J gives a
+    // valid bound; the step is the longest any of them proves.
     const double G = growth(H);
-    const double* f0 = prefix(p, kF0);
-    const double* f1 = prefix(p, kF1);
-    const double* mg = prefix(p, kMag);
-    const double* b2 = prefix(p, kB2);
+    const double* rec = record(p, 0);
+    const double mag_all = rec[kRecord * p.live + kMag] + p.dead_mag;
     const double shift = value_used - p.value;
     double best = 0.0;
-    for (int J = m_; J >= 0; --J) {
-        const double c0 = p.p0 + f0[J] + G * (mg[m_] - mg[J]) + shift;
+    for (int J = p.live; J >= 0; --J) {
+        const double* r = rec + kRecord * J;
+        const double c0 = p.p0 + r[kF0] + G * (mag_all - r[kMag]) + shift;
         if (!(c0 < 0.0)) continue;
-        const double c1 = p.p1 + f1[J];
-        const double c2 = terms_b2_ + G * b2[J];
+        const double c1 = p.p1 + r[kF1];
+        const double c2 = terms_b2_ + G * r[kB2];
         best = std::max(best, quadratic_reach(c0, c1, c2));
         if (best >= H) return H;
     }
@@ -194,20 +215,20 @@ double SignalScan::certified_step(const ScanPoint& p, double H, double value_use
 }
 
 double SignalScan::upper_bound(const ScanPoint& a, const ScanPoint& b) const {
+    // Live at b means live at a (b is later and magnitudes only fall below skip_ for good), so the
+    // slow set at a (live, |lambda| h <= 2) is the slow set at b plus ja - jb modes dead at b.
     const double h = b.t - a.t;
-    const int J = slow_count(h);
+    const int ja = slow_count(a, h), jb = slow_count(b, h);
     const double G = growth(h);
-    const double* f0a = prefix(a, kF0);
-    const double* f1a = prefix(a, kF1);
-    const double* mga = prefix(a, kMag);
-    const double* b2a = prefix(a, kB2);
-    const double* f0b = prefix(b, kF0);
+    const double* ra = record(a, ja);
+    const double* rb = record(b, jb);
+    const double mag_all = record(a, a.live)[kMag] + a.dead_mag;
     // Fast modes: at most their size at a (decaying) times G. Slow ones: |f''| <= B over [a, b].
-    const double fast = G * (mga[m_] - mga[J]);
-    const double B = terms_b2_ + G * b2a[J];
-    const double ya = a.p0 + f0a[J];
-    const double yb = b.p0 + f0b[J];
-    const double taylor = ya + std::max(0.0, (a.p1 + f1a[J]) * h + 0.5 * B * h * h);
+    const double fast = G * (mag_all - ra[kMag]);
+    const double B = terms_b2_ + G * ra[kB2];
+    const double ya = a.p0 + ra[kF0];
+    const double yb = b.p0 + rb[kF0] + (ja - jb) * skip_;
+    const double taylor = ya + std::max(0.0, (a.p1 + ra[kF1]) * h + 0.5 * B * h * h);
     double interp = std::max(ya, yb);
     if (B > 0.0 && h > 0.0) {
         // max over s in [0, h] of ya + (yb - ya) s / h + B s (h - s) / 2

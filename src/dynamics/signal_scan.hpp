@@ -11,9 +11,11 @@
 
 namespace vi {
 
-// One evaluation point: exact-arithmetic estimates and, over the modes in ascending |lambda|, prefix
-// sums indexed by the number J of slow modes (0..m). Modes too small to matter are not evaluated
-// (no sin/cos); their exact magnitude still enters every bound (f0, f1 as +-|v|, mag, b2).
+// One evaluation point: exact-arithmetic estimates and, over its live modes in ascending |lambda|,
+// prefix sums indexed by the number J of slow modes (0..live). Modes too small to matter are not
+// evaluated (no sin/cos); their magnitude or a bound of it still enters every bound (f0, f1 as
+// +-|v|, mag, b2). Modes past their death time (below the skip threshold for good) are not live:
+// they are always counted among the fast modes, each by the threshold.
 struct ScanPoint {
     double t = 0.0;
     double value = 0.0;   // f(t), skipped modes left out (each below 1e-18 of the signal's size)
@@ -22,7 +24,9 @@ struct ScanPoint {
     double abs1 = 0.0;    // sum |lambda_k v_k| + |particular slope|: the roundoff scale of f'(t)
     double p0 = 0.0;      // particular part's value and slope at t
     double p1 = 0.0;
-    std::size_t offset = 0;  // where its prefix sums live in the scan's store
+    int live = 0;            // modes not yet dead
+    double dead_mag = 0.0;   // bound of the dead modes' sum |v_k|
+    std::size_t offset = 0;  // where its prefix records live in the scan's store
 };
 
 class SignalScan {
@@ -48,10 +52,12 @@ public:
     [[nodiscard]] double size() const { return size_; }
 
 private:
-    const double* prefix(const ScanPoint& p, int which) const {
-        return store_.get() + p.offset + static_cast<std::size_t>(which * (m_ + 1));
+    // The prefix record of point p with J slow modes: {f0, f1, mag, b2, |lambda| of live mode J}.
+    static constexpr int kRecord = 5;
+    const double* record(const ScanPoint& p, int J) const {
+        return store_.get() + p.offset + static_cast<std::size_t>(kRecord * J);
     }
-    int slow_count(double h) const;
+    int slow_count(const ScanPoint& p, double h) const;
     double growth(double h) const;
 
     int m_ = 0;
