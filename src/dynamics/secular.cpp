@@ -32,6 +32,49 @@ cd newton_ratio(const std::vector<SecularMode>& modes, double kc, double cc, cd 
     return 1.0 / (log_deriv + gp / g);
 }
 
+// The same at a real x, in real arithmetic (most roots are real: the overdamped modes' poles).
+double newton_ratio(const std::vector<SecularMode>& modes, double kc, double cc, double x) {
+    double S = 0.0, Sp = 0.0, log_deriv = 0.0;
+    for (const SecularMode& m : modes) {
+        double q = 0.0, qp = 0.0;
+        if (m.pole_a.imag() != 0.0) {
+            const double d = x - m.pole_a.real();
+            q = d * d + m.pole_a.imag() * m.pole_a.imag();
+            qp = 2.0 * d;
+        } else {
+            const double da = x - m.pole_a.real(), db = x - m.pole_b.real();
+            q = da * db;
+            qp = da + db;
+        }
+        const double iq = 1.0 / q;
+        const double t = m.s * iq;
+        S += t;
+        Sp -= t * qp * iq;
+        log_deriv += qp * iq;
+    }
+    const double g = 1.0 + (kc + cc * x) * S;
+    if (g == 0.0) return 0.0;
+    const double gp = cc * S + (kc + cc * x) * Sp;
+    return 1.0 / (log_deriv + gp / g);
+}
+
+// The Aberth correction of real root x among the representatives (a pair w adds 2 Re 1/(x - w)).
+double real_step(const std::vector<SecularMode>& modes, double kc, double cc, const ConjugateRoots& r, std::size_t k) {
+    const double x = r.z[k].real();
+    const double ratio = newton_ratio(modes, kc, cc, x);
+    double repel = 0.0;
+    for (std::size_t j = 0; j < r.z.size(); ++j) {
+        if (j == k) continue;
+        const double d = x - r.z[j].real();
+        if (r.paired[j]) {
+            repel += 2.0 * d / (d * d + r.z[j].imag() * r.z[j].imag());
+        } else {
+            repel += 1.0 / d;
+        }
+    }
+    return ratio / (1.0 - ratio * repel);
+}
+
 // First-order start of the root that grows out of free pole p (its partner pole q): p - rho with
 // rho the residue of g at p, held within half of |p| (beyond that the expansion means nothing).
 cd start_near(const SecularMode& m, cd p, cd q, double kc, double cc) {
@@ -52,14 +95,19 @@ bool symmetric_aberth(const std::vector<SecularMode>& modes, double kc, double c
         for (std::size_t k = 0; k < m; ++k) {
             if (done[k]) continue;
             const cd z = r.z[k];
-            const cd ratio = newton_ratio(modes, kc, cc, z);
-            cd repel = r.paired[k] ? 1.0 / (z - std::conj(z)) : cd(0.0);
-            for (std::size_t j = 0; j < m; ++j) {
-                if (j == k) continue;
-                repel += 1.0 / (z - r.z[j]);
-                if (r.paired[j]) repel += 1.0 / (z - std::conj(r.z[j]));
+            cd step = 0.0;
+            if (r.paired[k]) {
+                const cd ratio = newton_ratio(modes, kc, cc, z);
+                cd repel = 1.0 / (z - std::conj(z));
+                for (std::size_t j = 0; j < m; ++j) {
+                    if (j == k) continue;
+                    repel += 1.0 / (z - r.z[j]);
+                    if (r.paired[j]) repel += 1.0 / (z - std::conj(r.z[j]));
+                }
+                step = ratio / (1.0 - ratio * repel);
+            } else {
+                step = real_step(modes, kc, cc, r, k);
             }
-            const cd step = ratio / (1.0 - ratio * repel);
             cd next = z - step;
             if (!std::isfinite(next.real()) || !std::isfinite(next.imag())) return false;
             if (!r.paired[k]) {
