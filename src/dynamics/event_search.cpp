@@ -71,9 +71,10 @@ std::optional<double> first_upcrossing(const ExpSignal& f, double tau0, double t
     return std::nullopt;
 }
 
-SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double abs_tol, double rel_tol, double h_min,
+SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double size_tol, double rel_tol, double h_min,
                              int* evals, double floor, double sign) {
     SignalScan scan(f, sign, tau_end);
+    const double abs_tol = size_tol * scan.size();
     SignalMaximum best{floor, -1.0};
     double margin = std::max(abs_tol, rel_tol * std::abs(floor));
     auto consider = [&](const ScanPoint& p) {

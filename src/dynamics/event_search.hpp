@@ -23,16 +23,16 @@ struct CrossingSearch {
 std::optional<double> first_upcrossing(const ExpSignal& f, double tau0, double tau_max, const CrossingSearch& opt,
                                        int* evaluations = nullptr);
 
-// Where the largest value of sign * f over [0, tau_end] lies, to within max(abs_tol, rel_tol |max|) in
-// value (branch and bound: an interval is dropped once an upper bound of sign * f on it falls below
-// the best value seen plus that margin).
+// Where the largest value of sign * f over [0, tau_end] lies, to within max(size_tol S, rel_tol |max|)
+// in value, S the signal's size (sum of its amplitudes) (branch and bound: an interval is dropped once
+// an upper bound of sign * f on it falls below the best value seen plus that margin).
 struct SignalMaximum {
     double value = 0.0;
     double tau = 0.0;
 };
 // `floor`: a value already reached elsewhere; parts of the interval that cannot beat it are skipped
 // and, when nothing does, the result is {floor, -1}. sign = -1 finds the minimum of f (as -value).
-SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double abs_tol, double rel_tol, double h_min,
+SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double size_tol, double rel_tol, double h_min,
                              int* evaluations = nullptr, double floor = -std::numeric_limits<double>::infinity(),
                              double sign = 1.0);
 

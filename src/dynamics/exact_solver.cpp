@@ -26,8 +26,7 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 SignalMaximum maximum_over(const ExpSignal& f, double tau_end, const CrossingSearch& cs, int* evals,
                            double floor = -std::numeric_limits<double>::infinity(), double rel_tol = 1e-9,
                            double sign = 1.0) {
-    const double noise = 64.0 * std::numeric_limits<double>::epsilon() * f.bound(0.0, tau_end, 0);
-    return global_maximum(f, tau_end, noise, rel_tol, cs.t_tol, evals, floor, sign);
+    return global_maximum(f, tau_end, 64.0 * std::numeric_limits<double>::epsilon(), rel_tol, cs.t_tol, evals, floor, sign);
 }
 
 // y_max is sought everywhere after the first onset; the deepest tip deflection only while some

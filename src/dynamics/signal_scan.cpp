@@ -50,43 +50,51 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
     spare.capacity = 0;
     m_ = static_cast<int>(f.A.size());
     const Eigen::VectorXcd& lam = *f.lambda;
-    std::vector<int> order(static_cast<std::size_t>(m_));
-    std::iota(order.begin(), order.end(), 0);
     // Decompositions come sorted; signals built by hand may not be.
     bool sorted = true;
     for (int k = 1; k < m_; ++k) sorted = sorted && std::norm(lam[k - 1]) <= std::norm(lam[k]);
-    if (!sorted) std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return std::norm(lam[a]) < std::norm(lam[b]); });
-    for (const int k : order) {
+    std::vector<int> order;
+    if (!sorted) {
+        order.resize(static_cast<std::size_t>(m_));
+        std::iota(order.begin(), order.end(), 0);
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return std::norm(lam[a]) < std::norm(lam[b]); });
+    }
+    modes_.resize(static_cast<std::size_t>(m_));
+    for (int j = 0; j < m_; ++j) {
+        const int k = sorted ? j : order[static_cast<std::size_t>(j)];
         const cd l = lam[k];
-        A_.push_back(sign * f.A[k]);
-        re_.push_back(l.real());
-        im_.push_back(l.imag());
-        mag2_.push_back(std::norm(l));
-        mag_.push_back(std::sqrt(mag2_.back()));
-        amp_.push_back(magnitude(f.A[k]));
-        gamma_ = std::max(gamma_, l.real());
-        size_ += amp_.back();
+        Mode& md = modes_[static_cast<std::size_t>(j)];
+        md.A = sign * f.A[k];
+        md.re = l.real();
+        md.im = l.imag();
+        md.mag2 = std::norm(l);
+        md.mag = std::sqrt(md.mag2);
+        md.amp = magnitude(f.A[k]);
+        gamma_ = std::max(gamma_, md.re);
+        size_ += md.amp;
     }
     for (const ExpTerm& t : f.terms) {
         terms_.push_back({sign * t.coef, t.s, t.power});
         size_ += magnitude(t.coef);
     }
-    ExpSignal part;
-    part.lambda = f.lambda;
-    part.terms = f.terms;
-    terms_b2_ = terms_.empty() ? 0.0 : part.bound(0.0, t_end, 2);
+    if (!terms_.empty()) {
+        ExpSignal part;
+        part.lambda = f.lambda;
+        part.terms = f.terms;
+        terms_b2_ = part.bound(0.0, t_end, 2);
+    }
     skip_ = kSkipFraction * size_;
     // amp e^(re t) <= skip once t >= ln(amp / skip) / -re; ln x <= e ln 2 for x = mant 2^e, mant < 1,
     // so the exponent of frexp gives a time that is never early.
-    for (std::size_t k = 0; k < amp_.size(); ++k) {
-        if (amp_[k] <= skip_) {
-            dead_.push_back(0.0);
-        } else if (re_[k] < 0.0) {
+    for (Mode& md : modes_) {
+        if (md.amp <= skip_) {
+            md.dead = 0.0;
+        } else if (md.re < 0.0) {
             int e = 0;
-            std::frexp(amp_[k] / skip_, &e);
-            dead_.push_back(e * std::numbers::ln2 / -re_[k]);
+            std::frexp(md.amp / skip_, &e);
+            md.dead = e * std::numbers::ln2 / -md.re;
         } else {
-            dead_.push_back(std::numeric_limits<double>::infinity());
+            md.dead = std::numeric_limits<double>::infinity();
         }
     }
 }
@@ -107,36 +115,38 @@ ScanPoint SignalScan::evaluate(double t) {
     rec[kF0] = rec[kF1] = rec[kMag] = rec[kB2] = 0.0;
     double value = 0.0, slope = 0.0, abs1 = 0.0;
     int live = 0, dead = 0;
-    for (int k = 0; k < m_; ++k) {
-        const std::size_t i = static_cast<std::size_t>(k);
-        if (t >= dead_[i]) {
+    for (const Mode& md : modes_) {
+        if (t >= md.dead) {
             // Below skip_ for good: bounded by it, always among the fast modes, never evaluated.
             ++dead;
-            abs1 += skip_ * mag_[i];
+            abs1 += skip_ * md.mag;
             continue;
         }
-        double vre = 0.0, lre = 0.0, unc = 0.0, mk = 0.0;
+        double vre = 0.0, lre = 0.0, unc = 0.0;
         // |v_k| exactly (or, below exp(-707), an upper bound) before deciding whether to evaluate it.
-        const double x = re_[i] * t;
+        const double x = md.re * t;
         const double e = x < -707.0 ? 1e-307 : std::exp(x);
-        mk = amp_[i] * e;
+        const double mk = md.amp * e;
         if (mk <= skip_) {
             unc = mk;  // Re v and Re(lambda v) lie within +-|v| and +-|lambda||v|
+        } else if (md.im == 0.0) {
+            vre = md.A.real() * e;
+            lre = md.re * vre;
         } else {
-            const double ph = im_[i] * t;
-            const cd v = A_[i] * cd(e * std::cos(ph), e * std::sin(ph));
+            const double ph = md.im * t;
+            const cd v = md.A * cd(e * std::cos(ph), e * std::sin(ph));
             vre = v.real();
-            lre = re_[i] * v.real() - im_[i] * v.imag();
+            lre = md.re * v.real() - md.im * v.imag();
         }
         value += vre;
         slope += lre;
-        abs1 += mk * mag_[i];
-        rec[kLambda] = mag_[i];
+        abs1 += mk * md.mag;
+        rec[kLambda] = md.mag;
         double* next = rec + kRecord;
         next[kF0] = rec[kF0] + vre + unc;
-        next[kF1] = rec[kF1] + lre + unc * mag_[i];
+        next[kF1] = rec[kF1] + lre + unc * md.mag;
         next[kMag] = rec[kMag] + mk;
-        next[kB2] = rec[kB2] + mk * mag2_[i];
+        next[kB2] = rec[kB2] + mk * md.mag2;
         rec = next;
         ++live;
     }
@@ -160,14 +170,17 @@ ScanPoint SignalScan::evaluate(double t) {
 
 double SignalScan::value(double t) const {
     double v = 0.0;
-    for (int k = 0; k < m_; ++k) {
-        const std::size_t i = static_cast<std::size_t>(k);
-        const double x = re_[i] * t;
-        if (t >= dead_[i] || x < -707.0) continue;
+    for (const Mode& md : modes_) {
+        const double x = md.re * t;
+        if (t >= md.dead || x < -707.0) continue;
         const double e = std::exp(x);
-        if (amp_[i] * e <= skip_) continue;
-        const double ph = im_[i] * t;
-        v += (A_[i] * cd(e * std::cos(ph), e * std::sin(ph))).real();
+        if (md.amp * e <= skip_) continue;
+        if (md.im == 0.0) {
+            v += md.A.real() * e;
+            continue;
+        }
+        const double ph = md.im * t;
+        v += (md.A * cd(e * std::cos(ph), e * std::sin(ph))).real();
     }
     for (const ExpTerm& term : terms_) v += term_derivative(term, t, 0).real();
     return v;

@@ -61,9 +61,12 @@ private:
     double growth(double h) const;
 
     int m_ = 0;
-    std::vector<cd> A_;                  // amplitudes (times sign), ascending |lambda|
-    std::vector<double> re_, im_, mag_, mag2_, amp_;
-    std::vector<double> dead_;           // from this time on |v_k| <= skip_ (no evaluation at all)
+    struct Mode {
+        cd A;                            // amplitude (times sign)
+        double re, im, mag, mag2, amp;   // lambda, |lambda|, |lambda|^2, |A|
+        double dead;                     // from this time on |v_k| <= skip_ (no evaluation at all)
+    };
+    std::vector<Mode> modes_;            // ascending |lambda|
     std::vector<ExpTerm> terms_;         // particular part (times sign)
     double terms_b2_ = 0.0;              // bound of |particular''| over [0, t_end]
     double gamma_ = 0.0;                 // largest Re lambda > 0 (roundoff of undamped modes), else 0

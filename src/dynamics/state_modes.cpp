@@ -146,25 +146,38 @@ double check_residual(const BaseModes& b, const TransientProblem& p, const State
     const int n = s.dofs(), m = s.size();
     double knorm = b.omega.cwiseAbs2().maxCoeff(), cnorm = s.damping.cwiseAbs().maxCoeff();
     std::vector<const ContactElement*> closed;
+    std::vector<Eigen::VectorXcd> rows;
     for (std::size_t c = 0; c < p.contacts.size(); ++c) {
         if (!s.active[c]) continue;
         closed.push_back(&p.contacts[c]);
         const Eigen::VectorXd r = contact_row(b, p.contacts[c]);
+        rows.push_back(r.cast<cd>());
         knorm += p.contacts[c].stiffness * r.cwiseAbs().maxCoeff() * r.cwiseAbs().sum();
         cnorm += p.contacts[c].damping * r.cwiseAbs().maxCoeff() * r.cwiseAbs().sum();
     }
     double worst = 0.0;
+    Eigen::VectorXcd v(n), r(n);
     for (int k = 0; k < m; ++k) {
-        const Eigen::VectorXcd v = s.right(k);
         const cd z = s.lambda[k];
-        Eigen::VectorXcd r(n);
-        for (int i = 0; i < n; ++i) r[i] = ((z - b.pole_a[i]) * (z - b.pole_b[i])) * v[i];
-        for (const ContactElement* ce : closed) {
-            const Eigen::VectorXcd row = contact_row(b, *ce).cast<cd>();
-            r += ((ce->stiffness + z * ce->damping) * row.cwiseProduct(v).sum()) * row;
+        const double scale = std::norm(z) + std::sqrt(std::norm(z)) * cnorm + knorm;
+        if (!s.unit.empty()) {
+            // A free mode: v is a unit vector and no contact is closed.
+            const int i = s.unit[static_cast<std::size_t>(k)];
+            worst = std::max(worst, std::sqrt(std::norm((z - b.pole_a[i]) * (z - b.pole_b[i]))) / scale);
+            continue;
         }
-        const double scale = (std::norm(z) + std::abs(z) * cnorm + knorm) * v.cwiseAbs().maxCoeff();
-        worst = std::max(worst, r.cwiseAbs().maxCoeff() / scale);
+        v.real() = s.Vr().col(k);
+        v.imag() = s.Vi().col(k);
+        for (int i = 0; i < n; ++i) r[i] = ((z - b.pole_a[i]) * (z - b.pole_b[i])) * v[i];
+        for (std::size_t c = 0; c < closed.size(); ++c) {
+            r += ((closed[c]->stiffness + z * closed[c]->damping) * rows[c].cwiseProduct(v).sum()) * rows[c];
+        }
+        double rmax = 0.0, vmax = 0.0;
+        for (int i = 0; i < n; ++i) {
+            rmax = std::max(rmax, std::norm(r[i]));
+            vmax = std::max(vmax, std::norm(v[i]));
+        }
+        worst = std::max(worst, std::sqrt(rmax / vmax) / scale);
     }
     for (int probe = 0; probe < 2; ++probe) {
         Eigen::VectorXcd c1(m), c2 = Eigen::VectorXcd::Zero(m);
