@@ -87,7 +87,9 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
     // amp e^(re t) <= skip once t >= ln(amp / skip) / -re; ln x <= e ln 2 for x = mant 2^e, mant < 1,
     // so the exponent of frexp gives a time that is never early.
     for (Mode& md : modes_) {
-        if (md.amp <= skip_) {
+        if (md.re > 0.0) {
+            md.dead = std::numeric_limits<double>::infinity();  // roundoff of an undamped mode: may grow
+        } else if (md.amp <= skip_) {
             md.dead = 0.0;
         } else if (md.re < 0.0) {
             int e = 0;
