@@ -1,5 +1,7 @@
 // Wall time of the default free-impact transient (examples/paper/free_impact_tip.toml, m = 50)
-// through T_p, for the exact and the CVODE solver, with the exact solver's time split.
+// through T_p, for the exact and the CVODE solver, with the exact solver's time split; and the
+// exact transient over the example's whole horizon (150 us) with the support moved inside the beam,
+// as a support-position sweep runs it.
 
 #include <benchmark/benchmark.h>
 
@@ -52,6 +54,31 @@ void BM_ExactThroughTp(benchmark::State& state) {
     report(state, r);
 }
 BENCHMARK(BM_ExactThroughTp)->Arg(0)->Arg(1)->ArgName("history_and_energy")->Unit(benchmark::kMillisecond);
+
+// Exact solver, support at x/l = range(0) / 100, range(1) elements, the example's 150 us horizon,
+// events, peaks and extremes only (as a sweep over support positions needs them).
+void BM_ExactSupportAt(benchmark::State& state) {
+    vi::Case c = vi::read_case_file(std::string(VI_SOURCE_DIR) + "/examples/paper/free_impact_tip.toml");
+    c.supports.at(0).position = static_cast<double>(state.range(0)) / 100.0;
+    c.beam.elements = static_cast<int>(state.range(1));
+    const vi::BuiltProblem b = vi::build_transient_problem(c);
+    vi::ExactOptions o;
+    o.history = false;
+    o.energy = false;
+    vi::TransientResult r;
+    for (auto _ : state) {
+        r = vi::solve_exact(b.problem, o);
+        benchmark::DoNotOptimize(r.episodes.data());
+    }
+    report(state, r);
+}
+BENCHMARK(BM_ExactSupportAt)
+    ->Args({67, 50})
+    ->Args({87, 50})
+    ->Args({67, 10})
+    ->Args({87, 10})
+    ->ArgNames({"x_percent", "elements"})
+    ->Unit(benchmark::kMillisecond);
 
 void BM_CvodeThroughTp(benchmark::State& state) {
     const vi::Case c = example_through_tp();

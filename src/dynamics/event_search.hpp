@@ -1,5 +1,6 @@
 #pragma once
-// Certified search for the first upward zero crossing of an ExpSignal: never steps over a root.
+// Certified search for the first upward zero crossing of an ExpSignal (never steps over a root), and
+// the largest value of a signal over a piece by branch and bound.
 
 #include <limits>
 #include <optional>
@@ -16,24 +17,23 @@ struct CrossingSearch {
 
 // The first tau in (tau0, tau_max] where f turns positive, given f(tau0) <= 0 (a value within
 // roundoff of zero at tau0 counts as zero; then the sign of f' decides). From tau, the next point
-// tau + h is accepted only if f + f' s + B s^2 / 2 < 0 for all s in [0, h], with B a bound of |f''|
-// over the step: f cannot reach zero in between, so no crossing is stepped over.
+// tau + h is accepted only if an upper bound of f over [tau, tau + h] is negative: f cannot reach
+// zero in between, so no crossing is stepped over (signal_scan.hpp: slow modes by Taylor with a
+// bound of |f''|, fast ones by their amplitude, the best of every such split).
 std::optional<double> first_upcrossing(const ExpSignal& f, double tau0, double tau_max, const CrossingSearch& opt,
                                        int* evaluations = nullptr);
 
-}  // namespace vi
-
-namespace vi {
-
-// Where the largest value of f over [0, tau_end] lies, to within abs_tol in value (branch and bound:
-// an interval is dropped once an upper bound of f on it falls below the best value seen).
+// Where the largest value of sign * f over [0, tau_end] lies, to within max(size_tol S, rel_tol |max|)
+// in value, S the signal's size (sum of its amplitudes) (branch and bound: an interval is dropped once
+// an upper bound of sign * f on it falls below the best value seen plus that margin).
 struct SignalMaximum {
     double value = 0.0;
     double tau = 0.0;
 };
 // `floor`: a value already reached elsewhere; parts of the interval that cannot beat it are skipped
-// and, when nothing does, the result is {floor, -1}.
-SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double abs_tol, double h_min,
-                             int* evaluations = nullptr, double floor = -std::numeric_limits<double>::infinity());
+// and, when nothing does, the result is {floor, -1}. sign = -1 finds the minimum of f (as -value).
+SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double size_tol, double rel_tol, double h_min,
+                             int* evaluations = nullptr, double floor = -std::numeric_limits<double>::infinity(),
+                             double sign = 1.0);
 
 }  // namespace vi

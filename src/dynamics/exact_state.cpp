@@ -1,5 +1,6 @@
 #include "dynamics/exact_state.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -34,48 +35,57 @@ void negate(ExpSignal& f) {
 
 // ---------------------------------------------------------------------------------------------
 
-ExactModel::ExactModel(const TransientProblem& p, bool energy) : p_(&p), energy_(energy), base_(base_modes(p)) {
-    phit_m_ = base_.phi.transpose() * p.M;
-}
+ExactModel::ExactModel(const TransientProblem& p, bool energy) : p_(&p), energy_(energy), base_(base_modes(p)) {}
 
 Eigen::VectorXd ExactModel::initial_state(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0) const {
     Eigen::VectorXd x(2 * base_.n);
-    x.head(base_.n) = phit_m_ * q0;
-    x.tail(base_.n) = phit_m_ * v0;
+    x.head(base_.n) = base_.phi.transpose() * (p_->M * q0);
+    x.tail(base_.n) = base_.phi.transpose() * (p_->M * v0);
     return x;
 }
 
 const StateData& ExactModel::state(const std::vector<bool>& active) {
     auto it = cache_.find(active);
     if (it != cache_.end()) return *it->second;
+    const auto t0 = std::chrono::steady_clock::now();
     auto sd = std::make_unique<StateData>();
     sd->modes = decompose_state(base_, *p_, active);
-    const int n = base_.n;
-    const Eigen::MatrixXcd& R = sd->modes.R;
+    const StateModes& md = sd->modes;
+    const int n = base_.n, m = md.size();
+    const Eigen::VectorXcd& lam = md.lambda;
+    sd->weight.resize(m);
+    for (int k = 0; k < m; ++k) sd->weight[k] = md.paired[static_cast<std::size_t>(k)] ? 2.0 : 1.0;
     const int nc = static_cast<int>(p_->contacts.size());
-    sd->contact_v.resize(nc, 2 * n);
-    sd->contact_vel.resize(nc, 2 * n);
+    sd->contact_v.resize(nc, m);
+    sd->contact_vel.resize(nc, m);
     for (int c = 0; c < nc; ++c) {
-        const Eigen::RowVectorXcd row = contact_row(base_, p_->contacts[static_cast<std::size_t>(c)]).transpose().cast<cd>();
-        sd->contact_v.row(c) = row * R.topRows(n);
-        sd->contact_vel.row(c) = row * R.bottomRows(n);
+        const Eigen::VectorXcd v = md.project(contact_row(base_, p_->contacts[static_cast<std::size_t>(c)]));
+        sd->contact_v.row(c) = v.transpose();
+        sd->contact_vel.row(c) = v.cwiseProduct(lam).transpose();
     }
     const int tip = p_->tip_dof >= 0 ? p_->tip_dof : 0;
-    const Eigen::RowVectorXcd tip_row = base_.phi.row(tip).cast<cd>();
-    sd->tip_v = tip_row * R.topRows(n);
-    sd->tip_vel = tip_row * R.bottomRows(n);
-    sd->load_vel.resize(static_cast<Eigen::Index>(p_->loads.size()), 2 * n);
+    const Eigen::VectorXcd tv = md.project(base_.phi.row(tip).transpose());
+    sd->tip_v = tv.transpose();
+    sd->tip_vel = tv.cwiseProduct(lam).transpose();
+    sd->load_vel.resize(static_cast<Eigen::Index>(p_->loads.size()), m);
     for (std::size_t l = 0; l < p_->loads.size(); ++l) {
-        const Eigen::RowVectorXcd row = (base_.phi.transpose() * p_->loads[l].shape).transpose().cast<cd>();
-        sd->load_vel.row(static_cast<Eigen::Index>(l)) = row * R.bottomRows(n);
+        const Eigen::VectorXcd v = md.project(base_.phi.transpose() * p_->loads[l].shape);
+        sd->load_vel.row(static_cast<Eigen::Index>(l)) = v.cwiseProduct(lam).transpose();
     }
     if (energy_) {
-        const Eigen::VectorXcd& lam = sd->modes.lambda;
-        const double scale = lam.cwiseAbs().maxCoeff();
+        sd->full = expand(md);
+        const Eigen::MatrixXcd& R = sd->full.R;
+        const Eigen::VectorXcd& fl = sd->full.lambda;
+        sd->full_contact_vel.resize(nc, 2 * n);
+        for (int c = 0; c < nc; ++c) {
+            const Eigen::RowVectorXcd row = contact_row(base_, p_->contacts[static_cast<std::size_t>(c)]).transpose().cast<cd>();
+            sd->full_contact_vel.row(c) = row * R.bottomRows(n);
+        }
+        const double scale = fl.cwiseAbs().maxCoeff();
         sd->cauchy.resize(2 * n, 2 * n);
         for (int k = 0; k < 2 * n; ++k) {
             for (int l = 0; l < 2 * n; ++l) {
-                const cd mu = lam[k] + lam[l];
+                const cd mu = fl[k] + fl[l];
                 // mu = 0 only pairs an undamped mode with its conjugate; such a mode dissipates nothing.
                 sd->cauchy(k, l) = std::abs(mu) > 1e-14 * scale ? 1.0 / mu : cd(0.0);
             }
@@ -84,9 +94,23 @@ const StateData& ExactModel::state(const std::vector<bool>& active) {
         const Eigen::MatrixXcd rv = R.bottomRows(n);
         sd->rayleigh_w = rv.transpose() * (d.cast<cd>().asDiagonal() * rv);
         sd->rayleigh_wc = sd->rayleigh_w.cwiseProduct(sd->cauchy);
+        // What each mode's term alone could still dissipate per unit squared amplitude (exact_energy).
+        auto tail = [&](int k, double weight) {
+            const double decay = -fl[k].real();
+            return decay > 1e-12 * std::abs(fl[k]) ? weight / (2.0 * decay) : std::numeric_limits<double>::infinity();
+        };
+        sd->rayleigh_tail.resize(static_cast<std::size_t>(2 * n));
+        for (int k = 0; k < 2 * n; ++k) sd->rayleigh_tail[static_cast<std::size_t>(k)] = tail(k, d.dot(rv.col(k).cwiseAbs2()));
+        sd->contact_tail.assign(static_cast<std::size_t>(nc), std::vector<double>(static_cast<std::size_t>(2 * n)));
+        for (int c = 0; c < nc; ++c) {
+            for (int k = 0; k < 2 * n; ++k) {
+                sd->contact_tail[static_cast<std::size_t>(c)][static_cast<std::size_t>(k)] = tail(k, std::norm(sd->full_contact_vel(c, k)));
+            }
+        }
     }
     auto [pos, inserted] = cache_.emplace(active, std::move(sd));
     (void)inserted;
+    decomposition_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return *pos->second;
 }
 
@@ -103,15 +127,75 @@ PieceSolution::PieceSolution(const TransientProblem& p, const BaseModes& b, cons
                              const std::vector<bool>& active, const Eigen::VectorXd& x0, double t0, double t1,
                              bool energy)
     : p_(&p), b_(&b), s_(&s), active_(active) {
+    particular_solution(x0, t0, t1, energy);
+    const std::size_t nc = p.contacts.size();
+    for (std::size_t c = 0; c < nc; ++c) {
+        const ContactElement& ce = p.contacts[c];
+        const Eigen::Index ci = static_cast<Eigen::Index>(c);
+        const ExpSignal v = channel(s.contact_v.row(ci), 1.0, 0.0);
+        ExpSignal vel = channel(s.contact_vel.row(ci), 1.0, 0.0);
+        // d = sign (surface - v); F = Kc d + Cc dd/dt = Kc d - sign Cc v'.
+        ExpSignal d = channel(s.contact_v.row(ci), -ce.sign, ce.sign * ce.surface);
+        ExpSignal F = channel(s.contact_v.row(ci), -ce.sign * ce.stiffness, ce.sign * ce.stiffness * ce.surface);
+        const ExpSignal fv = channel(s.contact_vel.row(ci), -ce.sign * ce.damping, 0.0);
+        F.A += fv.A;
+        F.terms.insert(F.terms.end(), fv.terms.begin(), fv.terms.end());
+        ExpSignal ev = active[c] ? F : d;
+        if (active[c]) negate(ev);
+        // Open but penetrated beyond roundoff: only a positive F can close it again.
+        const double d0 = d.value(0.0);
+        const bool release = !active[c] && d0 > 64.0 * std::numeric_limits<double>::epsilon() * d.bound(0.0, 0.0, 0);
+        if (release) ev = F;
+        ExpSignal rel = d;
+        negate(rel);
+        release_.push_back(release);
+        release_fn_.push_back(std::move(rel));
+        v_.push_back(v);
+        vel_.push_back(std::move(vel));
+        pen_.push_back(std::move(d));
+        force_.push_back(std::move(F));
+        event_.push_back(std::move(ev));
+    }
+    tip_v_ = channel(s.tip_v, 1.0, 0.0);
+    tip_vel_ = channel(s.tip_vel, 1.0, 0.0);
+    if (energy) {
+        const double tm = 0.5 * (t0 + t1);
+        for (std::size_t l = 0; l < p.loads.size(); ++l) {
+            load_vel_.push_back(channel(s.load_vel.row(static_cast<Eigen::Index>(l)), p.loads[l].amplitude, 0.0));
+            // g(t0 + tau) as a terms-only signal.
+            ExpSignal g;
+            g.lambda = &s.modes.lambda;
+            const TimeFunction& tf = p.loads[l].time;
+            if (tf.kind == TimeFunction::Kind::harmonic) {
+                const double w = 2.0 * std::numbers::pi * tf.frequency_hz;
+                const cd k1 = std::exp(cd(0.0, w * t0 + tf.phase)) / cd(0.0, 2.0);
+                g.terms.push_back({k1, cd(0.0, w), 0});
+                g.terms.push_back({-std::conj(k1), cd(0.0, -w), 0});
+                g.terms.push_back({tf.offset, 0.0, 0});
+            } else if (tf.kind == TimeFunction::Kind::table) {
+                const double g1 = t1 > t0 ? (tf(t1) - tf(t0)) / (t1 - t0) : 0.0;
+                g.terms.push_back({tf(tm) - g1 * (tm - t0), 0.0, 0});
+                g.terms.push_back({g1, 0.0, 1});
+            } else {
+                g.terms.push_back({tf(tm), 0.0, 0});
+            }
+            load_time_.push_back(std::move(g));
+        }
+    }
+}
+
+// Forcing in x coordinates: constant part (closed contacts' surfaces and constant loads), ramps, and
+// the exponentials of harmonic loads; per mode k of the state c' = lambda c + G exp(s tau) (tau^p)
+// has a particular solution in closed form. The set of forcing terms is closed under conjugation
+// (the forcing is real), which is what lets the representatives stand for their conjugates.
+void PieceSolution::particular_solution(const Eigen::VectorXd& x0, double t0, double t1, bool energy) {
+    const TransientProblem& p = *p_;
+    const BaseModes& b = *b_;
     const int n = b.n;
-    const Eigen::MatrixXcd& L = s.modes.L;
-    const Eigen::VectorXcd& lam = s.modes.lambda;
-    // Forcing in x coordinates: constant part (closed contacts' surfaces and constant loads), ramps,
-    // and the exponentials of harmonic loads.
     Eigen::VectorXd f_const = Eigen::VectorXd::Zero(2 * n);
     Eigen::VectorXd f_ramp = Eigen::VectorXd::Zero(2 * n);
     for (std::size_t c = 0; c < p.contacts.size(); ++c) {
-        if (!active[c]) continue;
+        if (!active_[c]) continue;
         const ContactElement& ce = p.contacts[c];
         f_const.tail(n) += contact_row(b, ce) * (ce.stiffness * ce.surface);
     }
@@ -153,92 +237,50 @@ PieceSolution::PieceSolution(const TransientProblem& p, const BaseModes& b, cons
     if (f_const.squaredNorm() > 0.0) raw.push_back({f_const.cast<cd>(), cd(0.0), 0});
     if (f_ramp.squaredNorm() > 0.0) raw.push_back({f_ramp.cast<cd>(), cd(0.0), 1});
 
-    // Particular solutions, per mode k of the state: c' = lambda c + G exp(s tau) (tau^p).
-    const double lscale = lam.cwiseAbs().maxCoeff();
-    Eigen::VectorXcd p0 = Eigen::VectorXcd::Zero(2 * n);
-    for (const Raw& r : raw) {
-        const Eigen::VectorXcd G = L * r.F;
-        Eigen::VectorXcd c1(2 * n);
-        for (int k = 0; k < 2 * n; ++k) {
-            const cd gap = r.s - lam[k];
-            if (std::abs(gap) <= 1e-13 * lscale) {
-                throw std::runtime_error("transient: a load excites an undamped mode exactly at resonance");
+    // c1 = G / (s - lambda) (power 0), or c1 tau + c0 with c0 = -c1 / (s - lambda) (power 1).
+    auto solve = [&](const Eigen::VectorXcd& lam, auto&& left, std::vector<Term>& terms) {
+        const double lscale = lam.cwiseAbs().maxCoeff();
+        Eigen::VectorXcd p0 = Eigen::VectorXcd::Zero(lam.size());
+        for (const Raw& r : raw) {
+            const Eigen::VectorXcd G = left(r.F);
+            Eigen::VectorXcd c1(lam.size());
+            for (Eigen::Index k = 0; k < lam.size(); ++k) {
+                const cd gap = r.s - lam[k];
+                if (std::abs(gap) <= 1e-13 * lscale) {
+                    throw std::runtime_error("transient: a load excites an undamped mode exactly at resonance");
+                }
+                c1[k] = G[k] / gap;
             }
-            c1[k] = G[k] / gap;
-        }
-        if (r.power == 0) {
-            terms_.push_back({c1, r.s, 0});
-            p0 += c1;
-        } else {
-            Eigen::VectorXcd c0(2 * n);
-            for (int k = 0; k < 2 * n; ++k) c0[k] = -c1[k] / (r.s - lam[k]);
-            terms_.push_back({c1, r.s, 1});
-            terms_.push_back({c0, r.s, 0});
-            p0 += c0;
-        }
-    }
-    a_ = L * x0.cast<cd>() - p0;
-
-    const std::size_t nc = p.contacts.size();
-    for (std::size_t c = 0; c < nc; ++c) {
-        const ContactElement& ce = p.contacts[c];
-        const ExpSignal v = channel(s.contact_v.row(static_cast<Eigen::Index>(c)), 1.0, 0.0);
-        ExpSignal vel = channel(s.contact_vel.row(static_cast<Eigen::Index>(c)), 1.0, 0.0);
-        // d = sign (surface - v); F = Kc d + Cc dd/dt = Kc d - sign Cc v'.
-        ExpSignal d = channel(s.contact_v.row(static_cast<Eigen::Index>(c)), -ce.sign, ce.sign * ce.surface);
-        ExpSignal F = channel(s.contact_v.row(static_cast<Eigen::Index>(c)), -ce.sign * ce.stiffness,
-                              ce.sign * ce.stiffness * ce.surface);
-        const ExpSignal fv = channel(s.contact_vel.row(static_cast<Eigen::Index>(c)), -ce.sign * ce.damping, 0.0);
-        F.A += fv.A;
-        F.terms.insert(F.terms.end(), fv.terms.begin(), fv.terms.end());
-        ExpSignal ev = active[c] ? F : d;
-        if (active[c]) negate(ev);
-        // Open but penetrated beyond roundoff: only a positive F can close it again.
-        const double d0 = d.value(0.0);
-        const bool release = !active[c] && d0 > 64.0 * std::numeric_limits<double>::epsilon() * d.bound(0.0, 0.0, 0);
-        if (release) ev = F;
-        ExpSignal rel = d;
-        negate(rel);
-        release_.push_back(release);
-        release_fn_.push_back(std::move(rel));
-        v_.push_back(v);
-        vel_.push_back(std::move(vel));
-        pen_.push_back(std::move(d));
-        force_.push_back(std::move(F));
-        event_.push_back(std::move(ev));
-    }
-    tip_v_ = channel(s.tip_v, 1.0, 0.0);
-    tip_vel_ = channel(s.tip_vel, 1.0, 0.0);
-    if (energy) {
-        for (std::size_t l = 0; l < p.loads.size(); ++l) {
-            load_vel_.push_back(channel(s.load_vel.row(static_cast<Eigen::Index>(l)), p.loads[l].amplitude, 0.0));
-            // g(t0 + tau) as a terms-only signal.
-            ExpSignal g;
-            g.lambda = &s.modes.lambda;
-            const TimeFunction& tf = p.loads[l].time;
-            if (tf.kind == TimeFunction::Kind::harmonic) {
-                const double w = 2.0 * std::numbers::pi * tf.frequency_hz;
-                const cd k1 = std::exp(cd(0.0, w * t0 + tf.phase)) / cd(0.0, 2.0);
-                g.terms.push_back({k1, cd(0.0, w), 0});
-                g.terms.push_back({-std::conj(k1), cd(0.0, -w), 0});
-                g.terms.push_back({tf.offset, 0.0, 0});
-            } else if (tf.kind == TimeFunction::Kind::table) {
-                const double g1 = t1 > t0 ? (tf(t1) - tf(t0)) / (t1 - t0) : 0.0;
-                g.terms.push_back({tf(tm) - g1 * (tm - t0), 0.0, 0});
-                g.terms.push_back({g1, 0.0, 1});
+            if (r.power == 0) {
+                terms.push_back({c1, r.s, 0});
+                p0 += c1;
             } else {
-                g.terms.push_back({tf(tm), 0.0, 0});
+                const Eigen::VectorXcd c0 = -c1.cwiseQuotient((Eigen::VectorXcd::Constant(lam.size(), r.s) - lam));
+                terms.push_back({c1, r.s, 1});
+                terms.push_back({c0, r.s, 0});
+                p0 += c0;
             }
-            load_time_.push_back(std::move(g));
         }
+        return p0;
+    };
+    const StateModes& md = s_->modes;
+    const Eigen::VectorXcd p0 = solve(md.lambda, [&](const Eigen::VectorXcd& F) { return md.coordinates(F); }, terms_);
+    a_ = md.coordinates(x0) - p0;
+    if (energy) {
+        const FullModes& full = s_->full;
+        const Eigen::VectorXcd pf = solve(full.lambda, [&](const Eigen::VectorXcd& F) { return Eigen::VectorXcd(full.L * F); }, terms_full_);
+        a_full_ = full.L * x0.cast<cd>() - pf;
     }
 }
 
+// A real output row^T eta (or eta_dot) per representative; a paired mode carries its conjugate's
+// share too: Re(z) + Re(conj z) = 2 Re(z).
 ExpSignal PieceSolution::channel(const Eigen::RowVectorXcd& row, double scale, double offset) const {
     ExpSignal f;
     f.lambda = &s_->modes.lambda;
-    f.A = scale * row.transpose().cwiseProduct(a_);
-    for (const Term& t : terms_) f.terms.push_back({scale * (row * t.C)(0), t.s, t.power});
+    const Eigen::VectorXcd wrow = scale * row.transpose().cwiseProduct(s_->weight.cast<cd>());
+    f.A = wrow.cwiseProduct(a_);
+    for (const Term& t : terms_) f.terms.push_back({wrow.cwiseProduct(t.C).sum(), t.s, t.power});
     if (offset != 0.0) f.terms.push_back({offset, 0.0, 0});
     return f;
 }
@@ -246,95 +288,33 @@ ExpSignal PieceSolution::channel(const Eigen::RowVectorXcd& row, double scale, d
 Eigen::VectorXcd PieceSolution::exponentials(double tau) const {
     const Eigen::VectorXcd& lam = s_->modes.lambda;
     Eigen::VectorXcd e(lam.size());
-    for (Eigen::Index k = 0; k < e.size(); ++k) e[k] = std::exp(lam[k] * tau);
+    for (Eigen::Index k = 0; k < e.size(); ++k) e[k] = fast_exp(lam[k], tau);
     return e;
+}
+
+Eigen::VectorXcd PieceSolution::full_exponentials(const Eigen::VectorXcd& e) const {
+    // The conjugate modes follow the representatives in expand()'s order: their exponentials are
+    // the conjugates.
+    const std::vector<bool>& paired = s_->modes.paired;
+    Eigen::VectorXcd f(s_->full.lambda.size());
+    f.head(e.size()) = e;
+    Eigen::Index j = e.size();
+    for (Eigen::Index k = 0; k < e.size(); ++k) {
+        if (paired[static_cast<std::size_t>(k)]) f[j++] = std::conj(e[k]);
+    }
+    return f;
 }
 
 Eigen::VectorXcd PieceSolution::coords_at(double tau, const Eigen::VectorXcd& e) const {
     Eigen::VectorXcd c = a_.cwiseProduct(e);
-    for (const Term& t : terms_) c += t.C * (std::exp(t.s * tau) * (t.power == 1 ? tau : 1.0));
+    for (const Term& t : terms_) c += t.C * (fast_exp(t.s, tau) * (t.power == 1 ? tau : 1.0));
     return c;
 }
 
-Eigen::VectorXd PieceSolution::state_at(double tau) const { return state_at(tau, exponentials(tau)); }
+Eigen::VectorXd PieceSolution::state_at(double tau) const { return s_->modes.state(coords_at(tau, exponentials(tau))); }
 
 Eigen::VectorXd PieceSolution::state_at(double tau, const Eigen::VectorXcd& e) const {
-    return (s_->modes.R * coords_at(tau, e)).real();
-}
-
-// Integral over [0, tau] of c^T W c, c = a e^(lambda tau) + sum_m C_m tau^p e^(s tau), given
-// W (for the particular terms), W .* cauchy, and the constant a^T (W .* cauchy) a of the piece.
-double PieceSolution::quadratic_integral(const Eigen::MatrixXcd& w, const Eigen::MatrixXcd& wc, cd a_wc_a,
-                                         double tau, const Eigen::VectorXcd& e) const {
-    const Eigen::VectorXcd& lam = s_->modes.lambda;
-    const Eigen::VectorXcd ae = a_.cwiseProduct(e);
-    cd sum = (ae.transpose() * wc * ae)(0) - a_wc_a;
-    for (const Term& t : terms_) {
-        const Eigen::VectorXcd wC = w * t.C;
-        for (Eigen::Index k = 0; k < a_.size(); ++k) sum += 2.0 * a_[k] * wC[k] * exp_moment(lam[k] + t.s, t.power, tau);
-        for (const Term& u : terms_) sum += (t.C.transpose() * w * u.C)(0) * exp_moment(t.s + u.s, t.power + u.power, tau);
-    }
-    return sum.real();
-}
-
-// The same for a rank-one W = kappa g g^T (a contact damper): no n x n matrix is formed.
-double PieceSolution::rank_one_integral(const Eigen::RowVectorXcd& g, double kappa, cd alpha_c_alpha, double tau,
-                                        const Eigen::VectorXcd& e) const {
-    const Eigen::VectorXcd& lam = s_->modes.lambda;
-    const Eigen::VectorXcd alpha_e = g.transpose().cwiseProduct(a_).cwiseProduct(e);
-    cd sum = (alpha_e.transpose() * s_->cauchy * alpha_e)(0) - alpha_c_alpha;
-    for (const Term& t : terms_) {
-        const cd gC = (g * t.C)(0);
-        for (Eigen::Index k = 0; k < a_.size(); ++k) sum += 2.0 * g[k] * a_[k] * gC * exp_moment(lam[k] + t.s, t.power, tau);
-        for (const Term& u : terms_) sum += gC * (g * u.C)(0) * exp_moment(t.s + u.s, t.power + u.power, tau);
-    }
-    return kappa * sum.real();
-}
-
-void PieceSolution::prepare_energy() const {
-    if (energy_ready_) return;
-    a_wc_a_ = (a_.transpose() * s_->rayleigh_wc * a_)(0);
-    alpha_c_alpha_.assign(p_->contacts.size(), cd(0.0));
-    for (std::size_t c = 0; c < p_->contacts.size(); ++c) {
-        if (!active_[c] || p_->contacts[c].damping == 0.0) continue;
-        const Eigen::VectorXcd alpha = s_->contact_vel.row(static_cast<Eigen::Index>(c)).transpose().cwiseProduct(a_);
-        alpha_c_alpha_[c] = (alpha.transpose() * s_->cauchy * alpha)(0);
-    }
-    energy_ready_ = true;
-}
-
-void PieceSolution::accumulate_dissipation(double tau, EnergyLedger& e) const {
-    accumulate_dissipation(tau, exponentials(tau), e);
-}
-
-void PieceSolution::accumulate_dissipation(double tau, const Eigen::VectorXcd& ex, EnergyLedger& e) const {
-    if (tau <= 0.0) return;
-    prepare_energy();
-    e.rayleigh_dissipated += quadratic_integral(s_->rayleigh_w, s_->rayleigh_wc, a_wc_a_, tau, ex);
-    for (std::size_t c = 0; c < p_->contacts.size(); ++c) {
-        if (!active_[c] || p_->contacts[c].damping == 0.0) continue;
-        e.contact_dissipated += rank_one_integral(s_->contact_vel.row(static_cast<Eigen::Index>(c)),
-                                                  p_->contacts[c].damping, alpha_c_alpha_[c], tau, ex);
-    }
-    for (std::size_t l = 0; l < load_vel_.size(); ++l) e.external_work += product_integral(load_vel_[l], load_time_[l], tau);
-}
-
-EnergyLedger PieceSolution::energy_at(double tau, const EnergyLedger& start) const {
-    EnergyLedger e = start;
-    const Eigen::VectorXcd ex = exponentials(tau);
-    accumulate_dissipation(tau, ex, e);
-    const int n = b_->n;
-    const Eigen::VectorXd x = state_at(tau, ex);
-    e.kinetic = 0.5 * x.tail(n).squaredNorm();
-    e.strain = 0.5 * x.head(n).cwiseProduct(b_->omega).squaredNorm();
-    e.contact_spring = 0.0;
-    for (std::size_t c = 0; c < p_->contacts.size(); ++c) {
-        if (!active_[c]) continue;
-        const ContactElement& ce = p_->contacts[c];
-        const double d = ce.sign * (ce.surface - b_->phi.row(ce.dof).dot(x.head(n)));
-        e.contact_spring += 0.5 * ce.stiffness * d * d;
-    }
-    return e;
+    return s_->modes.state(coords_at(tau, e));
 }
 
 void PieceSolution::sample(double tau, double t_abs, const std::vector<bool>& active, TimeHistory& h, bool energy,
@@ -345,15 +325,17 @@ void PieceSolution::sample(double tau, double t_abs, const std::vector<bool>& ac
         h.contact_velocity.resize(nc);
         h.contact_force.resize(nc);
     }
+    // One set of exponentials serves every channel, the state and the energy terms.
+    const Eigen::VectorXcd e = exponentials(tau);
     h.t.push_back(t_abs);
-    h.tip_v.push_back(tip_v_.value(tau));
-    h.tip_velocity.push_back(tip_vel_.value(tau));
+    h.tip_v.push_back(tip_v_.value(tau, e));
+    h.tip_velocity.push_back(tip_vel_.value(tau, e));
     for (std::size_t c = 0; c < nc; ++c) {
-        h.contact_v[c].push_back(v_[c].value(tau));
-        h.contact_velocity[c].push_back(vel_[c].value(tau));
-        h.contact_force[c].push_back(active[c] ? force_[c].value(tau) : 0.0);
+        h.contact_v[c].push_back(v_[c].value(tau, e));
+        h.contact_velocity[c].push_back(vel_[c].value(tau, e));
+        h.contact_force[c].push_back(active[c] ? force_[c].value(tau, e) : 0.0);
     }
-    if (energy) h.energy.push_back(energy_at(tau, start));
+    if (energy) h.energy.push_back(energy_at(tau, start, e));
 }
 
 }  // namespace vi

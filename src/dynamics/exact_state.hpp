@@ -13,16 +13,26 @@
 
 namespace vi {
 
-// Per contact state: its decomposition and everything derived from it once.
+// Per contact state: its decomposition and everything derived from it once. Outputs are read per
+// representative mode (m of them); the energy ledger works on all 2n modes written out.
 struct StateData {
     StateModes modes;
-    Eigen::MatrixXcd contact_v;     // nc x 2n: v at each contact point, as rows times R
-    Eigen::MatrixXcd contact_vel;   // nc x 2n
+    Eigen::VectorXd weight;         // 2 for a mode standing for a conjugate pair, else 1
+    Eigen::MatrixXcd contact_v;     // nc x m: v at each contact point per mode
+    Eigen::MatrixXcd contact_vel;   // nc x m
     Eigen::RowVectorXcd tip_v, tip_vel;
-    Eigen::MatrixXcd load_vel;      // loads x 2n: shape^T q_dot rows times R
+    Eigen::MatrixXcd load_vel;      // loads x m: shape^T q_dot per mode
+    // Energy ledger only (2n modes):
+    FullModes full;
+    Eigen::MatrixXcd full_contact_vel;  // nc x 2n
     Eigen::MatrixXcd cauchy;        // 1 / (lambda_k + lambda_l), 0 where that sum vanishes
     Eigen::MatrixXcd rayleigh_w;    // Rv^T diag(2 zeta omega) Rv
     Eigen::MatrixXcd rayleigh_wc;   // rayleigh_w .* cauchy
+    // Per mode, the dissipation its term alone could still do from a sample on, per unit squared
+    // amplitude: |Rv_k|_D^2 / (2 |Re lambda_k|), and |g_k|^2 / (2 |Re lambda_k|) for each contact's
+    // velocity row g (infinite for an undamped mode).
+    std::vector<double> rayleigh_tail;
+    std::vector<std::vector<double>> contact_tail;
 };
 
 // The solution from x0 at t0 in one state with the loads of [t0, t1]: c(tau) = a exp(lambda tau) + P(tau).
@@ -56,29 +66,39 @@ private:
         int power;
     };
     ExpSignal channel(const Eigen::RowVectorXcd& row, double scale, double offset) const;
-    [[nodiscard]] Eigen::VectorXcd exponentials(double tau) const;
+    [[nodiscard]] Eigen::VectorXcd exponentials(double tau) const;  // representatives
+    // All 2n modes' exponentials from the representatives' (the conjugates are conjugate).
+    [[nodiscard]] Eigen::VectorXcd full_exponentials(const Eigen::VectorXcd& e) const;
     [[nodiscard]] Eigen::VectorXcd coords_at(double tau, const Eigen::VectorXcd& e) const;
     [[nodiscard]] Eigen::VectorXd state_at(double tau, const Eigen::VectorXcd& e) const;
-    [[nodiscard]] double quadratic_integral(const Eigen::MatrixXcd& w, const Eigen::MatrixXcd& wc, cd a_wc_a, double tau,
-                                            const Eigen::VectorXcd& e) const;
-    [[nodiscard]] double rank_one_integral(const Eigen::RowVectorXcd& g, double kappa, cd alpha_c_alpha, double tau,
-                                           const Eigen::VectorXcd& e) const;
+    // With e the representatives' exponentials at tau:
+    [[nodiscard]] EnergyLedger energy_at(double tau, const EnergyLedger& start, const Eigen::VectorXcd& e) const;
     void accumulate_dissipation(double tau, const Eigen::VectorXcd& e, EnergyLedger& ledger) const;
+    // Integral over [0, tau] of c^T W c for the Rayleigh W, and of kappa (g^T c)^2 for a contact damper.
+    [[nodiscard]] double rayleigh_integral(double tau, const Eigen::VectorXcd& ef) const;
+    [[nodiscard]] double damper_integral(std::size_t c, double tau, const Eigen::VectorXcd& ef) const;
     void prepare_energy() const;  // the piece's constant parts of the dissipation integrals
+
+    void particular_solution(const Eigen::VectorXd& x0, double t0, double t1, bool energy);
 
     const TransientProblem* p_;
     const BaseModes* b_;
     const StateData* s_;
     std::vector<bool> active_;
-    Eigen::VectorXcd a_;
-    std::vector<Term> terms_;
+    Eigen::VectorXcd a_;          // homogeneous amplitudes of the representatives
+    std::vector<Term> terms_;     // particular terms of the representatives
+    Eigen::VectorXcd a_full_;     // the same over all 2n modes (energy ledger only)
+    std::vector<Term> terms_full_;
     std::vector<ExpSignal> event_, force_, pen_, v_, vel_, release_fn_;
     std::vector<bool> release_;
     ExpSignal tip_v_, tip_vel_;
     std::vector<ExpSignal> load_vel_, load_time_;
     mutable bool energy_ready_ = false;
-    mutable cd a_wc_a_;
-    mutable std::vector<cd> alpha_c_alpha_;
+    mutable cd a_wc_a_;                        // a^T (W .* cauchy) a
+    mutable std::vector<Eigen::VectorXcd> wC_; // W C_m per particular term
+    mutable Eigen::MatrixXcd CwC_;             // C_m^T W C_l
+    mutable std::vector<cd> alpha_c_alpha_;    // per contact: alpha^T cauchy alpha, alpha = g .* a
+    mutable std::vector<std::vector<cd>> gC_;  // per contact: g^T C_m
 };
 
 // The model shared by all pieces: base modes and a cache of decomposed contact states.
@@ -91,15 +111,17 @@ public:
     // Builds the piece (decomposing its state on first use); valid until the next call.
     const PieceSolution& piece(const std::vector<bool>& active, const Eigen::VectorXd& x0, double t0, double t1);
     [[nodiscard]] int decompositions() const { return static_cast<int>(cache_.size()); }
+    // Wall time spent decomposing states and deriving their per-state data [s].
+    [[nodiscard]] double decomposition_seconds() const { return decomposition_s_; }
 
 private:
     const StateData& state(const std::vector<bool>& active);
     const TransientProblem* p_;
     bool energy_;
     BaseModes base_;
-    Eigen::MatrixXd phit_m_;
     std::map<std::vector<bool>, std::unique_ptr<StateData>> cache_;
     std::unique_ptr<PieceSolution> piece_;
+    double decomposition_s_ = 0.0;
 };
 
 // f' as a signal of the same piece.

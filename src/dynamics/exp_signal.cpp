@@ -4,23 +4,20 @@
 #include <cmath>
 
 namespace vi {
-namespace {
 
 cd term_derivative(const ExpTerm& t, double tau, int d) {
-    const cd e = std::exp(t.s * tau);
+    const cd e = fast_exp(t.s, tau);
     if (t.power == 0) return t.coef * std::pow(t.s, d) * e;
     // d^d/dtau^d (tau e^{s tau}) = (s^d tau + d s^(d-1)) e^{s tau}
     const cd lower = d == 0 ? cd(0.0) : static_cast<double>(d) * std::pow(t.s, d - 1);
     return t.coef * (std::pow(t.s, d) * tau + lower) * e;
 }
 
-}  // namespace
-
 std::pair<double, double> ExpSignal::value_and_slope(double tau) const {
     cd v = 0.0, s = 0.0;
     for (Eigen::Index k = 0; k < A.size(); ++k) {
         const cd l = (*lambda)[k];
-        const cd f = A[k] * std::exp(l * tau);
+        const cd f = A[k] * fast_exp(l, tau);
         v += f;
         s += f * l;
     }
@@ -31,11 +28,17 @@ std::pair<double, double> ExpSignal::value_and_slope(double tau) const {
     return {v.real(), s.real()};
 }
 
+double ExpSignal::value(double tau, const Eigen::VectorXcd& e) const {
+    double v = A.cwiseProduct(e).sum().real();
+    for (const ExpTerm& t : terms) v += term_derivative(t, tau, 0).real();
+    return v;
+}
+
 double ExpSignal::derivative(double tau, int d) const {
     cd sum = 0.0;
     for (Eigen::Index k = 0; k < A.size(); ++k) {
         const cd l = (*lambda)[k];
-        cd f = A[k] * std::exp(l * tau);
+        cd f = A[k] * fast_exp(l, tau);
         for (int i = 0; i < d; ++i) f *= l;
         sum += f;
     }
@@ -48,13 +51,15 @@ double ExpSignal::bound(double tau, double h, int d) const {
     for (Eigen::Index k = 0; k < A.size(); ++k) {
         const cd l = (*lambda)[k];
         // max of exp(Re l t) over [tau, tau + h]: at tau for a decaying mode.
-        const double growth = std::exp(l.real() * (l.real() <= 0.0 ? tau : tau + h));
+        const double x = l.real() * (l.real() <= 0.0 ? tau : tau + h);
+        // Below exp(-707) the term is under 1e-307 of its amplitude: bounded by that, no libm slow path.
+        const double growth = x < -707.0 ? 1e-307 : std::exp(x);
         const double mag2 = std::norm(l);
         double m = 1.0;
         if (d == 1) m = std::sqrt(mag2);
         if (d == 2) m = mag2;
         if (d >= 3) m = std::pow(mag2, 0.5 * d);
-        b += std::abs(A[k]) * m * growth;
+        b += std::sqrt(std::norm(A[k])) * m * growth;
     }
     for (const ExpTerm& t : terms) {
         const double growth = std::max(std::exp(t.s.real() * tau), std::exp(t.s.real() * (tau + h)));
@@ -66,7 +71,9 @@ double ExpSignal::bound(double tau, double h, int d) const {
     return b;
 }
 
-cd exp_moment(cd mu, int p, double tau) {
+cd exp_moment(cd mu, int p, double tau) { return exp_moment(mu, p, tau, fast_exp(mu, tau)); }
+
+cd exp_moment(cd mu, int p, double tau, cd e) {
     const cd x = mu * tau;
     if (std::abs(x) < 0.1) {
         // Series: tau^(p+1) sum_n x^n / (n! (n + p + 1)).
@@ -77,7 +84,6 @@ cd exp_moment(cd mu, int p, double tau) {
         }
         return sum * std::pow(tau, p + 1);
     }
-    const cd e = std::exp(x);
     const cd i0 = (e - 1.0) / mu;
     if (p == 0) return i0;
     const cd i1 = (tau * e - i0) / mu;
