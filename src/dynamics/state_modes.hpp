@@ -27,10 +27,6 @@ struct BaseModes {
 // zeta is moved off 1 by this much there (a relative change of the damping of that mode only).
 inline constexpr double kCriticalDampingGap = 1e-7;
 
-// Real poles closer than this (relative) in a chain are merged when the exact rank-one decomposition
-// of a contact state fails its check (see decompose_state).
-inline constexpr double kPoleMergeGap = 1e-4;
-
 // Solves the undamped eigenproblem of the problem's (K, M) and adds the Rayleigh ratios.
 BaseModes base_modes(const TransientProblem& p);
 
