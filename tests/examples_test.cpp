@@ -7,12 +7,12 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <regex>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "support/run_command.hpp"
+#include "support/text_checks.hpp"
 
 namespace vi {
 namespace {
@@ -40,8 +40,7 @@ std::vector<fs::path> example_files() {
 
 // A case sets a horizon when a line (not a comment) assigns the key `horizon`.
 bool sets_horizon(const std::string& text) {
-    static const std::regex key(R"((^|\n)[ \t]*horizon[ \t]*=)");
-    return std::regex_search(text, key);
+    return test::assigns_key(text, "horizon");
 }
 
 TEST(Examples, EveryCaseFileRuns) {
