@@ -51,7 +51,7 @@ struct Candidate {
 // (Loewner; Gu & Eisenstat 1994): the roots are then exact for this rank-one problem, L R = I holds
 // to roundoff, and the right vectors (which only need u) stay those of the original problem. How far
 // the residues moved is the decomposition's backward error, and is checked.
-bool rank_one_modes(const BaseModes& b, const ContactElement& ce, StateModes& s) {
+bool rank_one_modes(const BaseModes& b, const ContactElement& ce, LeftRows left, StateModes& s) {
     const int n = b.n;
     const Eigen::VectorXd phi = b.phi.row(ce.dof).transpose();
     const double kc = ce.stiffness, cc = ce.damping;
@@ -151,19 +151,40 @@ bool rank_one_modes(const BaseModes& b, const ContactElement& ce, StateModes& s)
             put_l(n + i, k, -1.0 / (c.partner - z));
             continue;
         }
-        cd N = 0.0;
-        for (std::size_t j = 0; j < np; ++j) {
-            d[j] = 1.0 / (z - pall[j]);
-            N += rho_hat[j] * d[j] * d[j];
-        }
-        if (!(std::abs(N) > 0.0) || !std::isfinite(std::abs(N))) return false;
-        const cd inv_n = 1.0 / N;
+        for (std::size_t j = 0; j < np; ++j) d[j] = 1.0 / (z - pall[j]);
         for (int i = 0; i < n; ++i) {
             if (is_coupled[static_cast<std::size_t>(i)]) continue;
             put_v(i, k, 0.0);
             put_l(i, k, 0.0);
             put_l(n + i, k, 0.0);
         }
+        if (left == LeftRows::direct) {
+            // y^T = w^T (z - A0)^-1 in x = [eta; eta_dot]: per mode (kc (z + D) - cc Omega^2, kc + cc z)
+            // phi / Q(z), Q = (z - a)(z - b), normalised by y^T r. Formed directly, not as l L0 with
+            // L0's rows ~1/(b - a): that product cancels by |z| / |b - a|, which a contact root far
+            // above a slow free pole (a single mass on a soft spring: 1e7) turns into lost digits.
+            cd N = 0.0;
+            for (std::size_t j = 0; j < modes.size(); ++j) {
+                const SecularMode& md = modes[j];
+                const cd q = d[2 * j] * d[2 * j + 1];
+                N += md.s * (kc * (2.0 * z + md.c) + cc * (z * z - md.k)) * q * q;
+            }
+            if (!(std::abs(N) > 0.0) || !std::isfinite(std::abs(N))) return false;
+            const cd inv_n = 1.0 / N;
+            for (std::size_t j = 0; j < modes.size(); ++j) {
+                const int i = coupled[j];
+                const SecularMode& md = modes[j];
+                const cd v = phi[i] * d[2 * j] * d[2 * j + 1];
+                put_v(i, k, v);
+                put_l(i, k, (kc * (z + md.c) - cc * md.k) * v * inv_n);
+                put_l(n + i, k, (kc + cc * z) * v * inv_n);
+            }
+            continue;
+        }
+        cd N = 0.0;
+        for (std::size_t j = 0; j < np; ++j) N += rho_hat[j] * d[j] * d[j];
+        if (!(std::abs(N) > 0.0) || !std::isfinite(std::abs(N))) return false;
+        const cd inv_n = 1.0 / N;
         for (std::size_t j = 0; j < modes.size(); ++j) {
             const int i = coupled[j];
             const cd ra = rho_hat[2 * j] * d[2 * j], rb = rho_hat[2 * j + 1] * d[2 * j + 1];

@@ -1,6 +1,8 @@
 #include "dynamics/state_modes.hpp"
 
 #include <algorithm>
+#include <optional>
+#include <utility>
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
@@ -15,6 +17,9 @@ namespace {
 // Largest accepted residual of a decomposition (check_residual). With the Loewner residues the fast
 // path reaches ~1e-10 or better on meshes up to m = 200 at any support position.
 constexpr double kResidualLimit = 1e-6;
+// Residual of a one-contact decomposition taken as roundoff: above it the other way of forming the
+// left rows is tried too (decompose_state).
+constexpr double kRoundoffResidual = 1e-13;
 
 // Contact rows: phi_c = Phi row of the contact DOF (the modal participation at the contact point).
 Eigen::VectorXd contact_row(const BaseModes& b, const ContactElement& c) { return b.phi.row(c.dof).transpose(); }
@@ -354,11 +359,31 @@ StateModes decompose_state(const BaseModes& b, const TransientProblem& p, const 
         ok = true;
     } else if (closed == 1) {
         const std::size_t c = static_cast<std::size_t>(std::find(active.begin(), active.end(), true) - active.begin());
-        ok = rank_one_modes(b, p.contacts[c], s);
-        s.method = "rank-one";
+        // Residues recomputed from the roots (Loewner) keep L R = I where the roots crowd (the slow
+        // poles of overdamped modes near -1/beta); left rows formed directly from Kc, Cc avoid the
+        // cancellation of a root far above a slow free pole. The second is tried only when the
+        // first is not already at roundoff, and the better one kept.
+        auto attempt = [&](LeftRows left) {
+            std::optional<StateModes> t(std::in_place);
+            t->active = active;
+            t->damping = s.damping;
+            t->method = "rank-one";
+            if (!rank_one_modes(b, p.contacts[c], left, *t)) return std::optional<StateModes>();
+            t->residual = check_residual(b, p, *t);
+            return t;
+        };
+        std::optional<StateModes> best = attempt(LeftRows::loewner);
+        if (!best || best->residual > kRoundoffResidual) {
+            std::optional<StateModes> other = attempt(LeftRows::direct);
+            if (other && (!best || other->residual < best->residual)) best = std::move(other);
+        }
+        ok = best.has_value();
+        if (ok) s = std::move(*best);
+        ok = ok && s.residual < kResidualLimit;
     }
-    // Every decomposition is verified; a fast one that fails falls back to the dense solve.
-    if (ok) {
+    // Every decomposition is verified (the rank-one one above); a fast one that fails falls back to
+    // the dense solve.
+    if (ok && closed == 0) {
         s.residual = check_residual(b, p, s);
         ok = s.residual < kResidualLimit;
     }
