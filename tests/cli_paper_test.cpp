@@ -16,19 +16,14 @@
 
 #include "analysis/closed_forms.hpp"
 #include "support/run_command.hpp"
+#include "support/test_files.hpp"
 
 namespace vi {
 namespace {
 
+using test::read_text;
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-std::string read_text(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 // A CSV as a header and rows of cells.
 struct Csv {

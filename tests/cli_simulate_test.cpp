@@ -14,23 +14,18 @@
 #include <vector>
 
 #include "support/run_command.hpp"
+#include "support/test_files.hpp"
 #include "support/text_checks.hpp"
 
 namespace vi {
 namespace {
 
+using test::read_text;
 namespace fs = std::filesystem;
 using nlohmann::json;
 using test::run_vibroimpact;
 
 const std::string kExample = "examples/paper/free_impact_tip.toml";
-
-std::string read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 std::vector<std::string> read_lines(const std::string& path) {
     std::ifstream in(path);

@@ -19,26 +19,17 @@
 #include <vector>
 
 #include "support/run_command.hpp"
+#include "support/test_files.hpp"
 
 namespace vi {
 namespace {
 
+using test::read_text;
+using test::write_text;
 namespace fs = std::filesystem;
 using nlohmann::json;
 using test::CommandResult;
 using test::run_vibroimpact;
-
-std::string read_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-void write_text(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-}
 
 std::vector<std::string> lines_of(const std::string& text) {
     std::vector<std::string> lines;

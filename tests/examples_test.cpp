@@ -12,21 +12,16 @@
 #include <vector>
 
 #include "support/run_command.hpp"
+#include "support/test_files.hpp"
 #include "support/text_checks.hpp"
 
 namespace vi {
 namespace {
 
+using test::read_text;
 namespace fs = std::filesystem;
 using nlohmann::json;
 using test::run_vibroimpact;
-
-std::string read_text(const fs::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 // Every .toml under examples/, in a stable order.
 std::vector<fs::path> example_files() {

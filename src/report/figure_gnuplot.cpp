@@ -14,6 +14,7 @@
 #include <stdexcept>
 
 #include "analysis/parallel_for.hpp"
+#include "io/text_file.hpp"
 
 namespace vi {
 namespace {
@@ -25,11 +26,10 @@ bool executable(const fs::path& p) {
     return fs::is_regular_file(p, ec) && access(p.c_str(), X_OK) == 0;
 }
 
+// A file gnuplot wrote; empty when it wrote none (the caller says which).
 std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
+    std::string reason;
+    return file_text(p.string(), reason).value_or(std::string());
 }
 
 void put(const fs::path& p, const std::string& text) {

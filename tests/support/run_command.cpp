@@ -11,17 +11,12 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "support/test_files.hpp"
+
 extern char** environ;
 
 namespace vi::test {
 namespace {
-
-std::string slurp(const std::filesystem::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
 
 // Forks and execs argv with stdout and stderr into dir/stdout and dir/stderr, stdin from /dev/null.
 // Everything the child needs is built before fork, so the child only makes system calls.
@@ -66,8 +61,8 @@ CommandResult reap(pid_t pid, const std::string& dir) {
     waitpid(pid, &status, 0);
     CommandResult r;
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    r.out = slurp(dir + "/stdout");
-    r.err = slurp(dir + "/stderr");
+    r.out = read_text(dir + "/stdout");
+    r.err = read_text(dir + "/stderr");
     return r;
 }
 
