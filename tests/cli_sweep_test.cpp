@@ -203,7 +203,10 @@ TEST_F(SweepCli, FailingPointGetsItsStatusAndTheSweepGoesOn) {
 }
 
 TEST_F(SweepCli, InterruptedSweepResumesWithoutRedoingPoints) {
-    const std::vector<std::string> grid = {"--set", "supports[0].position=0.6:1:300"};
+    // Enough points (each well under a millisecond) that the sweep is still running when SIGINT
+    // arrives, even if this process is descheduled for a while on a loaded machine.
+    const std::size_t total = 2000;
+    const std::vector<std::string> grid = {"--set", "supports[0].position=0.6:1:" + std::to_string(total)};
     const CommandResult ref = run_vibroimpact(sweep(with(grid, {"--threads", "2", "--out", dir_ + "/ref"})));
     ASSERT_EQ(ref.exit_code, 0) << ref.err;
 
@@ -226,7 +229,7 @@ TEST_F(SweepCli, InterruptedSweepResumesWithoutRedoingPoints) {
     EXPECT_FALSE(fs::exists(out + "/sweep.csv"));
     const std::size_t kept = journal_points(journal);
     ASSERT_GE(kept, 1u);
-    ASSERT_LT(kept, 300u) << "the sweep finished before it could be interrupted";
+    ASSERT_LT(kept, total) << "the sweep finished before it could be interrupted";
 
     // Starting over would throw the journal away: refused.
     const std::string before = read_text(journal);
@@ -237,7 +240,7 @@ TEST_F(SweepCli, InterruptedSweepResumesWithoutRedoingPoints) {
 
     // A hard kill may leave half a line: it is dropped and that point computed again.
     const auto first_row = lines_of(before).at(4);
-    write_text(journal, before + "299," + first_row.substr(0, first_row.size() / 2));
+    write_text(journal, before + std::to_string(total - 1) + "," + first_row.substr(0, first_row.size() / 2));
 
     const CommandResult resumed = run_vibroimpact(sweep(with(grid, {"--threads", "2", "--out", out, "--resume"})));
     ASSERT_EQ(resumed.exit_code, 0) << resumed.err;
@@ -245,7 +248,7 @@ TEST_F(SweepCli, InterruptedSweepResumesWithoutRedoingPoints) {
     EXPECT_FALSE(fs::exists(journal));
     const json summary = json::parse(read_text(out + "/sweep.json"));
     EXPECT_EQ(summary["from_journal"], kept);
-    EXPECT_EQ(summary["computed_this_run"], 300 - kept);
+    EXPECT_EQ(summary["computed_this_run"], total - kept);
 }
 
 TEST_F(SweepCli, JournalOfAnotherSweepIsRefused) {
