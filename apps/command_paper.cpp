@@ -14,6 +14,7 @@
 #include "commands.hpp"
 #include "io/input_error.hpp"
 #include "io/output_files.hpp"
+#include "io/units.hpp"
 #include "report/figure_gnuplot.hpp"
 #include "report/paper_figures.hpp"
 #include "report/paper_report.hpp"
@@ -54,6 +55,7 @@ CommandBody add_paper_command(CLI::App& app) {
         int positions = 50;
         int modal_positions = 100;
         int prestress_points = 26;
+        std::string scan_horizon = "500 us";
         std::string examples;
         std::string gnuplot = "gnuplot";
         bool quiet = false;
@@ -73,6 +75,9 @@ CommandBody add_paper_command(CLI::App& app) {
     sub->add_option("--prestress-points", opt->prestress_points, "Prestress values of Fig. 9, evenly over Delta/l in [0, 0.05]")
         ->check(CLI::Range(2, 100000))
         ->capture_default_str();
+    sub->add_option("--scan-horizon", opt->scan_horizon,
+                    "Horizon of the support-position transients (Figs. 4, 5, 10), a time with its unit, e.g. \"300 us\"")
+        ->capture_default_str();
     sub->add_option("--examples", opt->examples,
                     "Read cantilever.toml, free_impact_tip.toml and free_impact_prestress.toml from this folder instead of "
                     "the built-in copies of examples/paper/");
@@ -86,6 +91,13 @@ CommandBody add_paper_command(CLI::App& app) {
         auto progress = [opt, elapsed](const std::string& line) {
             if (!opt->quiet) std::fprintf(stderr, "paper: [%5.1f s] %s\n", elapsed(), line.c_str());
         };
+        double scan_horizon = 0.0;
+        try {
+            scan_horizon = parse_quantity(opt->scan_horizon, Dimension::time);
+        } catch (const std::invalid_argument& e) {
+            throw InputError("--scan-horizon: " + std::string(e.what()));
+        }
+        if (!(scan_horizon > 0.0)) throw InputError("--scan-horizon: must be positive");
         check_output_folder(opt->out);
         const auto gnuplot = find_gnuplot(opt->gnuplot);
         if (!gnuplot) {
@@ -98,6 +110,7 @@ CommandBody add_paper_command(CLI::App& app) {
         so.positions = opt->positions;
         so.modal_positions = opt->modal_positions;
         so.prestress_points = opt->prestress_points;
+        so.position_horizon = scan_horizon;
         so.threads = opt->threads;
         so.progress = progress;
         const PaperStudy study = run_paper_study(so);
@@ -114,6 +127,7 @@ CommandBody add_paper_command(CLI::App& app) {
         if (opt->positions != 50) run.command += " --positions " + std::to_string(opt->positions);
         if (opt->modal_positions != 100) run.command += " --modal-positions " + std::to_string(opt->modal_positions);
         if (opt->prestress_points != 26) run.command += " --prestress-points " + std::to_string(opt->prestress_points);
+        if (opt->scan_horizon != "500 us") run.command += " --scan-horizon '" + opt->scan_horizon + "'";
         if (!opt->examples.empty()) run.command += " --examples " + opt->examples;
         run.figures_s = std::chrono::duration<double>(Clock::now() - f0).count();
         progress("figures drawn (" + std::to_string(figures.size()) + " with gnuplot)");

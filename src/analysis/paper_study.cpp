@@ -99,7 +99,7 @@ PaperStudy run_paper_study(const PaperStudyOptions& options) {
         TransientScan scan;
         scan.elements = m;
         scan.omega1 = first_omega(base);
-        scan.horizon = base.solver.horizon;
+        scan.horizon = options.position_horizon;
         for (double x : positions) {
             TransientPoint pt;
             pt.x = x;
@@ -159,6 +159,7 @@ PaperStudy run_paper_study(const PaperStudyOptions& options) {
             jobs.push_back({scans, [&, s, i] {
                                 Case c = moving;
                                 c.beam.elements = st.position_scans[s].elements;
+                                c.solver.horizon = st.position_scans[s].horizon;
                                 c.supports.front().position = positions[i];
                                 st.position_scans[s].points[i] = run_transient_point(c, positions[i]);
                             }});

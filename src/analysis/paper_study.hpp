@@ -20,6 +20,8 @@ struct PaperStudyOptions {
     PaperCases cases;
     int positions = 50;                // support positions x0/l of the transient scans (Figs. 4, 5, 10)
     double position_min = 0.30;        // ... evenly from here to 1; 0.67, 0.78 and 0.87 are always added
+    double position_horizon = 500e-6;  // horizon of those transients [s] (longer than the Fig. 3 case's:
+                                       // away from the free end the bouncing decays more slowly)
     int modal_positions = 100;         // support positions of the modal scans (Figs. 6-8), (0, 1]
     int prestress_points = 26;         // Delta/l of Fig. 9, evenly over [0, prestress_max]
     double prestress_max = 0.05;

@@ -92,7 +92,7 @@ void what_was_run(ReportDocument& d, const PaperStudy& st, const ReportRun& run)
                     std::to_string(positions.size()) + " positions per mesh: " + std::to_string(o.positions) + " evenly from x0/l = " +
                         num(o.position_min) + " to 1 (step " + num((1.0 - o.position_min) / (o.positions - 1), 3) +
                         ") with 0.67, 0.78, 0.87 added; lift " + num(st.typical.y0 * 1e6) + " um at the free end, zero gap, horizon " +
-                        num(c.solver.horizon * 1e6) + " us"});
+                        num(o.position_horizon * 1e6) + " us"});
     rows.push_back({"supported modes (Figs. 6-8)", std::to_string(st.modal.size()) + " positions x0/l = 1/" + std::to_string(st.modal.size()) +
                                                        " ... 1, support as a pin v(x0) = 0 (the paper's pin joint)"});
     rows.push_back({"prestress (Fig. 9)", std::to_string(st.prestress.points.size()) + " values of Delta/l from 0 to " + num(o.prestress_max) +
