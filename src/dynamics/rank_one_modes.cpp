@@ -31,15 +31,6 @@ cd product_ratio(const std::vector<cd>& num, const std::vector<cd>& den) {
     return cd(std::ldexp(q.real(), en - ed), std::ldexp(q.imag(), en - ed));
 }
 
-// One representative mode of the contact state before sorting: a root of the secular equation or a
-// free pole of an uncoupled mode.
-struct Candidate {
-    cd z;
-    bool paired;
-    int free_mode;  // -1 for a root; else the uncoupled mode
-    cd partner;     // the other pole of that mode
-};
-
 }  // namespace
 
 // Right vectors v = (z^2 + z C + Omega^2)^-1 phi_c on the modes the contact couples (z a root of the
@@ -51,7 +42,7 @@ struct Candidate {
 // (Loewner; Gu & Eisenstat 1994): the roots are then exact for this rank-one problem, L R = I holds
 // to roundoff, and the right vectors (which only need u) stay those of the original problem. How far
 // the residues moved is the decomposition's backward error, and is checked.
-bool rank_one_modes(const BaseModes& b, const ContactElement& ce, LeftRows left, StateModes& s) {
+bool rank_one_roots(const BaseModes& b, const ContactElement& ce, RankOneRoots& r) {
     const int n = b.n;
     const Eigen::VectorXd phi = b.phi.row(ce.dof).transpose();
     const double kc = ce.stiffness, cc = ce.damping;
@@ -67,14 +58,17 @@ bool rank_one_modes(const BaseModes& b, const ContactElement& ce, LeftRows left,
         shift[iu] = std::max(std::abs(residue(i, b.pole_a[i], b.pole_b[i])), std::abs(residue(i, b.pole_b[i], b.pole_a[i])));
         scale = std::max(scale, shift[iu]);
     }
-    std::vector<SecularMode> modes;
-    std::vector<int> coupled;
-    std::vector<Candidate> cand;
+    std::vector<SecularMode>& modes = r.modes;
+    std::vector<int>& coupled = r.coupled;
+    std::vector<RankOneRoots::Candidate>& cand = r.cand;
+    modes.clear();
+    coupled.clear();
+    cand.clear();
     for (int i = 0; i < n; ++i) {
         const cd a = b.pole_a[i], bb = b.pole_b[i];
         const bool visible = std::abs(residue(i, a, bb)) > 1e-14 * std::abs(a) || std::abs(residue(i, bb, a)) > 1e-14 * std::abs(bb);
         if (shift[static_cast<std::size_t>(i)] > 1e-15 * scale && visible) {
-            modes.push_back({phi[i] * phi[i], s.damping[i], b.omega[i] * b.omega[i], a, bb});
+            modes.push_back({phi[i] * phi[i], 2.0 * (b.zeta[i] * b.omega[i]), b.omega[i] * b.omega[i], a, bb});
             coupled.push_back(i);
         } else {
             const bool pair = a.imag() != 0.0;
@@ -86,7 +80,9 @@ bool rank_one_modes(const BaseModes& b, const ContactElement& ce, LeftRows left,
     if (!secular_roots(modes, kc, cc, roots)) return false;
     // Every root and pole written out (conjugates included), in matching order so that each factor
     // of the products stays near 1.
-    std::vector<cd> zall, pall;
+    std::vector<cd> zall;
+    std::vector<cd>& pall = r.pall;
+    pall.clear();
     for (std::size_t k = 0; k < roots.z.size(); ++k) {
         zall.push_back(roots.z[k]);
         if (roots.paired[k]) zall.push_back(std::conj(roots.z[k]));
@@ -97,7 +93,9 @@ bool rank_one_modes(const BaseModes& b, const ContactElement& ce, LeftRows left,
         pall.push_back(md.pole_b);
     }
     const std::size_t np = pall.size();
-    std::vector<cd> rho_hat(np), num(np), den;
+    std::vector<cd>& rho_hat = r.rho_hat;
+    rho_hat.assign(np, 0.0);
+    std::vector<cd> num(np), den;
     double worst = 0.0;
     for (std::size_t j = 0; j < np; ++j) {
         den.clear();
@@ -117,9 +115,21 @@ bool rank_one_modes(const BaseModes& b, const ContactElement& ce, LeftRows left,
     for (std::size_t j = 0; j < np; j += 2) {
         if (pall[j].imag() != 0.0) rho_hat[j + 1] = std::conj(rho_hat[j]);
     }
+    return true;
+}
 
+bool rank_one_modes(const BaseModes& b, const ContactElement& ce, const RankOneRoots& roots, LeftRows left, StateModes& s) {
+    const int n = b.n;
+    const Eigen::VectorXd phi = b.phi.row(ce.dof).transpose();
+    const double kc = ce.stiffness, cc = ce.damping;
+    const std::vector<SecularMode>& modes = roots.modes;
+    const std::vector<int>& coupled = roots.coupled;
+    const std::vector<RankOneRoots::Candidate>& cand = roots.cand;
+    const std::vector<cd>& pall = roots.pall;
+    const std::vector<cd>& rho_hat = roots.rho_hat;
+    const std::size_t np = pall.size();
     std::vector<cd> zs;
-    for (const Candidate& c : cand) zs.push_back(c.z);
+    for (const RankOneRoots::Candidate& c : cand) zs.push_back(c.z);
     const std::vector<int> order = order_by_magnitude(zs);
     const int m = static_cast<int>(cand.size());
     s.lambda.resize(m);
@@ -139,7 +149,7 @@ bool rank_one_modes(const BaseModes& b, const ContactElement& ce, LeftRows left,
     for (const int i : coupled) is_coupled[static_cast<std::size_t>(i)] = true;
     std::vector<cd> d(np);
     for (int k = 0; k < m; ++k) {
-        const Candidate& c = cand[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])];
+        const RankOneRoots::Candidate& c = cand[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])];
         const cd z = c.z;
         s.lambda[k] = z;
         s.paired[static_cast<std::size_t>(k)] = c.paired;

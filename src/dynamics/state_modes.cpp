@@ -363,23 +363,26 @@ StateModes decompose_state(const BaseModes& b, const TransientProblem& p, const 
         // poles of overdamped modes near -1/beta); left rows formed directly from Kc, Cc avoid the
         // cancellation of a root far above a slow free pole. The second is tried only when the
         // first is not already at roundoff, and the better one kept.
+        RankOneRoots roots;
         auto attempt = [&](LeftRows left) {
             std::optional<StateModes> t(std::in_place);
             t->active = active;
             t->damping = s.damping;
             t->method = "rank-one";
-            if (!rank_one_modes(b, p.contacts[c], left, *t)) return std::optional<StateModes>();
+            if (!rank_one_modes(b, p.contacts[c], roots, left, *t)) return std::optional<StateModes>();
             t->residual = check_residual(b, p, *t);
             return t;
         };
-        std::optional<StateModes> best = attempt(LeftRows::loewner);
-        if (!best || best->residual > kRoundoffResidual) {
-            std::optional<StateModes> other = attempt(LeftRows::direct);
-            if (other && (!best || other->residual < best->residual)) best = std::move(other);
+        if (rank_one_roots(b, p.contacts[c], roots)) {
+            std::optional<StateModes> best = attempt(LeftRows::loewner);
+            if (!best || best->residual > kRoundoffResidual) {
+                std::optional<StateModes> other = attempt(LeftRows::direct);
+                if (other && (!best || other->residual < best->residual)) best = std::move(other);
+            }
+            ok = best.has_value();
+            if (ok) s = std::move(*best);
+            ok = ok && s.residual < kResidualLimit;
         }
-        ok = best.has_value();
-        if (ok) s = std::move(*best);
-        ok = ok && s.residual < kResidualLimit;
     }
     // Every decomposition is verified (the rank-one one above); a fast one that fails falls back to
     // the dense solve.
