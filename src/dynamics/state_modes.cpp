@@ -1,9 +1,8 @@
 #include "dynamics/state_modes.hpp"
 
 #include <algorithm>
-#include <optional>
-#include <utility>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <type_traits>
@@ -364,24 +363,26 @@ StateModes decompose_state(const BaseModes& b, const TransientProblem& p, const 
         // cancellation of a root far above a slow free pole. The second is tried only when the
         // first is not already at roundoff, and the better one kept.
         RankOneRoots roots;
-        auto attempt = [&](LeftRows left) {
-            std::optional<StateModes> t(std::in_place);
-            t->active = active;
-            t->damping = s.damping;
-            t->method = "rank-one";
-            if (!rank_one_modes(b, p.contacts[c], roots, left, *t)) return std::optional<StateModes>();
-            t->residual = check_residual(b, p, *t);
-            return t;
-        };
         if (rank_one_roots(b, p.contacts[c], roots)) {
-            std::optional<StateModes> best = attempt(LeftRows::loewner);
-            if (!best || best->residual > kRoundoffResidual) {
-                std::optional<StateModes> other = attempt(LeftRows::direct);
-                if (other && (!best || other->residual < best->residual)) best = std::move(other);
+            s.method = "rank-one";
+            // Both forms fill the same arrays (no second copy of them): the direct rows are tried
+            // in place and the Loewner rows written back when they do not improve the check.
+            auto fill = [&](LeftRows left) {
+                return rank_one_modes(b, p.contacts[c], roots, left, s) ? check_residual(b, p, s)
+                                                                        : std::numeric_limits<double>::infinity();
+            };
+            s.residual = fill(LeftRows::loewner);
+            if (!(s.residual <= kRoundoffResidual)) {
+                const double loewner = s.residual;
+                s.residual = fill(LeftRows::direct);
+                if (!(s.residual < loewner)) {
+                    // The same roots give the same rows and the same check.
+                    s.residual = std::isfinite(loewner) && rank_one_modes(b, p.contacts[c], roots, LeftRows::loewner, s)
+                                     ? loewner
+                                     : std::numeric_limits<double>::infinity();
+                }
             }
-            ok = best.has_value();
-            if (ok) s = std::move(*best);
-            ok = ok && s.residual < kResidualLimit;
+            ok = s.residual < kResidualLimit;
         }
     }
     // Every decomposition is verified (the rank-one one above); a fast one that fails falls back to
