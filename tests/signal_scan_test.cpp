@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <random>
 
 #include "dynamics/event_search.hpp"
@@ -150,6 +151,42 @@ TEST(SignalScan, FirstUpcrossingIsTheFirstSampledCrossing) {
         // No sample before it is positive.
         EXPECT_LE(sampled_max(r.f, 0.0, *hit - cs.t_tol, 50000), 0.0) << trial;
     }
+}
+
+// f = cos t - (1 - delta) rises above zero only within sqrt(2 delta) of t = 2 pi. With the smallest
+// step ten times that wide the search may step over it; it must then say so: the forced steps are
+// counted and the largest bound over them covers the peak delta it did not see.
+TEST(SignalScan, ACrossingNarrowerThanTheSmallestStepIsReportedWhenStepped) {
+    Eigen::VectorXcd lambda(1);
+    lambda[0] = cd(0.0, 1.0);
+    const double delta = 1e-6, t_star = 2.0 * std::numbers::pi - std::acos(1.0 - delta);
+    CrossingSearch cs;
+    cs.h_min = 20.0 * std::sqrt(2.0 * delta);
+    cs.t_tol = 1e-14;
+    int found = 0, stepped = 0;
+    for (int trial = 0; trial < 40; ++trial) {
+        ExpSignal f;
+        f.lambda = &lambda;
+        f.A = Eigen::VectorXcd::Ones(1);
+        f.terms.push_back({-(1.0 - delta), 0.0, 0});
+        const double tau0 = 0.3 + 0.02 * trial;  // a different alignment of the steps each time
+        UnprovenSteps unproven;
+        const auto hit = first_upcrossing(f, tau0, 7.0, cs, nullptr, &unproven);
+        if (hit && std::abs(*hit - t_star) < 1e-9) {
+            ++found;
+            continue;
+        }
+        ++stepped;
+        EXPECT_TRUE(!hit || *hit > t_star) << trial;
+        ASSERT_GT(unproven.count, 0) << trial;
+        const double size = 2.0 - delta;  // |A| + |constant|
+        EXPECT_GE(unproven.excess * size, delta) << trial;
+        // and not uselessly loose: the bound of a step of length h over a unit-curvature signal
+        EXPECT_LE(unproven.excess * size, cs.h_min * cs.h_min) << trial;
+    }
+    // Both outcomes occur over these alignments, so both branches above were exercised.
+    EXPECT_GT(found, 0);
+    EXPECT_GT(stepped, 0);
 }
 
 }  // namespace

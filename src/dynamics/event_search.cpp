@@ -37,7 +37,7 @@ double refine(const SignalScan& f, double a, double b, double fa, double fb, dou
 }  // namespace
 
 std::optional<double> first_upcrossing(const ExpSignal& f, double tau0, double tau_max, const CrossingSearch& opt,
-                                       int* evals) {
+                                       int* evals, UnprovenSteps* unproven) {
     SignalScan scan(f, 1.0, tau_max);
     double tau = tau0;
     ScanPoint p = scan.evaluate(tau);
@@ -58,12 +58,22 @@ std::optional<double> first_upcrossing(const ExpSignal& f, double tau0, double t
         }
         first = false;
         double h = scan.certified_step(p, tau_max - tau, fv);
-        if (!(h >= opt.h_min)) h = opt.h_min;
+        const bool forced = !(h >= opt.h_min);
+        if (forced) h = opt.h_min;
         const double next = std::min(tau + h, tau_max);
-        scan.clear();
+        const ScanPoint before = p;
+        if (!forced) scan.clear();  // a forced step keeps the point before it, to bound f over the step
         p = scan.evaluate(next);
         if (evals) ++*evals;
         if (p.value > 0.0) return refine(scan, tau, next, fv, p.value, opt.t_tol, evals);
+        if (forced) {
+            const double bound = scan.upper_bound(before, p) + scan.roundoff(before);
+            if (unproven && bound > 0.0) {
+                ++unproven->count;
+                unproven->excess = std::max(unproven->excess, bound / scan.size());
+            }
+            scan.keep_only(p);
+        }
         tau = next;
         fv = p.value;
         fp = p.slope;

@@ -20,8 +20,17 @@ struct CrossingSearch {
 // tau + h is accepted only if an upper bound of f over [tau, tau + h] is negative: f cannot reach
 // zero in between, so no crossing is stepped over (signal_scan.hpp: slow modes by Taylor with a
 // bound of |f''|, fast ones by their amplitude, the best of every such split).
+//
+// The one step no bound proves is one of length h_min, forced where f is within roundoff of zero or
+// grazes it more narrowly than h_min. Such steps are counted, with the largest upper bound of f over
+// any of them: a crossing inside one (up and back within h_min) is not excluded, but f rose there by
+// no more than that bound.
+struct UnprovenSteps {
+    int count = 0;
+    double excess = 0.0;  // largest upper bound of f over a forced step, relative to f's size [-]
+};
 std::optional<double> first_upcrossing(const ExpSignal& f, double tau0, double tau_max, const CrossingSearch& opt,
-                                       int* evaluations = nullptr);
+                                       int* evaluations = nullptr, UnprovenSteps* unproven = nullptr);
 
 // Where the largest value of sign * f over [0, tau_end] lies, to within max(size_tol S, rel_tol |max|)
 // in value, S the signal's size (sum of its amplitudes) (branch and bound: an interval is dropped once

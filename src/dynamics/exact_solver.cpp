@@ -100,6 +100,7 @@ TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o) {
     long next_sample = 0;
     EnergyLedger ledger;
     int zero_length_run = 0;
+    UnprovenSteps unproven;
     double t = 0.0;
 
     {
@@ -127,14 +128,14 @@ TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o) {
         double tau_e = span;
         int who = -1;
         for (int c = 0; c < nc; ++c) {
-            const auto hit = first_upcrossing(s.event_function(c), 0.0, tau_e, cs, &res.stats.steps);
+            const auto hit = first_upcrossing(s.event_function(c), 0.0, tau_e, cs, &res.stats.steps, &unproven);
             if (hit && *hit <= tau_e) {
                 tau_e = *hit;
                 who = c;
             }
             if (s.waits_for_release(c)) {
                 // d reaching 0 only changes which function is watched: the piece ends, the state stays.
-                const auto out = first_upcrossing(s.release_function(c), 0.0, tau_e, cs, &res.stats.steps);
+                const auto out = first_upcrossing(s.release_function(c), 0.0, tau_e, cs, &res.stats.steps, &unproven);
                 if (out && *out < tau_e) {
                     tau_e = *out;
                     who = -1;
@@ -209,6 +210,8 @@ TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o) {
         const PieceSolution& last = model.piece(active, x, p.t_end, p.t_end);
         res.final_energy = last.energy_at(0.0, ledger);
     }
+    res.stats.unproven_steps = unproven.count;
+    res.stats.unproven_excess = unproven.excess;
     res.stats.decompositions = model.decompositions();
     res.stats.decomposition_s = base_s + model.decomposition_seconds();
     std::sort(res.episodes.begin(), res.episodes.end(),

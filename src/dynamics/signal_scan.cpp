@@ -208,6 +208,18 @@ int SignalScan::slow_count(const ScanPoint& p, double h) const {
     return lo;
 }
 
+void SignalScan::keep_only(ScanPoint& p) {
+    const std::size_t n = static_cast<std::size_t>(kRecord * (p.live + 1));
+    // The destination starts before the source: a forward copy is safe where they overlap.
+    std::copy(store_.get() + p.offset, store_.get() + p.offset + n, store_.get());
+    p.offset = 0;
+    used_ = n;
+}
+
+double SignalScan::roundoff(const ScanPoint& p) {
+    return (p.live + 16) * std::numeric_limits<double>::epsilon() * p.abs0;
+}
+
 double SignalScan::certified_step(const ScanPoint& p, double H, double value_used) const {
     // For slow modes k < J: f_slow(t + s) <= f0 + f1 s + G b2 s^2 / 2 (Taylor, |v_k| not growing by more
     // than G = exp(gamma H)); for fast ones, dead ones included, |f_fast| <= G sum |v_k|. Any J gives a
@@ -216,12 +228,15 @@ double SignalScan::certified_step(const ScanPoint& p, double H, double value_use
     const double* rec = record(p, 0);
     const double mag_all = rec[kRecord * p.live + kMag] + p.dead_mag;
     const double shift = value_used - p.value;
+    // The computed sums may be off by their rounding error: bounds are raised by it.
+    const double err0 = roundoff(p);
+    const double err1 = (p.live + 16) * std::numeric_limits<double>::epsilon() * p.abs1;
     double best = 0.0;
     for (int J = p.live; J >= 0; --J) {
         const double* r = rec + kRecord * J;
-        const double c0 = p.p0 + r[kF0] + G * (mag_all - r[kMag]) + shift;
+        const double c0 = p.p0 + r[kF0] + G * (mag_all - r[kMag]) + shift + err0;
         if (!(c0 < 0.0)) continue;
-        const double c1 = p.p1 + r[kF1];
+        const double c1 = p.p1 + r[kF1] + err1;
         const double c2 = terms_b2_ + G * r[kB2];
         best = std::max(best, quadratic_reach(c0, c1, c2));
         if (best >= H) return H;

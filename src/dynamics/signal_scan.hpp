@@ -41,6 +41,8 @@ public:
     // Only the value (for root refinement).
     [[nodiscard]] double value(double t) const;
     void clear() { used_ = 0; }
+    // Drops every point's records but p's (which stays valid).
+    void keep_only(ScanPoint& p);
     // The longest h <= H such that f < 0 on [p.t, p.t + h] is proven by some slow/fast split, taking
     // the value at p.t as `value_used` (the caller may set a value within roundoff of 0 to 0);
     // 0 when no split proves any step.
@@ -48,6 +50,9 @@ public:
     // An upper bound of f on [a.t, b.t]: the smaller of a Taylor bound from a and a bound by
     // interpolation between a and b plus |f''| (b.t - t)(t - a.t) / 2, over the slow modes of that length.
     [[nodiscard]] double upper_bound(const ScanPoint& a, const ScanPoint& b) const;
+    // A bound of the rounding error of p's value as summed here (each term to a few ulps, the sum
+    // of `live` terms to live ulps of sum |terms|); certified_step adds it to its bounds.
+    [[nodiscard]] static double roundoff(const ScanPoint& p);
     [[nodiscard]] int modes() const { return m_; }
     [[nodiscard]] double size() const { return size_; }
 

@@ -46,7 +46,12 @@ struct SolverStats {
     double event_location_s = 0.0;
     int decompositions = 0;
     int events = 0;
-    int steps = 0;                 // CVODE internal steps, or exact-solver pieces
+    int steps = 0;                 // CVODE internal steps, or exact-solver evaluations
+    // Exact solver: event-search steps of the smallest length that no bound proved free of a
+    // crossing, and the largest upper bound of the watched function over one of them, relative to
+    // that function's size [-] (event_search.hpp: how deep a contact missed there could have gone).
+    int unproven_steps = 0;
+    double unproven_excess = 0.0;
     std::string method;            // "exact" or "cvode"
 };
 

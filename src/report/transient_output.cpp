@@ -120,6 +120,10 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
                    {"decompositions", r.stats.decompositions},
                    {"events", r.stats.events},
                    {"steps", r.stats.steps}};
+    if (r.stats.method == "exact") {
+        j["solver"]["unproven_steps"] = r.stats.unproven_steps;
+        j["solver"]["unproven_excess"] = r.stats.unproven_excess;
+    }
     j["resolved"] = resolved_case_json(c, b, s);
     return j;
 }
