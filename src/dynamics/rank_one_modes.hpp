@@ -37,6 +37,7 @@ bool rank_one_roots(const BaseModes& b, const ContactElement& ce, RankOneRoots& 
 
 // Fills s.lambda, s.paired and s.vl (sorted by |lambda|) from the roots; s.active and s.damping are
 // set by the caller. False when a normalisation vanishes or overflows.
-bool rank_one_modes(const BaseModes& b, const ContactElement& ce, const RankOneRoots& r, LeftRows left, StateModes& s);
+bool rank_one_modes(const BaseModes& b, const ContactElement& ce, const RankOneRoots& roots, LeftRows left,
+                    StateModes& s);
 
 }  // namespace vi

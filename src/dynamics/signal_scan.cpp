@@ -211,7 +211,7 @@ int SignalScan::slow_count(const ScanPoint& p, double h) const {
 void SignalScan::keep_only(ScanPoint& p) {
     const std::size_t n = static_cast<std::size_t>(kRecord * (p.live + 1));
     // The destination starts before the source: a forward copy is safe where they overlap.
-    std::copy(store_.get() + p.offset, store_.get() + p.offset + n, store_.get());
+    if (p.offset > 0) std::copy(store_.get() + p.offset, store_.get() + p.offset + n, store_.get());
     p.offset = 0;
     used_ = n;
 }
