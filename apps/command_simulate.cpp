@@ -48,8 +48,9 @@ CommandBody add_simulate_command(CLI::App& app) {
         // fraction of the watched signal's size); at roundoff level (1e-14 typically) it is noise.
         if (run.result.stats.unproven_excess > 1e-9) {
             std::fprintf(stderr,
-                         "%s: warning: a contact narrower than the smallest event-search step may have been missed "
-                         "(solver.unproven_excess = %.3g of the signal's size)\n",
+                         "vibroimpact: warning: %s: a contact narrower than the smallest event-search step may have "
+                         "been missed (solver.unproven_excess = %.3g of the signal's size; lower "
+                         "solver.min_search_step)\n",
                          opt->case_path.c_str(), run.result.stats.unproven_excess);
         }
         const OutputFiles files = transient_files(c, run.built, run.result, run.summary);

@@ -130,13 +130,14 @@ TEST(CaseReaderTables, LoadsOfEveryKind) {
 TEST(CaseReaderTables, Solver) {
     const vi::Case c = read_case_text(kBase + "[solver]\nmethod = \"cvode\"\nhorizon = \"200 us\"\n"
                                               "output_step = \"10 ns\"\ngroup_gap = \"2 us\"\n"
-                                              "settle_tolerance = 0.05\nrtol = 1e-8\n", "ok.toml");
+                                              "settle_tolerance = 0.05\nrtol = 1e-8\nmin_search_step = 1e-12\n", "ok.toml");
     EXPECT_EQ(c.solver.method, vi::SolverSettings::Method::cvode);
     EXPECT_DOUBLE_EQ(c.solver.horizon, 200e-6);
     EXPECT_DOUBLE_EQ(c.solver.output_step, 10e-9);
     EXPECT_DOUBLE_EQ(c.solver.group_gap, 2e-6);
     EXPECT_DOUBLE_EQ(c.solver.settle_tolerance, 0.05);
     EXPECT_DOUBLE_EQ(c.solver.rtol, 1e-8);
+    EXPECT_DOUBLE_EQ(c.solver.min_search_step, 1e-12);
 }
 
 TEST(CaseReaderTablesErrors, Initial) {
@@ -226,6 +227,8 @@ TEST(CaseReaderTablesErrors, Solver) {
     expect_error(s + "settle_tolerance = 1\n", "bad.toml:12: solver.settle_tolerance: must lie in (0, 1)");
     expect_error(s + "settle_tolerance = 0\n", "bad.toml:12: solver.settle_tolerance: must lie in (0, 1)");
     expect_error(s + "rtol = 1e-2\n", "bad.toml:12: solver.rtol: must lie in (0, 1e-3]");
+    expect_error(s + "min_search_step = 0\n", "bad.toml:12: solver.min_search_step: must lie in [1e-15, 1e-3]");
+    expect_error(s + "min_search_step = 0.01\n", "bad.toml:12: solver.min_search_step: must lie in [1e-15, 1e-3]");
     expect_error(s + "horizon = \"1 um\"\n", "bad.toml:12: solver.horizon: unit \"um\" is a length");
     expect_error(s + "steps = 10\n", "bad.toml:12: solver.steps: unknown key");
 }

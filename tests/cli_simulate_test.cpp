@@ -131,7 +131,7 @@ TEST_F(CliSimulate, JsonHasEveryKeyWithItsType) {
     EXPECT_TRUE(r["damping"]["alpha_1_s"].is_number());
     EXPECT_TRUE(r["damping"]["beta_s"].is_number());
     EXPECT_TRUE(r["initial"]["y0_m"].is_number());
-    for (const char* key : {"group_gap_s", "horizon_s", "output_step_s", "settle_tolerance"}) {
+    for (const char* key : {"group_gap_s", "horizon_s", "output_step_s", "settle_tolerance", "min_search_step"}) {
         EXPECT_TRUE(r["solver"][key].is_number()) << "solver." << key;
     }
     EXPECT_TRUE(r["solver"]["method"].is_string());
@@ -352,6 +352,24 @@ TEST(CliSimulateBadInput, EveryBadInputGivesOneLineExitTwoAndWritesNothing) {
         }
         fs::remove_all(dir);
     }
+}
+
+// A coarse smallest search step leaves release steps the solver cannot prove free of a contact: the
+// run completes, and says so on stderr (one line naming the case and the remedy) and in the summary.
+TEST(CliSimulateWarnings, UnprovenEventSearchIsReported) {
+    const std::string good = read_text(test::source_path(kExample));
+    const std::string dir = test::make_temp_dir();
+    const std::string path = dir + "/coarse.toml";
+    std::ofstream(path) << replace(good, "method = \"exact\"", "method = \"exact\"\nmin_search_step = 1e-3");
+    const auto r = run_vibroimpact({"simulate", path, "--json"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_EQ(r.err.rfind("vibroimpact: warning: " + path + ": ", 0), 0u) << r.err;
+    EXPECT_NE(r.err.find("solver.min_search_step"), std::string::npos) << r.err;
+    const json j = json::parse(r.out);
+    EXPECT_GT(j["solver"]["unproven_excess"].get<double>(), 1e-9);
+    EXPECT_EQ(j["resolved"]["solver"]["min_search_step"].get<double>(), 1e-3);
+    fs::remove_all(dir);
 }
 
 TEST(CliSimulateBadInput, MissingFileAndUnknownOptionExitTwo) {

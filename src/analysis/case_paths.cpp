@@ -117,6 +117,8 @@ const FieldSpec kFields[] = {
     {"solver", "settle_tolerance", "-", false, false, VI_GET(c.solver.settle_tolerance),
      VI_SET(c.solver.settle_tolerance = v), always},
     {"solver", "rtol", "-", false, false, VI_GET(c.solver.rtol), VI_SET(c.solver.rtol = v), always},
+    {"solver", "min_search_step", "periods", false, false, VI_GET(c.solver.min_search_step),
+     VI_SET(c.solver.min_search_step = v), always},
 };
 
 #undef VI_GET

@@ -21,6 +21,7 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
         ExactOptions eo;
         eo.history = o.history;
         eo.energy = o.energy;
+        eo.h_min_periods = c.solver.min_search_step;
         run.result = solve_exact(p, eo);
     }
     const bool touching_at_start = std::find(p.active0.begin(), p.active0.end(), true) != p.active0.end();

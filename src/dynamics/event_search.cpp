@@ -60,7 +60,8 @@ std::optional<double> first_upcrossing(const ExpSignal& f, double tau0, double t
         double h = scan.certified_step(p, tau_max - tau, fv);
         const bool forced = !(h >= opt.h_min);
         if (forced) h = opt.h_min;
-        const double next = std::min(tau + h, tau_max);
+        // At least one ulp forward: far into a long piece tau + h_min may round back to tau.
+        const double next = std::min(std::max(tau + h, std::nextafter(tau, tau_max)), tau_max);
         const ScanPoint before = p;
         if (!forced) scan.clear();  // a forced step keeps the point before it, to bound f over the step
         p = scan.evaluate(next);

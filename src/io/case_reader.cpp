@@ -228,7 +228,7 @@ PointLoad read_load(const toml::table& t, const std::string& path, Position at, 
 
 void read_solver(const toml::table& t, Position at, Reading& r, SolverSettings& s) {
     FieldReader f(t, "solver", at, r.log,
-                  {"method", "horizon", "output_step", "group_gap", "settle_tolerance", "rtol"});
+                  {"method", "horizon", "output_step", "group_gap", "settle_tolerance", "rtol", "min_search_step"});
     if (auto v = f.choice("method", {"exact", "cvode"}, false)) {
         s.method = *v == "cvode" ? SolverSettings::Method::cvode : SolverSettings::Method::exact;
     }
@@ -244,6 +244,7 @@ void read_solver(const toml::table& t, Position at, Reading& r, SolverSettings& 
     if (auto v = f.quantity("group_gap", Dimension::time, false)) s.group_gap = *v;
     if (auto v = f.quantity("settle_tolerance", Dimension::dimensionless, false)) s.settle_tolerance = *v;
     if (auto v = f.quantity("rtol", Dimension::dimensionless, false)) s.rtol = *v;
+    if (auto v = f.quantity("min_search_step", Dimension::dimensionless, false)) s.min_search_step = *v;
     f.finish();
 }
 

@@ -100,6 +100,7 @@ struct SolverSettings {
                                      // 0 = a quarter of the first unsupported period
     double settle_tolerance = 0.01;  // impacts below this fraction of the first peak penetration end T_p
     double rtol = 1e-10;             // CVODE relative tolerance
+    double min_search_step = 1e-9;   // exact solver's smallest event-search step [periods of mode 1]
 };
 
 // Where a case came from: the file and the line of every key read, for messages about problems

@@ -135,6 +135,10 @@ void check_solver(std::vector<CaseProblem>& out, const SolverSettings& s) {
         out.push_back({"solver.settle_tolerance", "must lie in (0, 1)"});
     }
     if (!(s.rtol > 0.0 && s.rtol <= 1e-3)) out.push_back({"solver.rtol", "must lie in (0, 1e-3]"});
+    // Below 1e-15 periods a step no longer moves the time of a piece (t + h rounds to t).
+    if (!(s.min_search_step >= 1e-15 && s.min_search_step <= 1e-3)) {
+        out.push_back({"solver.min_search_step", "must lie in [1e-15, 1e-3] (periods of the first mode)"});
+    }
 }
 
 }  // namespace

@@ -81,7 +81,8 @@ nlohmann::json resolved_case_json(const Case& c, const BuiltProblem& b, const Im
                    {"output_step_s", b.problem.output_step},
                    {"group_gap_s", s.group_gap},
                    {"settle_tolerance", c.solver.settle_tolerance},
-                   {"rtol", c.solver.rtol}};
+                   {"rtol", c.solver.rtol},
+                   {"min_search_step", c.solver.min_search_step}};
     j["omega1_rad_s"] = b.omega1;
     return j;
 }
