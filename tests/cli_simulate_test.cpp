@@ -332,6 +332,12 @@ TEST(CliSimulateBadInput, EveryBadInputGivesOneLineExitTwoAndWritesNothing) {
         {"unknown solver key", replace(good, "method = \"exact\"", "method = \"exact\"\ntolerance = 1e-9"),
          "solver.tolerance"},
         {"unknown solver method", replace(good, "method = \"exact\"", "method = \"rk4\""), "solver.method"},
+        {"ratios that damp the high modes negatively (beta < 0)",
+         replace(good, "ratios = [0.005, 0.005]", "ratios = [0.005, 0.0]"), "damping.ratios"},
+        {"ratios that damp mode 1 negatively (alpha < 0)",
+         replace(replace(good, "ratios = [0.005, 0.005]", "ratios = [0.0, 0.005]"), "modes = [1, 2]",
+                 "modes = [2, 3]"),
+         "damping.ratios"},
     };
     for (const BadCase& c : cases) {
         const std::string dir = test::make_temp_dir();

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 #include "dynamics/exact_solver.hpp"
 #include "dynamics/state_modes.hpp"
@@ -132,6 +133,14 @@ TEST(ExactSolver, GrazingContactsAreNeverMissed) {
 
 namespace vi {
 namespace {
+
+// A negative damping ratio makes a mode grow without end: refused, not run (the case reader refuses
+// such ratios with its own message; this is the guard for problems built in code).
+TEST(ExactSolver, NegativelyDampedModelIsRefused) {
+    TransientProblem p = test::cantilever_drop(6, 1000.0, 2e-7, 1e-6, 0.0, 0.0, 8e-6);
+    p.beta = -1e-10;
+    EXPECT_THROW(solve_exact(p), std::runtime_error);
+}
 
 // At m = 100 stiffness-proportional damping makes the highest modes overdamped (zeta ~ 100, poles
 // from 1e8 to 1e13 1/s); the contact state must still decompose and the ledger still close.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 
@@ -49,9 +50,38 @@ ModeSet bending_modes(const System& s, int count, const char* key) {
     return modes;
 }
 
+std::string short_number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", v);
+    return buf;
+}
+
+// Ratios at two modes fix alpha and beta, but not every pair gives a stable model: a negative beta
+// damps the high modes negatively (their ratio beta w / 2 falls without bound), and a negative alpha
+// does so below some frequency, which must then lie under mode 1. Either is an InputError on
+// damping.ratios; a value negative only by roundoff (ratios exactly on the boundary) counts as 0.
 RayleighCoefficients rayleigh(const RayleighDamping& d, const ModeSet& modes) {
     if (!d.from_ratios) return {d.alpha, d.beta};
-    return rayleigh_from_ratios(modes.omega[d.mode1 - 1], d.ratio1, modes.omega[d.mode2 - 1], d.ratio2);
+    const double w1 = modes.omega[d.mode1 - 1], w2 = modes.omega[d.mode2 - 1];
+    RayleighCoefficients c = rayleigh_from_ratios(w1, d.ratio1, w2, d.ratio2);
+    const double xi_max = std::max(d.ratio1, d.ratio2);
+    const bool first_low = w1 < w2;
+    const double w_lo = first_low ? w1 : w2, w_hi = first_low ? w2 : w1;
+    const double xi_lo = first_low ? d.ratio1 : d.ratio2;
+    const int m_lo = first_low ? d.mode1 : d.mode2, m_hi = first_low ? d.mode2 : d.mode1;
+    if (c.beta < 0.0 && 0.5 * c.beta * w_hi >= -1e-12 * xi_max) c.beta = 0.0;
+    if (c.beta < 0.0) {
+        throw InputError("damping.ratios: they give beta = " + short_number(c.beta) +
+                         " s < 0, which damps the high modes negatively (an unstable model); the ratio at mode " +
+                         std::to_string(m_hi) + " must be at least " + short_number(xi_lo) + " x w" +
+                         std::to_string(m_lo) + "/w" + std::to_string(m_hi) + " = " + short_number(xi_lo * w_lo / w_hi));
+    }
+    const double z1 = rayleigh_ratio(c, modes.omega[0]);
+    if (z1 < -1e-12 * xi_max) {
+        throw InputError("damping.ratios: they give mode 1 the damping ratio " + short_number(z1) +
+                         " < 0 (alpha = " + short_number(c.alpha) + " 1/s; an unstable model)");
+    }
+    return c;
 }
 
 // One contact element per support, on the v DOF of its node. Surfaces in beam coordinates (v up):

@@ -5,6 +5,7 @@
 #include <limits>
 #include <numeric>
 #include <stdexcept>
+#include <string>
 #include <type_traits>
 
 #include "dynamics/rank_one_modes.hpp"
@@ -313,6 +314,13 @@ BaseModes base_modes(const TransientProblem& p) {
     for (int i = 0; i < b.n; ++i) {
         const double w = b.omega[i];
         double z = 0.5 * (p.alpha / w + p.beta * w);
+        // A negative ratio makes the mode grow: no transient of such a model ends (the case reader
+        // rejects ratios that give one; this guards problems built in code). Roundoff below 0 is 0.
+        if (z < 0.0 && z >= -1e-12) z = 0.0;
+        if (z < 0.0) {
+            throw std::runtime_error("transient: mode " + std::to_string(i + 1) + " has the negative damping ratio " +
+                                     std::to_string(z) + " (alpha, beta): the model is unstable");
+        }
         if (std::abs(z - 1.0) < kCriticalDampingGap) z = z < 1.0 ? 1.0 - kCriticalDampingGap : 1.0 + kCriticalDampingGap;
         b.zeta[i] = z;
         if (z < 1.0) {
