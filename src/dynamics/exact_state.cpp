@@ -170,7 +170,7 @@ PieceSolution::PieceSolution(const TransientProblem& p, const BaseModes& b, cons
                 const double w = 2.0 * std::numbers::pi * tf.frequency_hz;
                 const cd k1 = std::exp(cd(0.0, w * t0 + tf.phase)) / cd(0.0, 2.0);
                 g.terms.push_back({k1, cd(0.0, w), 0});
-                g.terms.push_back({-std::conj(k1), cd(0.0, -w), 0});
+                g.terms.push_back({std::conj(k1), cd(0.0, -w), 0});
                 g.terms.push_back({tf.offset, 0.0, 0});
             } else if (tf.kind == TimeFunction::Kind::table) {
                 const double g1 = t1 > t0 ? (tf(t1) - tf(t0)) / (t1 - t0) : 0.0;
@@ -227,7 +227,7 @@ void PieceSolution::particular_solution(const Eigen::VectorXd& x0, double t0, do
                 const double th = w * t0 + ld.time.phase;
                 const cd k1 = std::exp(cd(0.0, th)) / cd(0.0, 2.0);
                 raw.push_back({fx.cast<cd>() * k1, cd(0.0, w), 0});
-                raw.push_back({fx.cast<cd>() * -std::conj(k1), cd(0.0, -w), 0});
+                raw.push_back({fx.cast<cd>() * std::conj(k1), cd(0.0, -w), 0});
                 break;
             }
         }
