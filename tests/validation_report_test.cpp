@@ -21,7 +21,8 @@ TEST(ValidateCommand, QuickReportHasEverySectionAndNoNan) {
     for (const char* heading :
          {"## 1. Static deflections", "## 2. Natural frequencies", "## 3. Nodal points and peaks",
           "## 4. Supported beam", "## 5. Single-DOF Kelvin-Voigt impact", "## 6. Energy conservation",
-          "## 7. Exact vs CVODE on the default example", "## 8. Mesh convergence of the default example"}) {
+          "## 7. Exact vs CVODE on the default example", "## 8. Mesh convergence of the default example",
+          "## 9. Time-dependent loads"}) {
         EXPECT_NE(r.out.find(heading), std::string::npos) << heading;
     }
     // printf spells a NaN "nan" or "-nan" and an infinity "inf"; as words, not inside "dominant".
