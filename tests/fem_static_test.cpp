@@ -84,6 +84,30 @@ TEST(FemMesh, SupportOnAGridNodeAddsNoNode) {
     EXPECT_EQ(s.mesh.support_nodes[0], 25);
 }
 
+// A support within a tenth of an element of an interior grid node takes that node instead of a
+// sliver element beside it; near an end, or on a node another support took, it gets its own node.
+TEST(FemMesh, SupportNearAGridNodeMovesItInsteadOfAddingASliver) {
+    const Case c = test::paper_cantilever(16, 0.934);  // 0.056 of an element below node 15
+    const System s = build_system(c);
+    EXPECT_EQ(s.mesh.node_count(), 17);
+    EXPECT_EQ(s.mesh.support_nodes[0], 15);
+    EXPECT_DOUBLE_EQ(s.mesh.x[15], 0.934 * c.beam.length);
+    const double h = c.beam.length / 16;
+    for (int e = 0; e < s.mesh.element_count(); ++e) EXPECT_GT(s.mesh.element_length(e), 0.9 * h) << e;
+
+    Case two = c;
+    two.supports.push_back(two.supports[0]);
+    two.supports[1].position = 0.9395;  // near node 15 too, which the first support took
+    two.supports[1].side = Side::above;
+    const System s2 = build_system(two);
+    EXPECT_EQ(s2.mesh.node_count(), 18);
+    EXPECT_DOUBLE_EQ(s2.mesh.x[s2.mesh.support_nodes[1]], 0.9395 * c.beam.length);
+
+    const System near_end = build_system(test::paper_cantilever(16, 0.995));  // the free end is not moved
+    EXPECT_EQ(near_end.mesh.node_count(), 18);
+    EXPECT_EQ(near_end.mesh.x.back(), c.beam.length);
+}
+
 TEST(FemSystem, PinnedSupportRemovesItsTransverseDof) {
     const Case c = test::paper_cantilever(50, 0.7834);
     EXPECT_EQ(build_system(c, SupportModel::none).size(), 3 * 52 - 3);

@@ -10,19 +10,38 @@ Mesh build_mesh(const Beam& beam, const std::vector<Support>& supports) {
     if (beam.elements < 1) throw std::invalid_argument("build_mesh: at least one element is needed");
     const double l = beam.length;
     const int m = beam.elements;
+    const double h = l / m;
     Mesh mesh;
     mesh.x.reserve(static_cast<std::size_t>(m) + 1 + supports.size());
     for (int i = 0; i <= m; ++i) mesh.x.push_back(l * static_cast<double>(i) / m);
     mesh.x.back() = l;
 
-    const double merge = kNodeMergeTolerance * l / m;
+    // A support near an interior grid node takes that node (moved by under kNodeMoveFraction h)
+    // rather than a new one beside it: the sliver element would stiffen the system by (h / sliver)^3
+    // and cost both solvers digits. Each grid node serves one support.
+    const double merge = kNodeMergeTolerance * h;
+    std::vector<bool> taken(static_cast<std::size_t>(m) + 1, false);
+    std::vector<double> insert;
     for (const Support& s : supports) {
         const double x0 = s.position * l;
+        const int j = std::clamp(static_cast<int>(std::lround(x0 / h)), 0, m);
+        const double gap = std::abs(x0 - mesh.x[static_cast<std::size_t>(j)]);
+        if (gap <= merge) {
+            taken[static_cast<std::size_t>(j)] = true;
+        } else if (gap < kNodeMoveFraction * h && j > 0 && j < m && !taken[static_cast<std::size_t>(j)]) {
+            mesh.x[static_cast<std::size_t>(j)] = x0;
+            taken[static_cast<std::size_t>(j)] = true;
+        } else {
+            insert.push_back(x0);
+        }
+    }
+    for (const double x0 : insert) {
         auto it = std::lower_bound(mesh.x.begin(), mesh.x.end(), x0);
         const bool near_next = it != mesh.x.end() && std::abs(*it - x0) <= merge;
         const bool near_prev = it != mesh.x.begin() && std::abs(*(it - 1) - x0) <= merge;
         if (!near_next && !near_prev) mesh.x.insert(it, x0);
     }
+    if (!std::is_sorted(mesh.x.begin(), mesh.x.end())) throw std::logic_error("build_mesh: nodes out of order");
     for (const Support& s : supports) {
         const double x0 = s.position * l;
         auto it = std::lower_bound(mesh.x.begin(), mesh.x.end(), x0 - merge);

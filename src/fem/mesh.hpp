@@ -1,5 +1,5 @@
 #pragma once
-// Mesh: node coordinates along the beam, a uniform grid plus one node exactly at each support.
+// Mesh: node coordinates along the beam, a uniform grid with one node exactly at each support.
 
 #include <vector>
 
@@ -20,7 +20,11 @@ struct Mesh {
 // element that short would only spoil the conditioning, and moves the support by < 1e-9 l.
 inline constexpr double kNodeMergeTolerance = 1e-9;
 
-// Builds the mesh of m uniform elements and inserts a node at every support position.
+// A support within this fraction of an element of an interior grid node moves that node onto it
+// (elements stay within 0.9..1.1 h there); farther away it gets a node of its own, inserted.
+inline constexpr double kNodeMoveFraction = 0.1;
+
+// Builds the mesh of m uniform elements and puts a node exactly at every support position.
 Mesh build_mesh(const Beam& beam, const std::vector<Support>& supports);
 
 // Index of the element holding coordinate x [m] and the local coordinate xi in [0, 1] there.
