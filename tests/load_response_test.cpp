@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "analysis/loaded_oscillator.hpp"
 #include "dynamics/cvode_solver.hpp"
@@ -16,6 +17,18 @@
 
 namespace vi {
 namespace {
+
+// Both solvers on o over the given number of periods: response within 1e-10 of `scale` and the
+// ledger closed to 1e-10 for the exact solver, 1e-6 for CVODE.
+void expect_both_solvers_match(const LoadedOscillator& o, double periods, double scale, const std::string& what) {
+    const TransientProblem p = o.problem(periods * o.period(), o.period() / 40.0);
+    const LoadResponseError exact = load_response_error(o, solve_exact(p), scale);
+    EXPECT_LT(exact.response, 1e-10) << what;
+    EXPECT_LT(exact.ledger, 1e-10) << what;
+    const LoadResponseError cvode = load_response_error(o, solve_cvode(p), scale);
+    EXPECT_LT(cvode.response, 1e-6) << what;
+    EXPECT_LT(cvode.ledger, 1e-6) << what;
+}
 
 TEST(LoadResponse, HarmonicLoadWithPhaseAndOffsetMatchesTheClosedForm) {
     LoadedOscillator o;
@@ -27,14 +40,8 @@ TEST(LoadResponse, HarmonicLoadWithPhaseAndOffsetMatchesTheClosedForm) {
         for (const double zeta : {0.0, 0.05}) {
             o.zeta = zeta;
             o.g.frequency_hz = ratio * o.omega() / (2.0 * std::numbers::pi);
-            const TransientProblem p = o.problem(6.0 * o.period(), o.period() / 40.0);
             const double scale = o.force / o.stiffness / std::abs(1.0 - ratio * ratio);
-            const LoadResponseError exact = load_response_error(o, solve_exact(p), scale);
-            EXPECT_LT(exact.response, 1e-10) << "ratio " << ratio << " zeta " << zeta;
-            EXPECT_LT(exact.ledger, 1e-10) << "ratio " << ratio << " zeta " << zeta;
-            const LoadResponseError cvode = load_response_error(o, solve_cvode(p), scale);
-            EXPECT_LT(cvode.response, 1e-6) << "ratio " << ratio << " zeta " << zeta;
-            EXPECT_LT(cvode.ledger, 1e-6) << "ratio " << ratio << " zeta " << zeta;
+            expect_both_solvers_match(o, 6.0, scale, "ratio " + std::to_string(ratio) + " zeta " + std::to_string(zeta));
         }
     }
 }
@@ -45,13 +52,7 @@ TEST(LoadResponse, StepLoadMatchesTheClosedForm) {
     o.g.t_on = 0.37 * o.period();
     o.zeta = 0.05;
     o.q0 = -0.4 * o.force / o.stiffness;  // moving when the step comes
-    const TransientProblem p = o.problem(4.0 * o.period(), o.period() / 40.0);
-    const LoadResponseError exact = load_response_error(o, solve_exact(p), o.force / o.stiffness);
-    EXPECT_LT(exact.response, 1e-10);
-    EXPECT_LT(exact.ledger, 1e-10);
-    const LoadResponseError cvode = load_response_error(o, solve_cvode(p), o.force / o.stiffness);
-    EXPECT_LT(cvode.response, 1e-6);
-    EXPECT_LT(cvode.ledger, 1e-6);
+    expect_both_solvers_match(o, 4.0, o.force / o.stiffness, "step");
 }
 
 TEST(LoadResponse, TabulatedRampMatchesTheClosedForm) {
@@ -59,13 +60,7 @@ TEST(LoadResponse, TabulatedRampMatchesTheClosedForm) {
     o.g.kind = TimeFunction::Kind::table;
     o.g.times = {0.0, 1.3 * o.period()};
     o.g.values = {0.0, 1.0};
-    const TransientProblem p = o.problem(4.0 * o.period(), o.period() / 40.0);
-    const LoadResponseError exact = load_response_error(o, solve_exact(p), o.force / o.stiffness);
-    EXPECT_LT(exact.response, 1e-10);
-    EXPECT_LT(exact.ledger, 1e-10);
-    const LoadResponseError cvode = load_response_error(o, solve_cvode(p), o.force / o.stiffness);
-    EXPECT_LT(cvode.response, 1e-6);
-    EXPECT_LT(cvode.ledger, 1e-6);
+    expect_both_solvers_match(o, 4.0, o.force / o.stiffness, "ramp");
 }
 
 // The closed form itself, where it can be checked without a solver: the harmonic particular solution
