@@ -1,0 +1,67 @@
+#pragma once
+// Run control: the process-wide stop flag that SIGINT/SIGTERM set, and a per-thread wall-clock limit
+// (a sweep point's --point-timeout), both checked inside the solvers' loops by check_run().
+
+#include <atomic>
+#include <stdexcept>
+#include <string>
+
+namespace vi {
+
+// Thrown by check_run() once a stop was requested (a signal, or a sweep that stops its workers):
+// the work is abandoned, nothing of it is a result.
+class StopRequested : public std::runtime_error {
+public:
+    explicit StopRequested(int signal) : std::runtime_error("stopped by a signal"), signal_(signal) {}
+    [[nodiscard]] int signal() const { return signal_; }  // the signal's number, or 0
+private:
+    int signal_;
+};
+
+// Thrown by check_run() when this thread's wall-clock limit (ScopedTimeLimit) has passed; the
+// message names the limit and the setting that raises it.
+class TimeLimitReached : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// Thrown when a bound on the work of one run (events, search steps, iterations) is reached; the
+// message says what, where, at which time and which setting raises the bound.
+class WorkLimitReached : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+// The process-wide stop flag. Async-signal-safe to set (lock-free atomics only).
+std::atomic<bool>& stop_flag();
+// Sets the flag and remembers the signal (0: not a signal); safe inside a signal handler.
+void request_stop(int signal) noexcept;
+// The signal that requested the stop, or 0.
+int stop_signal() noexcept;
+// Clears the flag and the signal (start of a command, or of a test).
+void clear_stop() noexcept;
+
+// A wall-clock limit for the work done on this thread while the object lives [s]; 0 or less: none.
+// `setting` names what sets it, for the message ("--point-timeout"). Limits do not nest: the inner
+// one replaces the outer one until it ends.
+class ScopedTimeLimit {
+public:
+    ScopedTimeLimit(double seconds, std::string setting);
+    ~ScopedTimeLimit();
+    ScopedTimeLimit(const ScopedTimeLimit&) = delete;
+    ScopedTimeLimit& operator=(const ScopedTimeLimit&) = delete;
+
+private:
+    double previous_deadline_;
+    double previous_seconds_;
+    std::string previous_setting_;
+};
+
+// Seconds since this thread's current time limit began, or 0 without one.
+double time_limit_elapsed();
+
+// Throws StopRequested when a stop was requested, TimeLimitReached when this thread's time limit has
+// passed. Cheap (an atomic load; the clock only when a limit is set): call it in every solver loop.
+void check_run();
+
+}  // namespace vi
