@@ -119,6 +119,10 @@ const FieldSpec kFields[] = {
     {"solver", "rtol", "-", false, false, VI_GET(c.solver.rtol), VI_SET(c.solver.rtol = v), always},
     {"solver", "min_search_step", "periods", false, false, VI_GET(c.solver.min_search_step),
      VI_SET(c.solver.min_search_step = v), always},
+    {"solver", "max_events", "-", true, false, VI_GET(static_cast<double>(c.solver.max_events)),
+     VI_SET(c.solver.max_events = static_cast<long>(v)), always},
+    {"solver", "max_steps", "-", true, false, VI_GET(static_cast<double>(c.solver.max_steps)),
+     VI_SET(c.solver.max_steps = static_cast<long>(v)), always},
 };
 
 #undef VI_GET

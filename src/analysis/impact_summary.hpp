@@ -41,7 +41,7 @@ struct ImpactSummary {
     std::vector<double> T, T1, T2;      // per cycle [s]
     std::optional<double> T_first, T1_first, T2_first;
     std::optional<double> Tp;           // [s]; empty when the horizon ended first or nothing hit
-    std::string Tp_reason;              // "settled", "persistent_contact", "horizon", "no_impact"
+    std::string Tp_reason;              // "settled", "persistent_contact", "horizon", "no_impact", "at_rest"
     std::optional<double> y_max, z_max, y_max_contact, tip_min;  // [m], [-], [m], [m]
 };
 

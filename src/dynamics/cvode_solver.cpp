@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "dynamics/cvode_system.hpp"
+#include "model/run_control.hpp"
 
 namespace vi {
 namespace {
@@ -135,7 +136,7 @@ void Driver::setup() {
     check(CVodeSetUserData(s_.mem, &sys_), "CVodeSetUserData");
     check(CVodeSetLinearSolver(s_.mem, s_.LS, s_.A), "CVodeSetLinearSolver");
     check(CVodeSetJacFn(s_.mem, jac_fn), "CVodeSetJacFn");
-    check(CVodeSetMaxNumSteps(s_.mem, o_.max_steps), "CVodeSetMaxNumSteps");
+    check(CVodeSetMaxNumSteps(s_.mem, std::min<long>(o_.max_steps, std::numeric_limits<int>::max())), "CVodeSetMaxNumSteps");
     check(CVodeSetMaxHnilWarns(s_.mem, -1), "CVodeSetMaxHnilWarns");
     if (sys_.roots() > 0) {
         check(CVodeRootInit(s_.mem, sys_.roots(), root_fn), "CVodeRootInit");
@@ -296,6 +297,11 @@ void Driver::toggle(double t, const std::vector<int>& which) {
         active_[uj] = !active_[uj];
         ++r_.stats.events;
     }
+    if (r_.stats.events > o_.max_events) {
+        throw WorkLimitReached("solve_cvode: more than solver.max_events = " + std::to_string(o_.max_events) +
+                               " contact switches before the horizon (at t = " + std::to_string(t * 1e6) +
+                               " us; raise solver.max_events or shorten solver.horizon)");
+    }
     // A run of switches that makes no progress in time (Zeno chatter) would never end.
     burst_ = same_time(t, last_event_t_) ? burst_ + 1 : 0;
     last_event_t_ = t;
@@ -351,11 +357,18 @@ TransientResult Driver::run() {
     impulse_at_onset_.assign(static_cast<std::size_t>(nc), 0.0);
     active_.assign(static_cast<std::size_t>(nc), false);
     const Eigen::VectorXd y0 = sys_.initial_state();
-    // Without active0 a contact starts closed where d > 0 and F > 0.
+    // Without active0 a contact starts closed where d > 0 and F > 0. A contact touching at t = 0
+    // (d = 0 to roundoff) and moving in closes at once, as the exact solver's event search closes it:
+    // CVODE holds a root function that is zero at the start inactive, and would let the beam pass
+    // into the support (shared/cases/starts_in_contact.toml).
     std::vector<int> closed0;
     for (int j = 0; j < nc; ++j) {
-        const bool on = p_.active0.empty() ? sys_.closing_function(j, y0.data()) > 0.0
-                                           : static_cast<bool>(p_.active0[static_cast<std::size_t>(j)]);
+        bool on = p_.active0.empty() ? sys_.closing_function(j, y0.data()) > 0.0
+                                     : static_cast<bool>(p_.active0[static_cast<std::size_t>(j)]);
+        const ContactElement& e = p_.contacts[static_cast<std::size_t>(j)];
+        const double scale = std::max(std::abs(e.surface), std::abs(y0[e.dof]));
+        const bool touching = std::abs(sys_.penetration(j, y0.data())) <= 64.0 * kEps * scale;
+        if (!on && touching && sys_.penetration_rate(j, y0.data()) > 0.0) on = true;
         if (on) closed0.push_back(j);
     }
     sys_.set_segment_end(stops_.front());
@@ -391,9 +404,11 @@ TransientResult Driver::run() {
         long nst = 0;
         check(CVodeGetNumSteps(s_.mem, &nst), "CVodeGetNumSteps");
         if (steps_done_ + nst > o_.max_steps) {
-            throw std::runtime_error("solve_cvode: more than max_steps = " + std::to_string(o_.max_steps) +
-                                     " steps before t_end (at t = " + std::to_string(tret) + " s)");
+            throw WorkLimitReached("solve_cvode: more than solver.max_steps = " + std::to_string(o_.max_steps) +
+                                   " steps before the horizon (at t = " + std::to_string(tret * 1e6) +
+                                   " us; raise solver.max_steps, or loosen solver.rtol)");
         }
+        check_run();
         if (flag == CV_ROOT_RETURN) {
             t = handle_roots(tret);
         } else {

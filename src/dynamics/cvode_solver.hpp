@@ -14,7 +14,8 @@ struct CvodeOptions {
     // the problem (displacement: max of |q0|, the surface offsets and the static deflection under
     // the loads; velocity: that times the first natural frequency; see cvode_system.cpp).
     double atol_scale = 1e-12;
-    int max_steps = 5000000;    // CVODE internal steps over the whole horizon
+    long max_steps = 50000000;  // CVODE internal steps over the whole horizon (solver.max_steps)
+    long max_events = 1000000;  // contact switches over the horizon (solver.max_events)
 };
 
 // Integrates p from 0 to p.t_end. Contacts switch only at located events (closing when d > 0 and

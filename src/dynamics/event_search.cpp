@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "dynamics/signal_scan.hpp"
+#include "model/run_control.hpp"
 
 namespace vi {
 namespace {
@@ -36,9 +37,21 @@ double refine(const SignalScan& f, double a, double b, double fa, double fb, dou
 
 }  // namespace
 
+void charge_evaluations(long* budget, long n) {
+    if (!budget) return;
+    // The stop flag costs an atomic load; checked once every 256 evaluations (microseconds apart).
+    if ((*budget & 255) < n) check_run();
+    *budget -= n;
+    if (*budget < 0) {
+        throw WorkLimitReached("the event and extremum searches used up solver.max_steps evaluations (raise "
+                               "solver.max_steps, or coarsen solver.min_search_step)");
+    }
+}
+
 std::optional<double> first_upcrossing(const ExpSignal& f, double tau0, double tau_max, const CrossingSearch& opt,
                                        int* evals, UnprovenSteps* unproven) {
     SignalScan scan(f, 1.0, tau_max);
+    if (!(scan.size() > 0.0)) return std::nullopt;
     double tau = tau0;
     ScanPoint p = scan.evaluate(tau);
     double fv = p.value;
@@ -49,6 +62,7 @@ std::optional<double> first_upcrossing(const ExpSignal& f, double tau0, double t
     double fp = p.slope;
     while (tau < tau_max) {
         if (evals) ++*evals;
+        charge_evaluations(opt.budget);
         if (fv > 0.0) return tau;  // already positive (caller's state was inconsistent by more than roundoff)
         if (fv == 0.0 && fp > 0.0 && !first) return tau;
         if (fv == 0.0 && fp > 0.0 && first) {
@@ -83,7 +97,7 @@ std::optional<double> first_upcrossing(const ExpSignal& f, double tau0, double t
 }
 
 SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double size_tol, double rel_tol, double h_min,
-                             int* evals, double floor, double sign) {
+                             int* evals, double floor, double sign, long* budget) {
     SignalScan scan(f, sign, tau_end);
     const double abs_tol = size_tol * scan.size();
     SignalMaximum best{floor, -1.0};
@@ -103,12 +117,16 @@ SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double size_tol
         bool operator<(const Interval& o) const { return bound < o.bound; }
     };
     std::vector<Interval> heap;
+    // Without a run's budget, a bound of its own: no search runs without a limit on its work.
+    long own_budget = 6000000;
+    if (!budget) budget = &own_budget;
     const ScanPoint p0 = scan.evaluate(0.0);
     const ScanPoint p1 = scan.evaluate(tau_end);
     consider(p0);
     consider(p1);
     heap.push_back({scan.upper_bound(p0, p1), p0, p1});
-    for (int guard = 0; !heap.empty() && guard < 2000000; ++guard) {
+    while (!heap.empty()) {
+        charge_evaluations(budget, 3);
         std::pop_heap(heap.begin(), heap.end());
         const Interval iv = heap.back();
         heap.pop_back();

@@ -13,8 +13,17 @@ namespace vi {
 struct CrossingSearch {
     double h_min = 0.0;    // smallest step: a crossing up and back down within h_min may be missed
     double t_tol = 0.0;    // width of the final bracket of a root
+    // Evaluations left for the whole run (nullptr: unbounded). Every search charges its evaluations;
+    // at zero it throws WorkLimitReached naming solver.max_steps. The stop flag and the thread's time
+    // limit are checked as it goes (model/run_control.hpp).
+    long* budget = nullptr;
 };
 
+// Charges n evaluations to a budget (nullptr: none) and checks the stop flag now and then; throws
+// WorkLimitReached when the budget is spent.
+void charge_evaluations(long* budget, long n = 1);
+
+// A signal that is exactly zero (no terms at all: a beam at rest on a zero-gap support) never crosses.
 // The first tau in (tau0, tau_max] where f turns positive, given f(tau0) <= 0 (a value within
 // roundoff of zero at tau0 counts as zero; then the sign of f' decides). From tau, the next point
 // tau + h is accepted only if an upper bound of f over [tau, tau + h] is negative: f cannot reach
@@ -43,6 +52,6 @@ struct SignalMaximum {
 // and, when nothing does, the result is {floor, -1}. sign = -1 finds the minimum of f (as -value).
 SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double size_tol, double rel_tol, double h_min,
                              int* evaluations = nullptr, double floor = -std::numeric_limits<double>::infinity(),
-                             double sign = 1.0);
+                             double sign = 1.0, long* budget = nullptr);
 
 }  // namespace vi

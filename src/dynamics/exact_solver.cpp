@@ -5,12 +5,14 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 #include <stdexcept>
 #include <limits>
 #include <string>
 
 #include "dynamics/event_search.hpp"
 #include "dynamics/exact_state.hpp"
+#include "model/run_control.hpp"
 
 namespace vi {
 namespace {
@@ -26,7 +28,8 @@ double seconds_since(Clock::time_point t0) { return std::chrono::duration<double
 SignalMaximum maximum_over(const ExpSignal& f, double tau_end, const CrossingSearch& cs, int* evals,
                            double floor = -std::numeric_limits<double>::infinity(), double rel_tol = 1e-9,
                            double sign = 1.0) {
-    return global_maximum(f, tau_end, 64.0 * std::numeric_limits<double>::epsilon(), rel_tol, cs.t_tol, evals, floor, sign);
+    return global_maximum(f, tau_end, 64.0 * std::numeric_limits<double>::epsilon(), rel_tol, cs.t_tol, evals, floor, sign,
+                          cs.budget);
 }
 
 // y_max is sought everywhere after the first onset; the deepest tip deflection only while some
@@ -54,6 +57,40 @@ void track_extremes(const PieceSolution& s, double t, double tau_e, int nc, bool
     ex.valid = true;
 }
 
+// A contact that switched at this instant and wants to switch back at once sits on a tangency: its
+// force F is zero to roundoff with a slope at roundoff too, and the two states' event functions each
+// see the other state as the consistent one (the values are noise). Both states share the leading
+// term of F's expansion (they differ only by the effect of a force that is itself that small), so
+// the sign of F a little ahead decides: the first point tau_j = h_min 4^j at which |F| (or the
+// penetration d) is clear of roundoff. Returns that point and whether the contact is closed there
+// (F > 0 and d > 0); nullopt when F and d stay at roundoff over the whole piece (nothing decides:
+// the contact carries no force either way and the current state is kept).
+struct Tangency {
+    double tau = 0.0;
+    bool closed = false;
+    double excess = 0.0;  // largest |F| within roundoff met before tau, relative to F's size
+};
+std::optional<Tangency> resolve_tangency(const ExpSignal& F, const ExpSignal& d, double span, double h_min, long* budget) {
+    constexpr double kEps = std::numeric_limits<double>::epsilon();
+    const double f_noise = 64.0 * kEps * std::max(F.bound(0.0, 0.0, 0), std::numeric_limits<double>::min());
+    const double d_noise = 64.0 * kEps * std::max(d.bound(0.0, 0.0, 0), std::numeric_limits<double>::min());
+    Tangency out;
+    for (double tau = std::max(h_min, 1e-300); tau < span * 4.0; tau *= 4.0) {
+        charge_evaluations(budget, 2);
+        const double at = std::min(tau, span);
+        const double f = F.value(at);
+        const double pen = d.value(at);
+        if (std::abs(f) > f_noise || std::abs(pen) > d_noise) {
+            out.tau = at;
+            out.closed = f > 0.0 && pen > 0.0;
+            return out;
+        }
+        out.excess = std::max(out.excess, std::abs(f) / (f_noise / (64.0 * kEps)));
+        if (at == span) break;
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o) {
@@ -71,6 +108,8 @@ TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o) {
     const double period1 = 2.0 * std::numbers::pi / model.base().omega[0];
     CrossingSearch cs;
     cs.h_min = o.h_min_periods * period1;
+    long steps_left = o.max_steps;
+    cs.budget = &steps_left;
 
     std::vector<bool> active = p.active0;
     if (active.size() != p.contacts.size()) active.assign(p.contacts.size(), false);
@@ -102,6 +141,9 @@ TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o) {
     int zero_length_run = 0;
     UnprovenSteps unproven;
     double t = 0.0;
+    long pieces = 0;
+    int last_switch = -1;       // the contact that switched last, and when
+    double last_switch_t = -1.0;
 
     {
         const PieceSolution& first = model.piece(active, x, 0.0, p.t_end);
@@ -112,6 +154,12 @@ TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o) {
     }
 
     while (t < p.t_end) {
+        check_run();
+        if (++pieces > o.max_events) {
+            throw WorkLimitReached("more than solver.max_events = " + std::to_string(o.max_events) +
+                                   " contact switches and load breakpoints before the horizon (at t = " +
+                                   std::to_string(t * 1e6) + " us; raise solver.max_events or shorten solver.horizon)");
+        }
         const auto bit = std::upper_bound(breaks.begin(), breaks.end(), t * (1 + 1e-15));
         const double piece_end = bit == breaks.end() ? p.t_end : std::min(p.t_end, *bit);
         const auto t_piece = Clock::now();
@@ -127,19 +175,41 @@ TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o) {
         const auto t_ev = Clock::now();
         double tau_e = span;
         int who = -1;
-        for (int c = 0; c < nc; ++c) {
-            const auto hit = first_upcrossing(s.event_function(c), 0.0, tau_e, cs, &res.stats.steps, &unproven);
-            if (hit && *hit <= tau_e) {
-                tau_e = *hit;
-                who = c;
-            }
-            if (s.waits_for_release(c)) {
-                // d reaching 0 only changes which function is watched: the piece ends, the state stays.
-                const auto out = first_upcrossing(s.release_function(c), 0.0, tau_e, cs, &res.stats.steps, &unproven);
-                if (out && *out < tau_e) {
-                    tau_e = *out;
-                    who = -1;
+        // `from[c]`: where the search for contact c starts (after a resolved tangency, past it).
+        std::vector<double> from(static_cast<std::size_t>(nc), 0.0);
+        const auto locate_events = [&]() {
+            tau_e = span;
+            who = -1;
+            for (int c = 0; c < nc; ++c) {
+                const double tau0 = std::min(from[static_cast<std::size_t>(c)], tau_e);
+                const auto hit = first_upcrossing(s.event_function(c), tau0, tau_e, cs, &res.stats.steps, &unproven);
+                if (hit && *hit <= tau_e) {
+                    tau_e = *hit;
+                    who = c;
                 }
+                if (s.waits_for_release(c)) {
+                    // d reaching 0 only changes which function is watched: the piece ends, the state stays.
+                    const auto out =
+                        first_upcrossing(s.release_function(c), tau0, tau_e, cs, &res.stats.steps, &unproven);
+                    if (out && *out < tau_e) {
+                        tau_e = *out;
+                        who = -1;
+                    }
+                }
+            }
+        };
+        locate_events();
+        if (who >= 0 && who == last_switch && t == last_switch_t && tau_e <= cs.t_tol) {
+            const std::size_t w = static_cast<std::size_t>(who);
+            const auto tg = resolve_tangency(s.contact_force(who), s.penetration(who), span, cs.h_min, cs.budget);
+            const bool keep = !tg || tg->closed == active[w];
+            if (keep) {
+                // The state just entered is the consistent one: search again from past the tangency.
+                from[w] = tg ? tg->tau : span;
+                ++unproven.count;
+                unproven.excess = std::max(unproven.excess, tg ? tg->excess : 0.0);
+                ++res.stats.tangencies;
+                locate_events();
             }
         }
         res.stats.event_location_s += seconds_since(t_ev);
@@ -171,14 +241,22 @@ TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o) {
         ++res.stats.steps;
         t += tau_e;
         if (tau_e <= cs.t_tol) {
+            // Only a contact set that keeps switching at one instant, with every tangency resolved,
+            // comes here 50 times: two contacts whose states decide each other, a truly ill-posed case.
             if (++zero_length_run > 50) {
-                throw std::runtime_error("transient: contact chatters without end near t = " + std::to_string(t) +
-                                         " s (zero-length contact states repeat)");
+                throw std::runtime_error(
+                    "transient: " + (who >= 0 ? "supports[" + std::to_string(who) + "]" : std::string("a support")) +
+                    " switches without end at t = " +
+                    std::to_string(t * 1e6) +
+                    " us (zero-length contact states repeat); give the support some damping "
+                    "(damping_ratio) or move it away from the other supports");
             }
         } else {
             zero_length_run = 0;
         }
         if (who >= 0) {
+            last_switch = who;
+            last_switch_t = t;
             ++res.stats.events;
             const double v_contact = s.contact_velocity(who).value(tau_e);
             const std::size_t w = static_cast<std::size_t>(who);

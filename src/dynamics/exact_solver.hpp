@@ -11,10 +11,13 @@ struct ExactOptions {
     bool energy = true;           // energy ledger and energy history (costs O(n^2) per sample)
     bool history = true;          // sample the time history at the output step
     double h_min_periods = 1e-9;  // smallest search step, in periods of the first free mode
+    long max_events = 1000000;    // pieces (contact switches, load breakpoints) before WorkLimitReached
+    long max_steps = 50000000;    // search evaluations before WorkLimitReached
 };
 
-// Solves the problem from t = 0 to p.t_end. Throws std::runtime_error on numerical trouble
-// (a state that cannot be decomposed, chattering without end, resonant undamped forcing).
+// Solves the problem from t = 0 to p.t_end. Throws std::runtime_error on numerical trouble (a state
+// that cannot be decomposed, resonant undamped forcing), WorkLimitReached when max_events or
+// max_steps is reached, and StopRequested / TimeLimitReached from check_run() (model/run_control.hpp).
 TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o = {});
 
 }  // namespace vi

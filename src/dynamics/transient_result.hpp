@@ -52,6 +52,9 @@ struct SolverStats {
     // that function's size [-] (event_search.hpp: how deep a contact missed there could have gone).
     int unproven_steps = 0;
     double unproven_excess = 0.0;
+    // Exact solver: contacts found on a tangency (F at roundoff, switching back at once) whose state
+    // was decided by the sign of F just ahead (docs/model.md §12); each also counts as unproven.
+    int tangencies = 0;
     std::string method;            // "exact" or "cvode"
 };
 

@@ -228,7 +228,8 @@ PointLoad read_load(const toml::table& t, const std::string& path, Position at, 
 
 void read_solver(const toml::table& t, Position at, Reading& r, SolverSettings& s) {
     FieldReader f(t, "solver", at, r.log,
-                  {"method", "horizon", "output_step", "group_gap", "settle_tolerance", "rtol", "min_search_step"});
+                  {"method", "horizon", "output_step", "group_gap", "settle_tolerance", "rtol", "min_search_step",
+                   "max_events", "max_steps"});
     if (auto v = f.choice("method", {"exact", "cvode"}, false)) {
         s.method = *v == "cvode" ? SolverSettings::Method::cvode : SolverSettings::Method::exact;
     }
@@ -245,6 +246,8 @@ void read_solver(const toml::table& t, Position at, Reading& r, SolverSettings& 
     if (auto v = f.quantity("settle_tolerance", Dimension::dimensionless, false)) s.settle_tolerance = *v;
     if (auto v = f.quantity("rtol", Dimension::dimensionless, false)) s.rtol = *v;
     if (auto v = f.quantity("min_search_step", Dimension::dimensionless, false)) s.min_search_step = *v;
+    if (auto v = f.integer("max_events", false)) s.max_events = static_cast<long>(*v);
+    if (auto v = f.integer("max_steps", false)) s.max_steps = static_cast<long>(*v);
     f.finish();
 }
 

@@ -101,6 +101,9 @@ struct SolverSettings {
     double settle_tolerance = 0.01;  // impacts below this fraction of the first peak penetration end T_p
     double rtol = 1e-10;             // CVODE relative tolerance
     double min_search_step = 1e-9;   // exact solver's smallest event-search step [periods of mode 1]
+    // Bounds on the work of one transient (docs/case-files.md): reaching one is an error naming it.
+    long max_events = 1000000;       // contact switches and load breakpoints over the horizon
+    long max_steps = 50000000;       // exact: event and extremum search evaluations; cvode: internal steps
 };
 
 // Where a case came from: the file and the line of every key read, for messages about problems

@@ -139,6 +139,12 @@ void check_solver(std::vector<CaseProblem>& out, const SolverSettings& s) {
     if (!(s.min_search_step >= 1e-15 && s.min_search_step <= 1e-3)) {
         out.push_back({"solver.min_search_step", "must lie in [1e-15, 1e-3] (periods of the first mode)"});
     }
+    if (!(s.max_events >= 1 && s.max_events <= 1000000000L)) {
+        out.push_back({"solver.max_events", "must lie in [1, 1e9]"});
+    }
+    if (!(s.max_steps >= 1000 && s.max_steps <= 100000000000L)) {
+        out.push_back({"solver.max_steps", "must lie in [1000, 1e11]"});
+    }
 }
 
 }  // namespace

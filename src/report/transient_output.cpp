@@ -82,7 +82,9 @@ nlohmann::json resolved_case_json(const Case& c, const BuiltProblem& b, const Im
                    {"group_gap_s", s.group_gap},
                    {"settle_tolerance", c.solver.settle_tolerance},
                    {"rtol", c.solver.rtol},
-                   {"min_search_step", c.solver.min_search_step}};
+                   {"min_search_step", c.solver.min_search_step},
+                   {"max_events", c.solver.max_events},
+                   {"max_steps", c.solver.max_steps}};
     j["omega1_rad_s"] = b.omega1;
     return j;
 }
