@@ -20,6 +20,7 @@
 #include "io/case_reader.hpp"
 #include "io/input_error.hpp"
 #include "io/text_file.hpp"
+#include "model/run_control.hpp"
 #include "report/sweep_store.hpp"
 #include "report/sweep_table.hpp"
 #include "support_model_option.hpp"
@@ -32,40 +33,12 @@
 namespace vi::cli {
 namespace {
 
-// Exit code of a sweep stopped by SIGINT or SIGTERM before every point was done (128 + SIGINT, the
-// shell's code for an interrupted command).
-constexpr int kExitInterrupted = 130;
-
-std::atomic<bool> g_stop{false};
-
-extern "C" void on_stop_signal(int) { g_stop.store(true); }
-
-// SIGINT and SIGTERM handlers for the length of a sweep. The first signal stops new points from
-// starting (running ones finish and reach the journal); the handler then resets itself, so a second
-// Ctrl-C ends the process at once, still without losing a point already journaled.
-class StopOnSignals {
-public:
-    StopOnSignals() {
-        static_assert(std::atomic<bool>::is_always_lock_free, "a signal handler may only touch lock-free atomics");
-        g_stop.store(false);
-        struct sigaction sa {};
-        sa.sa_handler = on_stop_signal;
-        sigemptyset(&sa.sa_mask);
-        sa.sa_flags = SA_RESETHAND;
-        sigaction(SIGINT, &sa, &old_int_);
-        sigaction(SIGTERM, &sa, &old_term_);
-    }
-    ~StopOnSignals() {
-        sigaction(SIGINT, &old_int_, nullptr);
-        sigaction(SIGTERM, &old_term_, nullptr);
-    }
-    StopOnSignals(const StopOnSignals&) = delete;
-    StopOnSignals& operator=(const StopOnSignals&) = delete;
-
-private:
-    struct sigaction old_int_ {};
-    struct sigaction old_term_ {};
-};
+// Exit code of a sweep stopped before every point was done: 128 + the signal (130 for SIGINT, 143
+// for SIGTERM; 130 when the stop came from another MPI rank). main.cpp installs the handlers: the
+// first signal sets the stop flag (model/run_control.hpp), which stops new points from starting and
+// makes the solvers of running points abandon them within milliseconds; finished points are already
+// in the journal. A second signal ends the process at once.
+int interrupted_exit_code() { return kExitStoppedBase + (stop_signal() > 0 ? stop_signal() : SIGINT); }
 
 struct Options {
     std::string case_path;
@@ -76,6 +49,8 @@ struct Options {
     int modes = 3;
     std::string support_model = "pin";
     bool resume = false;
+    bool retry_failed = false;
+    double point_timeout = 60.0;
 };
 
 // What every rank knows before the first point: the case, the grid and the columns.
@@ -90,6 +65,7 @@ struct Plan {
 
 Plan make_plan(const Options& o) {
     if (o.resume && o.out_dir.empty()) throw InputError("--resume: needs --out DIR, the folder holding the journal");
+    if (o.retry_failed && !o.resume) throw InputError("--retry-failed: goes with --resume (failed points of a journal)");
     std::string reason;
     const auto text = file_text(o.case_path, reason);
     if (!text) throw InputError(one_line(o.case_path + ": cannot read file (" + reason + ")"));
@@ -99,6 +75,7 @@ Plan make_plan(const Options& o) {
     p.settings.analysis = o.analysis == "modes" ? SweepAnalysis::modes : SweepAnalysis::simulate;
     p.settings.modes = o.modes;
     p.settings.support_model = parse_support_model(o.support_model);
+    p.settings.point_timeout = o.point_timeout;
     p.columns = sweep_result_columns(p.settings.analysis, p.settings.modes);
     p.fingerprint = fingerprint_of(sweep_identity_text(*text, p.grid, p.settings));
     p.csv_header = sweep_csv_header(p.grid, p.columns);
@@ -164,7 +141,7 @@ int finish_on_root(const Options& o, const Plan& plan, SweepStore& store, SweepR
                          "with --resume to finish it\n",
                          store.done(), store.points(), store.journal_path().c_str());
         }
-        return kExitInterrupted;
+        return interrupted_exit_code();
     }
     const auto failures = store.failures();
     info.points_done = store.done();
@@ -203,8 +180,9 @@ int run_sweep(const Options& o) {
 
     std::optional<SweepStore> store;
     if (root) {
-        code = attempt([&] { store.emplace(o.out_dir, o.resume, plan.grid.size(), plan.fingerprint, plan.csv_header); },
-                       message);
+        code = attempt([&] {
+            store.emplace(o.out_dir, o.resume, plan.grid.size(), plan.fingerprint, plan.csv_header, o.retry_failed);
+        }, message);
     }
     if ((code = agree(*ranks, code, message)) != kExitOk) return code;
 
@@ -214,10 +192,12 @@ int run_sweep(const Options& o) {
     const std::size_t result_columns = plan.columns.size();
 
     SweepProgress progress(plan.grid.size(), root ? store->done() : 0, root && stderr_is_terminal());
+    RunningPoints running;
     const LocalRun local = [&](const PointSink& emit, const std::atomic<bool>& stop) {
         run_sweep_points(
             plan.base, plan.grid, mine, plan.settings, threads,
-            [&](const SweepPointResult& r) { emit({r.index, r.status, sweep_csv_row(r, result_columns)}); }, &stop);
+            [&](const SweepPointResult& r) { emit({r.index, r.status, sweep_csv_row(r, result_columns)}); }, &stop,
+            &running);
     };
     const PointSink sink = [&](const FinishedPoint& p) {
         store->add(p);
@@ -226,8 +206,9 @@ int run_sweep(const Options& o) {
 
     const auto t0 = std::chrono::steady_clock::now();
     {
-        const StopOnSignals signals;
-        code = attempt([&] { ranks->collect(local, sink, g_stop); }, message);
+        // The line keeps moving while a point is slow: redrawn twice a second with the slowest point.
+        const ProgressTicker ticker(progress, running);
+        code = attempt([&] { ranks->collect(local, sink, stop_flag()); }, message);
     }
     progress.finish();
     if (code != kExitOk) {
@@ -296,6 +277,13 @@ CommandBody add_sweep_command(CLI::App& app) {
                     "Folder for sweep.csv and sweep.json, and for the journal of finished points (otherwise the CSV "
                     "goes to stdout and an interrupted sweep is lost)");
     sub->add_flag("--resume", opt->resume, "Finish the sweep interrupted in --out DIR without redoing its points");
+    sub->add_flag("--retry-failed", opt->retry_failed,
+                  "With --resume: compute again the points the journal holds as failed (error or timeout)");
+    sub->add_option("--point-timeout", opt->point_timeout,
+                    "Wall-clock limit of one point [s]; a point that reaches it gets 'timeout: ...' in its status "
+                    "and the sweep goes on (0: no limit)")
+        ->check(CLI::Range(0.0, 1e9))
+        ->capture_default_str();
     sub->add_option("--threads,-j", opt->threads,
                     "Worker threads per process (0: every core; under MPI, the cores shared by the ranks of a "
                     "machine)")

@@ -10,6 +10,8 @@ namespace vi::cli {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitFailure = 1;
 inline constexpr int kExitBadInput = 2;
+// A command stopped by a signal exits 128 + its number (130 for SIGINT, 143 for SIGTERM): the shell's habit.
+inline constexpr int kExitStoppedBase = 128;
 
 // What --version prints, and what reports name as their author.
 inline constexpr const char* kVersionText = "vibroimpact 0.1.0";

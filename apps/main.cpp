@@ -1,5 +1,6 @@
 // vibroimpact: finite-element simulation of vibro-impact dynamics in contact-type MEMS devices.
 
+#include <csignal>
 #include <cstdio>
 #include <exception>
 #include <map>
@@ -7,6 +8,25 @@
 
 #include "commands.hpp"
 #include "io/input_error.hpp"
+#include "model/run_control.hpp"
+
+namespace {
+
+extern "C" void on_stop_signal(int signal) { vi::request_stop(signal); }
+
+// SIGINT and SIGTERM set the stop flag that every solver loop checks (model/run_control.hpp): the
+// command abandons its work, writes nothing half-done and exits 128 + the signal. The handler then
+// resets itself, so a second signal ends the process at once.
+void stop_on_signals() {
+    struct sigaction sa {};
+    sa.sa_handler = on_stop_signal;
+    sigemptyset(&sa.sa_mask);
+    sa.sa_flags = SA_RESETHAND;
+    sigaction(SIGINT, &sa, nullptr);
+    sigaction(SIGTERM, &sa, nullptr);
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
     using namespace vi::cli;
@@ -40,9 +60,14 @@ int main(int argc, char** argv) {
         return kExitBadInput;
     }
 
+    stop_on_signals();
     for (CLI::App* sub : app.get_subcommands()) {
         try {
             return bodies.at(sub)();
+        } catch (const vi::StopRequested& s) {
+            std::fprintf(stderr, "vibroimpact: stopped by %s; nothing written\n",
+                         s.signal() == SIGTERM ? "SIGTERM" : s.signal() == SIGINT ? "SIGINT" : "a stop request");
+            return kExitStoppedBase + (s.signal() > 0 ? s.signal() : SIGINT);
         } catch (const vi::InputError& e) {
             std::fprintf(stderr, "vibroimpact: error: %s\n", e.what());
             return kExitBadInput;

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <string>
 
@@ -29,12 +30,43 @@ SweepProgress::SweepProgress(std::size_t total, std::size_t already_done, bool e
 }
 
 void SweepProgress::point_done() {
+    const std::lock_guard<std::mutex> lock(mutex_);
     ++done_;
     ++computed_;
     if (enabled_ && Clock::now() - last_draw_ > std::chrono::milliseconds(200)) draw();
 }
 
+void SweepProgress::tick(const RunningPoints& running) {
+    const auto [index, seconds] = running.slowest();
+    const std::lock_guard<std::mutex> lock(mutex_);
+    slow_.clear();
+    if (index != SIZE_MAX && seconds >= 2.0) {
+        slow_ = "  slowest: point " + std::to_string(index) + ", " + duration_text(seconds) + " running";
+    }
+    if (enabled_) draw();
+}
+
+ProgressTicker::ProgressTicker(SweepProgress& progress, const RunningPoints& running) {
+    if (!stderr_is_terminal()) return;
+    thread_ = std::thread([this, &progress, &running]() {
+        std::unique_lock<std::mutex> lock(mutex_);
+        while (!wake_.wait_for(lock, std::chrono::milliseconds(500), [this] { return done_; })) {
+            progress.tick(running);
+        }
+    });
+}
+
+ProgressTicker::~ProgressTicker() {
+    {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        done_ = true;
+    }
+    wake_.notify_all();
+    if (thread_.joinable()) thread_.join();
+}
+
 void SweepProgress::finish() {
+    const std::lock_guard<std::mutex> lock(mutex_);
     if (!enabled_) return;
     draw();
     std::fputc('\n', stderr);
@@ -58,8 +90,8 @@ void SweepProgress::draw() {
         left = duration_text(static_cast<double>(total_ - done_) / per_s);
     }
     // \r and "erase to end of line": the line is redrawn in place.
-    std::fprintf(stderr, "\r\033[Ksweep [%s] %zu/%zu points  %s  left %s  elapsed %s", bar.c_str(), done_, total_,
-                 rate.c_str(), left.c_str(), duration_text(elapsed).c_str());
+    std::fprintf(stderr, "\r\033[Ksweep [%s] %zu/%zu points  %s  left %s  elapsed %s%s", bar.c_str(), done_, total_,
+                 rate.c_str(), left.c_str(), duration_text(elapsed).c_str(), slow_.c_str());
     std::fflush(stderr);
 }
 

@@ -1,11 +1,14 @@
 #include "analysis/sweep_runner.hpp"
 
 #include <exception>
+#include <cstdint>
 #include <mutex>
+#include <optional>
 
 #include "analysis/parallel_for.hpp"
 #include "io/input_error.hpp"
 #include "model/case_checks.hpp"
+#include "model/run_control.hpp"
 
 namespace vi {
 namespace {
@@ -37,14 +40,20 @@ SweepPointResult run_sweep_point(const Case& base, const SweepGrid& grid, std::s
     r.index = index;
     r.parameters = grid.values_at(index);
     try {
+        const ScopedTimeLimit limit(settings.point_timeout, "--point-timeout");
         const Case c = grid.case_at(base, index);
         const std::vector<CaseProblem> problems = check_case(c);
         if (!problems.empty()) throw InputError(problems.front().key + ": " + problems.front().message);
         r.cells = analyse(c, settings);
         r.status = "ok";
+    } catch (const TimeLimitReached& e) {
+        r.cells.clear();
+        r.status = one_line(e.what());
     } catch (const std::exception& e) {
         r.cells.clear();
         r.status = one_line("error: " + std::string(e.what()));
+    } catch (const StopRequested&) {
+        throw;
     } catch (...) {
         r.cells.clear();
         r.status = "error: unknown failure";
@@ -52,19 +61,51 @@ SweepPointResult run_sweep_point(const Case& base, const SweepGrid& grid, std::s
     return r;
 }
 
+void RunningPoints::started(std::size_t index) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    since_[index] = std::chrono::steady_clock::now();
+}
+
+void RunningPoints::finished(std::size_t index) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    since_.erase(index);
+}
+
+std::pair<std::size_t, double> RunningPoints::slowest() const {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    std::pair<std::size_t, double> out{SIZE_MAX, 0.0};
+    const auto now = std::chrono::steady_clock::now();
+    for (const auto& [index, t0] : since_) {
+        const double s = std::chrono::duration<double>(now - t0).count();
+        if (out.first == SIZE_MAX || s > out.second) out = {index, s};
+    }
+    return out;
+}
+
 std::size_t run_sweep_points(const Case& base, const SweepGrid& grid, const std::vector<std::size_t>& indices,
                              const SweepSettings& settings, int threads,
                              const std::function<void(const SweepPointResult&)>& done,
-                             const std::atomic<bool>* stop) {
+                             const std::atomic<bool>* stop, RunningPoints* running) {
     std::mutex done_mutex;
-    return parallel_for(
+    std::atomic<std::size_t> reported{0};
+    parallel_for(
         indices.size(), threads,
         [&](std::size_t k) {
-            const SweepPointResult r = run_sweep_point(base, grid, indices[k], settings);
+            if (running) running->started(indices[k]);
+            std::optional<SweepPointResult> r;
+            try {
+                r = run_sweep_point(base, grid, indices[k], settings);
+            } catch (const StopRequested&) {
+                // Abandoned half-way: not a result, it stays to do (the journal never sees it).
+            }
+            if (running) running->finished(indices[k]);
+            if (!r) return;
             const std::lock_guard<std::mutex> lock(done_mutex);
-            done(r);
+            done(*r);
+            ++reported;
         },
         stop);
+    return reported.load();
 }
 
 }  // namespace vi

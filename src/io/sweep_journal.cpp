@@ -65,7 +65,8 @@ JournalContents SweepJournal::read(const std::string& path, const std::string& f
             throw InputError(one_line(path + ":" + std::to_string(n + 1) +
                                       ": not a journal line \"<index>,<row>\"; remove the journal to start over"));
         }
-        out.rows.emplace(index, std::string(line.substr(comma + 1)));
+        // The last line of a point wins: a failed point computed again after --retry-failed.
+        out.rows[index] = std::string(line.substr(comma + 1));
     }
     return out;
 }

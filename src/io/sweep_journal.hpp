@@ -12,7 +12,7 @@ namespace vi {
 
 // The points a journal holds, by grid index.
 struct JournalContents {
-    std::map<std::size_t, std::string> rows;  // grid index -> CSV row (no newline)
+    std::map<std::size_t, std::string> rows;  // grid index -> CSV row (no newline); a point's last line
     std::size_t complete_bytes = 0;           // length of the file up to its last complete line
     bool torn_tail = false;                   // the file ended inside a line (a hard kill mid-write)
 };

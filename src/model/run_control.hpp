@@ -9,10 +9,12 @@
 namespace vi {
 
 // Thrown by check_run() once a stop was requested (a signal, or a sweep that stops its workers):
-// the work is abandoned, nothing of it is a result.
-class StopRequested : public std::runtime_error {
+// the work is abandoned, nothing of it is a result. Deliberately not a std::exception: the places
+// that turn a failed computation into a reported result (a sweep point's status, a gap in a paper
+// figure) catch std::exception, and a stop must pass through them to the command.
+class StopRequested {
 public:
-    explicit StopRequested(int signal) : std::runtime_error("stopped by a signal"), signal_(signal) {}
+    explicit StopRequested(int signal) : signal_(signal) {}
     [[nodiscard]] int signal() const { return signal_; }  // the signal's number, or 0
 private:
     int signal_;

@@ -9,7 +9,7 @@
 namespace vi {
 
 SweepStore::SweepStore(const std::string& out_dir, bool resume, std::size_t points, const std::string& fingerprint,
-                       std::string csv_header)
+                       std::string csv_header, bool retry_failed)
     : csv_header_(std::move(csv_header)), rows_(points), failed_(points, false) {
     if (out_dir.empty()) return;
     namespace fs = std::filesystem;
@@ -24,7 +24,9 @@ SweepStore::SweepStore(const std::string& out_dir, bool resume, std::size_t poin
     if (exists) {
         const JournalContents contents = SweepJournal::read(journal_path_, fingerprint, points, csv_header_);
         for (const auto& [index, row] : contents.rows) {
-            add({index, sweep_row_status(row), row});
+            const std::string status = sweep_row_status(row);
+            if (retry_failed && status != "ok") continue;
+            add({index, status, row});
         }
         from_journal_ = done_;
         journal_.emplace(SweepJournal::reopen(journal_path_, contents));

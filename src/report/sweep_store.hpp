@@ -24,9 +24,10 @@ public:
     // out_dir empty: rows kept in memory only. Otherwise the folder gets a journal: a new one, or
     // with `resume` the one an interrupted run left (whose points are then done). Throws InputError
     // when a journal is there without `resume`, when it belongs to another sweep, or when the
-    // folder cannot be made; std::runtime_error when the journal cannot be written.
+    // folder cannot be made; std::runtime_error when the journal cannot be written. With
+    // `retry_failed`, the journal's failed points (error or timeout) are left to compute again.
     SweepStore(const std::string& out_dir, bool resume, std::size_t points, const std::string& fingerprint,
-               std::string csv_header);
+               std::string csv_header, bool retry_failed = false);
 
     // Grid indices not done yet, ascending.
     [[nodiscard]] std::vector<std::size_t> todo() const;
