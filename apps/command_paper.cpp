@@ -9,15 +9,15 @@
 #include <stdexcept>
 #include <string>
 
-#include "analysis/paper_claims.hpp"
-#include "analysis/paper_study.hpp"
+#include "study/paper/claims.hpp"
+#include "study/paper/study.hpp"
 #include "commands.hpp"
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 #include "io/output_files.hpp"
 #include "io/units.hpp"
-#include "report/figure_gnuplot.hpp"
-#include "report/paper_figures.hpp"
-#include "report/paper_report.hpp"
+#include "plot/figure_gnuplot.hpp"
+#include "study/paper/figures.hpp"
+#include "study/paper/report.hpp"
 
 namespace vi::cli {
 namespace {

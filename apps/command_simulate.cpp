@@ -5,10 +5,10 @@
 #include <memory>
 #include <string>
 
-#include "analysis/simulation.hpp"
+#include "impacts/simulation.hpp"
 #include "commands.hpp"
 #include "io/case_reader.hpp"
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 #include "io/output_files.hpp"
 #include "report/transient_output.hpp"
 

@@ -6,10 +6,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "analysis/support_scan.hpp"
+#include "modal/support_scan.hpp"
 #include "commands.hpp"
 #include "io/case_reader.hpp"
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 #include "io/output_files.hpp"
 #include "io/range_spec.hpp"
 #include "report/modal_output.hpp"

@@ -11,23 +11,23 @@
 #include <string>
 #include <vector>
 
-#include "analysis/case_paths.hpp"
-#include "analysis/parallel_for.hpp"
-#include "analysis/sweep_identity.hpp"
-#include "analysis/sweep_ranks.hpp"
-#include "analysis/sweep_runner.hpp"
+#include "sweep/case_paths.hpp"
+#include "model/parallel_for.hpp"
+#include "sweep/identity.hpp"
+#include "sweep/ranks.hpp"
+#include "sweep/runner.hpp"
 #include "commands.hpp"
 #include "io/case_reader.hpp"
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 #include "io/text_file.hpp"
 #include "model/run_control.hpp"
-#include "report/sweep_store.hpp"
-#include "report/sweep_table.hpp"
+#include "sweep/store.hpp"
+#include "sweep/table.hpp"
 #include "support_model_option.hpp"
 #include "sweep_progress.hpp"
 
 #ifdef VI_HAVE_MPI
-#include "analysis/sweep_mpi.hpp"
+#include "sweep/mpi.hpp"
 #endif
 
 namespace vi::cli {

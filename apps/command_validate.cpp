@@ -7,10 +7,10 @@
 #include <memory>
 #include <string>
 
-#include "analysis/validation_report.hpp"
+#include "validation/report.hpp"
 #include "commands.hpp"
 #include "io/case_reader.hpp"
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 #include "io/output_files.hpp"
 
 namespace vi::cli {

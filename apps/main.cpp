@@ -7,7 +7,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 #include "model/run_control.hpp"
 
 namespace {

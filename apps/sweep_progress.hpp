@@ -8,7 +8,7 @@
 #include <mutex>
 #include <thread>
 
-#include "analysis/sweep_runner.hpp"
+#include "sweep/runner.hpp"
 
 namespace vi::cli {
 

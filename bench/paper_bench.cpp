@@ -13,13 +13,13 @@
 #include <string>
 #include <vector>
 
-#include "analysis/paper_claims.hpp"
-#include "analysis/paper_study.hpp"
-#include "analysis/parallel_for.hpp"
+#include "study/paper/claims.hpp"
+#include "study/paper/study.hpp"
+#include "model/parallel_for.hpp"
 #include "io/output_files.hpp"
-#include "report/figure_gnuplot.hpp"
-#include "report/paper_figures.hpp"
-#include "report/paper_report.hpp"
+#include "plot/figure_gnuplot.hpp"
+#include "study/paper/figures.hpp"
+#include "study/paper/report.hpp"
 
 namespace {
 

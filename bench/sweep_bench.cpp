@@ -10,10 +10,10 @@
 #include <cstdlib>
 #include <string>
 
-#include "analysis/sweep_grid.hpp"
-#include "analysis/sweep_runner.hpp"
+#include "sweep/grid.hpp"
+#include "sweep/runner.hpp"
 #include "io/case_reader.hpp"
-#include "report/sweep_table.hpp"
+#include "sweep/table.hpp"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "analysis/simulation.hpp"
+#include "impacts/simulation.hpp"
 #include "dynamics/cvode_solver.hpp"
 #include "dynamics/exact_solver.hpp"
 #include "io/case_reader.hpp"

@@ -9,7 +9,7 @@
 
 #include "io/case_reader.hpp"
 #include "case_text_fixture.hpp"
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 
 namespace {
 

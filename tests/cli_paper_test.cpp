@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/closed_forms.hpp"
+#include "validation/closed_forms.hpp"
 #include "support/run_command.hpp"
 #include "support/test_files.hpp"
 

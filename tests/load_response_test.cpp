@@ -1,5 +1,5 @@
 // Time-dependent loads Q(t) through both solvers against the closed-form response of a damped
-// mass-spring (analysis/loaded_oscillator.hpp): harmonic (with phase and offset), step and tabulated
+// mass-spring (validation/loaded_oscillator.hpp): harmonic (with phase and offset), step and tabulated
 // (ramp) forcing, and the energy ledger's external work under each. Measured: exact solver within
 // 3.4e-15 of the closed form, ledger closed to 3.9e-15; CVODE (rtol 1e-10) within 2.7e-8
 // (docs/validation.md section 9).
@@ -11,7 +11,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "analysis/loaded_oscillator.hpp"
+#include "validation/loaded_oscillator.hpp"
 #include "dynamics/cvode_solver.hpp"
 #include "dynamics/exact_solver.hpp"
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "analysis/closed_forms.hpp"
+#include "validation/closed_forms.hpp"
 #include "modal/eigen_solver.hpp"
 #include "modal/modal_analysis.hpp"
 #include "paper_cases.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // Cases built in code for tests: the library's reference problems under the tests' namespace.
 
-#include "analysis/reference_problems.hpp"
+#include "validation/reference_problems.hpp"
 
 namespace vi::test {
 

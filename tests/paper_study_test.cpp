@@ -7,13 +7,13 @@
 #include <fstream>
 #include <sstream>
 
-#include "analysis/curve_features.hpp"
-#include "analysis/paper_cases.hpp"
-#include "analysis/paper_examples.hpp"
-#include "analysis/paper_study.hpp"
-#include "io/input_error.hpp"
-#include "report/base64.hpp"
-#include "report/report_document.hpp"
+#include "study/paper/curve_features.hpp"
+#include "study/paper/cases.hpp"
+#include "study/paper/examples.hpp"
+#include "study/paper/study.hpp"
+#include "model/input_error.hpp"
+#include "plot/base64.hpp"
+#include "plot/report_document.hpp"
 #include "support/run_command.hpp"
 
 namespace vi {

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "analysis/parallel_for.hpp"
+#include "model/parallel_for.hpp"
 
 namespace {
 

@@ -9,7 +9,7 @@
 
 #include "dynamics/problem_builder.hpp"
 #include "io/case_reader.hpp"
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 #include "modal/modal_analysis.hpp"
 #include "paper_cases.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "analysis/closed_forms.hpp"
+#include "validation/closed_forms.hpp"
 #include "modal/modal_analysis.hpp"
 #include "modal/shape_points.hpp"
 #include "paper_cases.hpp"

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "analysis/simulation.hpp"
+#include "impacts/simulation.hpp"
 #include "io/case_reader.hpp"
 
 namespace vi {

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "analysis/simulation.hpp"
+#include "impacts/simulation.hpp"
 #include "dynamics/problem_builder.hpp"
 #include "dynamics/state_modes.hpp"
 #include "io/case_reader.hpp"

@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "analysis/reference_problems.hpp"
+#include "validation/reference_problems.hpp"
 #include "dynamics/secular.hpp"
 #include "dynamics/state_modes.hpp"
 #include "fem/system.hpp"

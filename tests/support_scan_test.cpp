@@ -4,9 +4,9 @@
 
 #include <cmath>
 
-#include "analysis/closed_forms.hpp"
-#include "analysis/reference_problems.hpp"
-#include "analysis/support_scan.hpp"
+#include "validation/closed_forms.hpp"
+#include "validation/reference_problems.hpp"
+#include "modal/support_scan.hpp"
 #include "paper_cases.hpp"
 
 namespace vi {

@@ -8,14 +8,14 @@
 #include <string>
 #include <vector>
 
-#include "analysis/sweep_grid.hpp"
-#include "analysis/sweep_identity.hpp"
-#include "analysis/sweep_ranks.hpp"
+#include "sweep/grid.hpp"
+#include "sweep/identity.hpp"
+#include "sweep/ranks.hpp"
 #include "case_text_fixture.hpp"
 #include "io/case_reader.hpp"
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 #include "io/sweep_journal.hpp"
-#include "report/sweep_table.hpp"
+#include "sweep/table.hpp"
 #include "support/run_command.hpp"
 
 namespace vi {

@@ -6,10 +6,10 @@
 #include <string>
 #include <vector>
 
-#include "analysis/case_paths.hpp"
+#include "sweep/case_paths.hpp"
 #include "case_text_fixture.hpp"
 #include "io/case_reader.hpp"
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 #include "model/case_checks.hpp"
 
 namespace vi {

@@ -1,7 +1,7 @@
 #pragma once
 // Small transient problems built directly (without a case file) for solver tests.
 
-#include "analysis/reference_problems.hpp"
+#include "validation/reference_problems.hpp"
 #include "paper_cases.hpp"
 
 namespace vi::test {

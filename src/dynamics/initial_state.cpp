@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 
 namespace vi {
 namespace {

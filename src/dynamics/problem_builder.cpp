@@ -7,7 +7,7 @@
 #include <string>
 
 #include "dynamics/initial_state.hpp"
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 #include "modal/eigen_solver.hpp"
 #include "model/case_checks.hpp"
 

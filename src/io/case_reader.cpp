@@ -12,7 +12,7 @@
 #include <system_error>
 #include <vector>
 
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 #include "io/load_table.hpp"
 #include "io/text_file.hpp"
 #include "io/toml_fields.hpp"

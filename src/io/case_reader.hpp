@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 #include "model/case.hpp"
 
 namespace vi {

@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 #include "io/text_file.hpp"
 #include "io/units.hpp"
 

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "io/input_error.hpp"
+#include "model/input_error.hpp"
 #include "io/text_file.hpp"
 
 namespace vi {

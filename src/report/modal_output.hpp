@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/support_scan.hpp"
+#include "modal/support_scan.hpp"
 #include "io/csv_table.hpp"
 #include "io/output_files.hpp"
 #include "modal/modal_analysis.hpp"

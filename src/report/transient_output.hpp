@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "analysis/impact_summary.hpp"
+#include "impacts/impact_summary.hpp"
 #include "dynamics/problem_builder.hpp"
 #include "dynamics/transient_result.hpp"
 #include "io/csv_table.hpp"

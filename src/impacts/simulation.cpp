@@ -1,0 +1,58 @@
+#include "impacts/simulation.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <string>
+
+#include "dynamics/cvode_solver.hpp"
+#include "model/input_error.hpp"
+
+namespace vi {
+
+SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
+    if (!(c.solver.horizon > 0.0)) throw InputError("solver.horizon: required for a transient (e.g. \"200 us\")");
+    SimulationRun run;
+    run.built = build_transient_problem(c);
+    const TransientProblem& p = run.built.problem;
+    if (c.solver.method == SolverSettings::Method::cvode) {
+        CvodeOptions co;
+        co.rtol = c.solver.rtol;
+        co.max_steps = c.solver.max_steps;
+        co.max_events = c.solver.max_events;
+        run.result = solve_cvode(p, co);
+    } else {
+        ExactOptions eo;
+        eo.history = o.history;
+        eo.energy = o.energy;
+        eo.h_min_periods = c.solver.min_search_step;
+        eo.max_events = c.solver.max_events;
+        eo.max_steps = c.solver.max_steps;
+        run.result = solve_exact(p, eo);
+    }
+    const bool touching_at_start = std::find(p.active0.begin(), p.active0.end(), true) != p.active0.end();
+    // Released at rest from its own static equilibrium with no load acting: nothing ever moves, and
+    // that is the answer, not a horizon too short (shared/cases/rest_on_support.toml).
+    const double q_scale = std::max(run.built.q_equilibrium.lpNorm<Eigen::Infinity>(), p.q0.lpNorm<Eigen::Infinity>());
+    const bool at_rest = p.loads.empty() && p.v0.isZero(0.0) &&
+                         (p.q0 - run.built.q_equilibrium).lpNorm<Eigen::Infinity>() <=
+                             64.0 * std::numeric_limits<double>::epsilon() * q_scale;
+    if (run.result.episodes.empty() && !touching_at_start && !p.contacts.empty() && !at_rest) {
+        throw InputError("solver.horizon: too short to see the first impact (no contact before " +
+                         std::to_string(p.t_end * 1e6) + " us)");
+    }
+    ImpactSettings s;
+    s.omega1 = run.built.omega1;
+    s.group_gap = c.solver.group_gap;
+    s.settle_tolerance = c.solver.settle_tolerance;
+    s.length = c.beam.length;
+    if (p.tip_dof >= 0) s.tip_equilibrium = run.built.q_equilibrium[p.tip_dof];
+    if (!p.contacts.empty()) s.contact_equilibrium = run.built.q_equilibrium[p.contacts.front().dof];
+    run.summary = summarize_impacts(run.result, s);
+    if (at_rest && run.summary.impacts.empty()) {
+        run.summary.Tp = 0.0;
+        run.summary.Tp_reason = "at_rest";
+    }
+    return run;
+}
+
+}  // namespace vi

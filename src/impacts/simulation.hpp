@@ -1,0 +1,28 @@
+#pragma once
+// One transient run of a case from start to summary: build, solve (exact or CVODE), summarise.
+
+#include "impacts/impact_summary.hpp"
+#include "dynamics/exact_solver.hpp"
+#include "dynamics/problem_builder.hpp"
+#include "dynamics/transient_result.hpp"
+#include "model/case.hpp"
+
+namespace vi {
+
+struct SimulationRun {
+    BuiltProblem built;
+    TransientResult result;
+    ImpactSummary summary;
+};
+
+// What to compute besides the impact characteristics.
+struct SimulationOptions {
+    bool history = true;  // sampled time history
+    bool energy = true;   // energy ledger (exact solver: O(n^2) per sample and per piece)
+};
+
+// Runs the case's transient. Throws InputError when the case cannot run (no horizon, a horizon too
+// short to see the first impact) and std::runtime_error on numerical trouble.
+SimulationRun run_simulation(const Case& c, const SimulationOptions& o = {});
+
+}  // namespace vi

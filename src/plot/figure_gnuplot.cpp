@@ -1,0 +1,174 @@
+#include "plot/figure_gnuplot.hpp"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "model/parallel_for.hpp"
+#include "io/text_file.hpp"
+
+namespace vi {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool executable(const fs::path& p) {
+    std::error_code ec;
+    return fs::is_regular_file(p, ec) && access(p.c_str(), X_OK) == 0;
+}
+
+// A file gnuplot wrote; empty when it wrote none (the caller says which).
+std::string slurp(const fs::path& p) {
+    std::string reason;
+    return file_text(p.string(), reason).value_or(std::string());
+}
+
+void put(const fs::path& p, const std::string& text) {
+    std::ofstream out(p, std::ios::binary);
+    out << text;
+    if (!out) throw std::runtime_error(p.string() + ": cannot write");
+}
+
+// Runs `program script` in `dir` with output to files there; returns the exit status (127: not run).
+int run_in(const std::string& program, const std::string& script, const fs::path& dir) {
+    const std::string out = (dir / ("." + script + ".out")).string();
+    const std::string dir_s = dir.string();
+    std::vector<std::string> args{program, script};
+    std::vector<char*> argv;
+    for (auto& a : args) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const pid_t pid = fork();
+    if (pid < 0) return 127;
+    if (pid == 0) {
+        // Only async-signal-safe calls between fork and exec (the parent has threads).
+        if (chdir(dir_s.c_str()) != 0) _exit(127);
+        const int fo = open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int fi = open("/dev/null", O_RDONLY);
+        if (fo < 0 || fi < 0) _exit(127);
+        dup2(fi, 0);
+        dup2(fo, 1);
+        dup2(fo, 2);
+        execv(argv[0], argv.data());
+        _exit(127);
+    }
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0) {
+        if (errno != EINTR) return 127;
+    }
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
+}
+
+std::string first_line(const std::string& text) {
+    std::istringstream in(text);
+    std::string line, last;
+    while (std::getline(in, line)) {
+        if (line.find_first_not_of(" \t^") == std::string::npos) continue;
+        // gnuplot echoes the offending command before its message; the message says more.
+        last = line;
+        if (line.find("line ") != std::string::npos || line.find("rror") != std::string::npos) return line;
+    }
+    return last.empty() ? "no output" : last;
+}
+
+// A unique fresh folder under the system temp folder.
+fs::path temp_folder() {
+    std::string templ = (fs::temp_directory_path() / "vibroimpact_figures_XXXXXX").string();
+    if (mkdtemp(templ.data()) == nullptr) throw std::runtime_error("cannot create a temporary folder for gnuplot");
+    return templ;
+}
+
+}  // namespace
+
+std::string gp_quote(const std::string& s) {
+    std::string out = "'";
+    for (char c : s) {
+        out += c;
+        if (c == '\'') out += '\'';
+    }
+    return out + "'";
+}
+
+std::optional<std::string> find_gnuplot(const std::string& requested) {
+    const std::string name = requested.empty() ? "gnuplot" : requested;
+    if (name.find('/') != std::string::npos) {
+        if (executable(name)) return fs::absolute(name).string();
+        return std::nullopt;
+    }
+    const char* path = std::getenv("PATH");
+    std::istringstream dirs(path ? path : "/usr/bin:/bin");
+    std::string dir;
+    while (std::getline(dirs, dir, ':')) {
+        if (dir.empty()) continue;
+        const fs::path candidate = fs::path(dir) / name;
+        if (executable(candidate)) return candidate.string();
+    }
+    return std::nullopt;
+}
+
+std::string gnuplot_script(const FigureSpec& f) {
+    std::ostringstream s;
+    s << "# " << f.title << "\n# Drawn by `vibroimpact paper` from ";
+    for (std::size_t i = 0; i < f.data.size(); ++i) s << (i ? ", " : "") << f.data[i].first;
+    s << "; rerun in this folder with: gnuplot " << f.name << ".gp\n"
+      << "reset\nset encoding utf8\nset datafile separator comma\n"
+      << "# The pngcairo terminal: anti-aliased PNG, DejaVu Sans (fonts-dejavu-core).\n"
+      << "set terminal pngcairo size " << f.width << "," << f.height << " font 'DejaVu Sans,11' enhanced\n"
+      << "set output " << gp_quote(f.name + ".png") << "\n"
+      << f.plot << "\nunset output\nreset\nset datafile separator comma\n"
+      << "set terminal svg size " << f.width << "," << f.height << " font 'DejaVu Sans,11' enhanced background rgb 'white'\n"
+      << "set output " << gp_quote(f.name + ".svg") << "\n"
+      << f.plot << "\nunset output\nreset\n";
+    return s.str();
+}
+
+std::vector<RenderedFigure> render_figures(const std::string& gnuplot, const std::vector<FigureSpec>& figures, int threads) {
+    const fs::path dir = temp_folder();
+    std::vector<RenderedFigure> out(figures.size());
+    try {
+        for (std::size_t i = 0; i < figures.size(); ++i) {
+            const FigureSpec& f = figures[i];
+            for (const auto& [name, text] : f.data) put(dir / name, text);
+            out[i].script = gnuplot_script(f);
+            put(dir / (f.name + ".gp"), out[i].script);
+        }
+        // gnuplot's start (fonts, cairo) costs more than most figures: one process per thread, each
+        // loading its share of the figures' scripts.
+        const std::size_t batches = std::min<std::size_t>(figures.size(), static_cast<std::size_t>(resolve_thread_count(threads)));
+        parallel_for(batches, threads, [&](std::size_t b) {
+            std::string batch;
+            for (std::size_t i = b; i < figures.size(); i += batches) batch += "load " + gp_quote(figures[i].name + ".gp") + "\n";
+            const std::string name = ".batch" + std::to_string(b) + ".gp";
+            put(dir / name, batch);
+            const int status = run_in(gnuplot, name, dir);
+            const std::string log = slurp(dir / ("." + name + ".out"));
+            if (status != 0) {
+                throw std::runtime_error("gnuplot " + (status == 127 ? "could not be run (" + gnuplot + ")" : "failed: " + first_line(log)));
+            }
+            // gnuplot reports some problems (a column that does not exist) as warnings and carries on.
+            if (log.find("warning") != std::string::npos) throw std::runtime_error("gnuplot: " + first_line(log));
+        });
+        for (std::size_t i = 0; i < figures.size(); ++i) {
+            out[i].png = slurp(dir / (figures[i].name + ".png"));
+            out[i].svg = slurp(dir / (figures[i].name + ".svg"));
+            if (out[i].png.empty() || out[i].svg.empty()) throw std::runtime_error(figures[i].name + ".gp: gnuplot wrote no image");
+        }
+    } catch (...) {
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+        throw;
+    }
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+    return out;
+}
+
+}  // namespace vi

@@ -1,0 +1,188 @@
+// Figs. 2, 6, 7 and 8: the modes of the free cantilever and of the cantilever pinned at x0/l.
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "report/csv_text.hpp"
+#include "study/paper/figures.hpp"
+
+namespace vi::figure_detail {
+
+FigureSpec fig2(const PaperStudy& st) {
+    const FreeModes& fm = st.free_modes;
+    const int n = static_cast<int>(fm.shapes.size());
+    CsvText shapes;
+    shapes.header = {"x_over_l"};
+    for (int i = 1; i <= n; ++i) shapes.header.push_back("Y_" + std::to_string(i));
+    for (int i = 1; i <= n; ++i) shapes.header.push_back("Phi_" + std::to_string(i));
+    const std::size_t samples = n > 0 ? fm.shapes[0].x.size() : 0;
+    for (std::size_t k = 0; k < samples; ++k) {
+        std::vector<std::string> row{cell(fm.shapes[0].x[k] / fm.length)};
+        for (int i = 0; i < n; ++i) row.push_back(cell(fm.shapes[static_cast<std::size_t>(i)].v[k] * fm.amplitude_scale));
+        for (int i = 0; i < n; ++i) {
+            row.push_back(cell(fm.shapes[static_cast<std::size_t>(i)].theta[k] * fm.length * fm.amplitude_scale));
+        }
+        shapes.add(row);
+    }
+    CsvText points;
+    points.header = {"mode", "kind", "j", "x_over_l", "amplitude"};
+    for (int i = 0; i < n; ++i) {
+        const ShapeFeatures& f = fm.result.bending[static_cast<std::size_t>(i)].features;
+        const std::string mode = std::to_string(i + 1);
+        for (std::size_t j = 0; j < f.nodes.size(); ++j) points.add({mode, "y", std::to_string(j + 1), cell(f.nodes[j]), "0"});
+        for (std::size_t j = 0; j < f.rotation_nodes.size(); ++j) {
+            points.add({mode, "phi", std::to_string(j + 1), cell(f.rotation_nodes[j]), "0"});
+        }
+        for (std::size_t j = 0; j < f.peaks.size(); ++j) {
+            points.add({mode, "Y", std::to_string(j + 1), cell(f.peaks[j].x), cell(f.peaks[j].amplitude)});
+        }
+        for (std::size_t j = 0; j < f.rotation_peaks.size(); ++j) {
+            points.add({mode, "Phi", std::to_string(j + 1), cell(f.rotation_peaks[j].x), cell(f.rotation_peaks[j].amplitude)});
+        }
+    }
+    std::ostringstream p;
+    p << colors_command() << "set multiplot layout 2,1 title 'Natural modes of the free cantilever (m = "
+      << fm.result.system.mesh.node_count() - 1 << "): (a) displacement Y, (b) rotation {/Symbol F}' font ',13'\n"
+      << "set grid lc rgb '#dddddd'\nset xrange [0:1]\nset key outside right top\nset xzeroaxis lt -1\n"
+      << "set lmargin 12\nset rmargin 22\n" << particular_points()
+      // The legend sits outside the plot here: an opaque legend box would reach into the plot and
+      // hide the curves' last few percent before x = l.
+      << "set key noopaque\n"
+      << "set ylabel 'Y = v (ρAl)^{1/2}  [-]'\nset xlabel 'x/l  [-]'\n"
+      << "plot for [i=1:" << n << "] 'fig2.csv' using 1:(column(1+i)) with lines linewidth 2 linecolor rgb word(colors,i) "
+         "title sprintf('mode %d', i), \\\n"
+      << "  'fig2_points.csv' using (strcol(2) eq 'y' ? $4 : NaN):(0) with points pointtype 7 pointsize 0.9 "
+         "linecolor rgb 'black' title 'nodal points y_{ij}'\n"
+      << "set ylabel '{/Symbol F} = θ l (ρAl)^{1/2}  [-]'\n"
+      << "plot for [i=1:" << n << "] 'fig2.csv' using 1:(column(1+" << n << "+i)) with lines linewidth 2 "
+         "linecolor rgb word(colors,i) title sprintf('mode %d', i), \\\n"
+      << "  'fig2_points.csv' using (strcol(2) eq 'phi' ? $4 : NaN):(0) with points pointtype 7 pointsize 0.9 "
+         "linecolor rgb 'black' title 'nodal points {/Symbol f}_{ij}'\n"
+      << "unset multiplot\n";
+    const auto& b = fm.result.bending;
+    std::string nodes;
+    if (b.size() >= 3 && !b[1].features.nodes.empty() && b[2].features.nodes.size() >= 2) {
+        nodes = " The nodal points the paper builds on: y_21 = " + num(b[1].features.nodes[0]) + " (mode 2) and y_32 = " +
+                num(b[2].features.nodes[1]) + " (mode 3), the paper's 0.78 and 0.87.";
+    }
+    return {"fig2", "Fig. 2: natural modes of the free cantilever",
+            "The first " + std::to_string(n) + " bending modes of the unsupported cantilever, mass-normalised and made "
+            "dimensionless, (a) displacement Y and (b) rotation Phi along the beam, with their nodal points (zeros, clamp "
+            "excluded). Dashed lines: the paper's particular points 0.67, 0.78, 0.87." + nodes,
+            {{"fig2.csv", shapes.str()}, {"fig2_points.csv", points.str()}}, p.str(), 1000, 900};
+}
+
+namespace {
+
+// Nodal points (Fig. 6) or peaks (Fig. 7) of the supported modes, one row per point.
+CsvText modal_points_csv(const PaperStudy& st, bool peaks) {
+    CsvText t;
+    t.header = peaks ? std::vector<std::string>{"x0_over_l", "mode", "kind", "j", "x_over_l", "amplitude"}
+                     : std::vector<std::string>{"x0_over_l", "mode", "kind", "j", "x_over_l", "at_support"};
+    for (const ModalPoint& pt : st.modal) {
+        if (!pt.error.empty()) continue;
+        const std::string x0 = cell(pt.x0);
+        for (std::size_t i = 0; i < pt.features.size(); ++i) {
+            const ShapeFeatures& f = pt.features[i];
+            const std::string mode = std::to_string(i + 1);
+            if (peaks) {
+                // A pin at the free end can leave a zero-amplitude "peak" there (docs/model.md, section 9).
+                for (std::size_t j = 0; j < f.peaks.size(); ++j) {
+                    if (f.peaks[j].amplitude > 1e-9) t.add({x0, mode, "Y", std::to_string(j + 1), cell(f.peaks[j].x), cell(f.peaks[j].amplitude)});
+                }
+                for (std::size_t j = 0; j < f.rotation_peaks.size(); ++j) {
+                    if (f.rotation_peaks[j].amplitude > 1e-9) {
+                        t.add({x0, mode, "Phi", std::to_string(j + 1), cell(f.rotation_peaks[j].x), cell(f.rotation_peaks[j].amplitude)});
+                    }
+                }
+            } else {
+                for (std::size_t j = 0; j < f.nodes.size(); ++j) {
+                    const bool at = std::abs(f.nodes[j] - pt.x0) < 1e-9;
+                    t.add({x0, mode, "y", std::to_string(j + 1), cell(f.nodes[j]), at ? "1" : "0"});
+                }
+                for (std::size_t j = 0; j < f.rotation_nodes.size(); ++j) {
+                    t.add({x0, mode, "phi", std::to_string(j + 1), cell(f.rotation_nodes[j]), "0"});
+                }
+            }
+        }
+    }
+    return t;
+}
+
+}  // namespace
+
+FigureSpec fig6(const PaperStudy& st) {
+    const int n = st.options.modes;
+    std::ostringstream p;
+    p << colors_command() << "set multiplot layout 1,2 title 'Nodal points of the supported cantilever (support as a pin at x_0/l)' font ',13'\n"
+      << "set grid lc rgb '#dddddd'\nset xrange [0:1]\nset yrange [0:1]\nset size ratio -1\nset key bottom right font ',10'\n"
+      << particular_points() << "set xlabel 'support position x_0/l  [-]'\n"
+      << "set ylabel 'nodal point y_{ij}: x/l  [-]'\nset title '(a) displacement: zeros of v'\n"
+      << "plot x with lines dashtype 3 linecolor rgb 'black' title 'support, y_{i0}', \\\n"
+      << "  for [i=1:" << n << "] 'fig6.csv' using 1:(($2 == i && strcol(3) eq 'y' && $6 == 0) ? $5 : NaN) with points "
+         "pointtype 7 pointsize 0.45 linecolor rgb word(colors,i) title sprintf('mode %d', i)\n"
+      << "set ylabel 'nodal point {/Symbol f}_{ij}: x/l  [-]'\nset title '(b) rotation: zeros of θ'\n"
+      << "plot x with lines dashtype 3 linecolor rgb 'black' title 'support', \\\n"
+      << "  for [i=1:" << n << "] 'fig6.csv' using 1:(($2 == i && strcol(3) eq 'phi') ? $5 : NaN) with points "
+         "pointtype 7 pointsize 0.45 linecolor rgb word(colors,i) title sprintf('mode %d', i)\n"
+      << "unset multiplot\n";
+    return {"fig6", "Fig. 6: nodal points of the supported beam against the support position",
+            "Zeros of the displacement v (a) and of the rotation theta (b) of the first " + std::to_string(n) +
+                " modes of the cantilever with a pin at x0/l, against x0/l (" + std::to_string(st.modal.size()) +
+                " positions). The dotted diagonal is the support itself, the extra nodal point y_i0 of every supported mode. "
+                "Where the support sits on a nodal point of a free mode (0.78 for mode 2, 0.87 for mode 3), that mode is also a mode "
+                "of the supported beam and its other nodal points stay where they were.",
+            {{"fig6.csv", modal_points_csv(st, false).str()}}, p.str(), 1200, 640};
+}
+
+FigureSpec fig7(const PaperStudy& st) {
+    const int n = st.options.modes;
+    std::ostringstream p;
+    p << colors_command() << "set multiplot layout 1,2 title 'Peak amplitudes of the supported modes against the support position' font ',13'\n"
+      << "set grid lc rgb '#dddddd'\nset xrange [0:1]\nset key top left font ',10'\n" << particular_points()
+      << "set xlabel 'support position x_0/l  [-]'\nset ylabel 'Y_{ij} = |v| (ρAl)^{1/2}  [-]'\nset title '(a) displacement peaks'\n"
+      << "plot for [i=1:" << n << "] 'fig7.csv' using 1:(($2 == i && strcol(3) eq 'Y') ? $6 : NaN) with points pointtype 7 "
+         "pointsize 0.45 linecolor rgb word(colors,i) title sprintf('mode %d', i)\n"
+      << "set ylabel '{/Symbol F}_{ij} = |θ| l (ρAl)^{1/2}  [-]'\nset title '(b) rotation peaks'\n"
+      << "plot for [i=1:" << n << "] 'fig7.csv' using 1:(($2 == i && strcol(3) eq 'Phi') ? $6 : NaN) with points pointtype 7 "
+         "pointsize 0.45 linecolor rgb word(colors,i) title sprintf('mode %d', i)\n"
+      << "unset multiplot\n";
+    return {"fig7", "Fig. 7: peak amplitudes of the supported modes against the support position",
+            "Every local maximum of |v| (a) and of |theta| (b) of the first " + std::to_string(n) +
+                " supported modes (mass-normalised, dimensionless), against x0/l; the CSV holds each peak's position x/l too.",
+            {{"fig7.csv", modal_points_csv(st, true).str()}}, p.str(), 1200, 600};
+}
+
+FigureSpec fig8(const PaperStudy& st) {
+    const int n = st.options.modes;
+    CsvText t;
+    t.header = {"x0_over_l"};
+    for (int i = 1; i <= n; ++i) t.header.push_back("ratio_" + std::to_string(i));
+    for (int i = 1; i <= n; ++i) t.header.push_back("f_supported_" + std::to_string(i) + "_hz");
+    for (const ModalPoint& pt : st.modal) {
+        std::vector<std::string> row{cell(pt.x0)};
+        for (int i = 0; i < n; ++i) row.push_back(static_cast<std::size_t>(i) < pt.ratio.size() ? cell(pt.ratio[static_cast<std::size_t>(i)]) : "nan");
+        for (int i = 0; i < n; ++i) {
+            row.push_back(static_cast<std::size_t>(i) < pt.frequency_hz.size() ? cell(pt.frequency_hz[static_cast<std::size_t>(i)]) : "nan");
+        }
+        t.add(row);
+    }
+    std::ostringstream p;
+    p << colors_command() << "set grid lc rgb '#dddddd'\nset xrange [0:1]\nset key top left\n" << particular_points()
+      << "set title 'Natural frequencies of the supported cantilever over those of the free one' font ',13'\n"
+      << "set xlabel 'support position x_0/l  [-]'\nset ylabel 'ω_i / ω_{in}  [-]'\n"
+      << "set label 1 sprintf('max ω_1/ω_{1n} = %.3f at x_0/l = %.4f', " << st.ratio_peak.ratio << ", " << st.ratio_peak.x0
+      << ") at first " << st.ratio_peak.x0 << ", first " << st.ratio_peak.ratio << " right offset -1,0.8 font ',10'\n"
+      << "plot for [i=1:" << n << "] 'fig8.csv' using 1:(column(1+i)) with lines linewidth 2 linecolor rgb word(colors,i) "
+         "title sprintf('i = %d', i), \\\n"
+      << "  '+' using (" << st.ratio_peak.x0 << "):(" << st.ratio_peak.ratio
+      << ") every ::0::0 with points pointtype 6 pointsize 1.6 linecolor rgb 'black' notitle\n";
+    return {"fig8", "Fig. 8: supported over unsupported natural frequencies",
+            "omega_i / omega_in for the first " + std::to_string(n) + " modes with a pin at x0/l (" + std::to_string(st.modal.size()) +
+                " positions); the circle marks the largest omega_1 ratio, " + num(st.ratio_peak.ratio) + " at x0/l = " +
+                num(st.ratio_peak.x0, 5) + " (golden-section search), where the paper puts it at 0.78.",
+            {{"fig8.csv", t.str()}}, p.str(), 1000, 620};
+}
+
+}  // namespace vi::figure_detail

@@ -1,0 +1,115 @@
+#include "sweep/columns.hpp"
+
+#include <optional>
+
+#include "io/number_text.hpp"
+
+namespace vi {
+namespace {
+
+SweepCell opt(const std::optional<double>& v) { return v ? SweepCell(*v) : SweepCell(); }
+
+SweepCell scaled(const std::optional<double>& v, double k) { return v ? SweepCell(*v * k) : SweepCell(); }
+
+std::string impact_prefix(int k) { return "impact" + std::to_string(k) + "_"; }
+
+// x/l values as one text cell, each read back exactly, so the cell is the same wherever it is computed.
+std::string positions_text(const std::vector<double>& xs) {
+    std::string s;
+    for (double x : xs) {
+        if (!s.empty()) s += ' ';
+        s += round_trip_text(x);
+    }
+    return s;
+}
+
+}  // namespace
+
+std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes) {
+    if (analysis == SweepAnalysis::modes) {
+        std::vector<SweepColumn> cols;
+        for (int i = 1; i <= modes; ++i) {
+            const std::string n = std::to_string(i);
+            cols.push_back({"f_unsupported_" + n + "_hz", "Hz"});
+            cols.push_back({"f_supported_" + n + "_hz", "Hz"});
+            cols.push_back({"ratio_" + n, "-"});
+            cols.push_back({"nodes_supported_" + n, "x/l"});
+        }
+        return cols;
+    }
+    std::vector<SweepColumn> cols = {
+        {"omega1_rad_s", "rad/s"}, {"impacts", ""}, {"episodes", ""},   {"T_s", "s"},
+        {"T1_s", "s"},             {"T2_s", "s"},   {"Tp_s", "s"},      {"Tp_reason", ""},
+        {"tau", "-"},              {"tau1", "-"},   {"tau2", "-"},      {"tau_p", "-"},
+        {"y_max_m", "m"},          {"z_max", "-"},  {"y_max_contact_m", "m"}, {"tip_min_m", "m"},
+        {"unproven_excess", "-"},
+    };
+    for (int k = 1; k <= kSweepImpactColumns; ++k) {
+        const std::string p = impact_prefix(k);
+        cols.push_back({p + "support", ""});
+        cols.push_back({p + "t_on_s", "s"});
+        cols.push_back({p + "v_in_m_s", "m/s"});
+        cols.push_back({p + "peak_force_n", "N"});
+        cols.push_back({p + "peak_penetration_m", "m"});
+        cols.push_back({p + "duration_s", "s"});
+        cols.push_back({p + "episodes", ""});
+    }
+    return cols;
+}
+
+std::vector<SweepCell> simulate_cells(const SimulationRun& run) {
+    const ImpactSummary& s = run.summary;
+    const double w1 = run.built.omega1;
+    std::vector<SweepCell> cells = {
+        w1,
+        static_cast<std::int64_t>(s.impacts.size()),
+        static_cast<std::int64_t>(run.result.episodes.size()),
+        opt(s.T_first),
+        opt(s.T1_first),
+        opt(s.T2_first),
+        opt(s.Tp),
+        s.Tp_reason,
+        scaled(s.T_first, w1),
+        scaled(s.T1_first, w1),
+        scaled(s.T2_first, w1),
+        scaled(s.Tp, w1),
+        opt(s.y_max),
+        opt(s.z_max),
+        opt(s.y_max_contact),
+        opt(s.tip_min),
+        // Only the exact solver proves its event searches (CVODE's root finding may step over a
+        // sign change unseen): empty for CVODE.
+        run.result.stats.method == "exact" ? SweepCell(run.result.stats.unproven_excess) : SweepCell(),
+    };
+    for (std::size_t k = 0; k < static_cast<std::size_t>(kSweepImpactColumns); ++k) {
+        if (k >= s.impacts.size()) {
+            cells.insert(cells.end(), 7, SweepCell());
+            continue;
+        }
+        const Impact& im = s.impacts[k];
+        cells.push_back(static_cast<std::int64_t>(im.support));
+        cells.push_back(im.t_on);
+        cells.push_back(im.v_in);
+        cells.push_back(im.peak_force);
+        cells.push_back(im.peak_penetration);
+        // An impact still closed when the horizon ends has no duration yet.
+        cells.push_back(im.closed_at_end ? SweepCell() : SweepCell(im.t_off - im.t_on));
+        cells.push_back(static_cast<std::int64_t>(im.episodes));
+    }
+    return cells;
+}
+
+std::vector<SweepCell> modes_cells(const ModalStudy& study, int modes) {
+    std::vector<SweepCell> cells;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(modes); ++i) {
+        const auto& u = study.unsupported.bending;
+        const auto& s = study.supported.bending;
+        cells.push_back(i < u.size() ? SweepCell(u[i].frequency_hz) : SweepCell());
+        cells.push_back(i < s.size() ? SweepCell(s[i].frequency_hz) : SweepCell());
+        cells.push_back(i < study.ratios.size() ? SweepCell(study.ratios[i]) : SweepCell());
+        cells.push_back(i < s.size() ? SweepCell(positions_text(s[i].features.nodes)) : SweepCell());
+    }
+    return cells;
+}
+
+}  // namespace vi

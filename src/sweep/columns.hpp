@@ -1,0 +1,43 @@
+#pragma once
+// The result columns of a sweep, per analysis, and one point's values for them.
+
+#include <cstdint>
+#include <string>
+#include <variant>
+#include <vector>
+
+#include "impacts/simulation.hpp"
+#include "modal/modal_analysis.hpp"
+
+namespace vi {
+
+// What each point of a sweep computes.
+enum class SweepAnalysis { simulate, modes };
+
+// A result column: its name (units in the name, as the other CSV files) and its unit alone.
+struct SweepColumn {
+    std::string name;  // e.g. "T_s", "impact1_peak_force_n"
+    std::string unit;  // e.g. "s", "N", "-" (dimensionless), "" (count or text)
+};
+
+// One cell: empty (no such value: T with a single impact, a mode the mesh does not have), a
+// number, a count, or text (Tp_reason, a list of nodal points).
+using SweepCell = std::variant<std::monostate, double, std::int64_t, std::string>;
+
+// How many impacts get their own columns in a simulate sweep.
+inline constexpr int kSweepImpactColumns = 3;
+
+// The columns of `analysis`; `modes` is the number of bending modes of a modes sweep.
+std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes);
+
+// A transient's values in the order of sweep_result_columns(simulate, ...): omega1_rad_s, impacts,
+// episodes, T_s, T1_s, T2_s, Tp_s, Tp_reason, tau, tau1, tau2, tau_p, y_max_m, z_max,
+// y_max_contact_m, tip_min_m, then per impact k = 1..3 impact<k>_support, _t_on_s, _v_in_m_s,
+// _peak_force_n, _peak_penetration_m, _duration_s, _episodes.
+std::vector<SweepCell> simulate_cells(const SimulationRun& run);
+
+// A modal study's values in the order of sweep_result_columns(modes, modes): per mode i,
+// f_unsupported_<i>_hz, f_supported_<i>_hz, ratio_<i>, nodes_supported_<i> (x/l, space separated).
+std::vector<SweepCell> modes_cells(const ModalStudy& study, int modes);
+
+}  // namespace vi

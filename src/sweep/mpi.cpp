@@ -1,0 +1,290 @@
+#include "sweep/mpi.hpp"
+
+#include <mpi.h>
+
+#include <chrono>
+#include <cstdint>
+#include <cstring>
+#include <deque>
+#include <exception>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+// Protocol of collect(), on a communicator of its own:
+//   other rank -> root: kPoint (a finished point, as bytes), kSignal (this rank was told to stop),
+//                       then exactly one kDone after its last point;
+//   root -> other rank: exactly one kStop, an int: 1 = stop starting points (sent as soon as the
+//                       root stops), 0 = nothing more to do (sent after every kDone).
+// Each side polls with MPI_Iprobe while its workers compute, so no rank blocks while another is
+// blocked sending to it; the root's kStop goes out with MPI_Isend for the same reason.
+
+namespace vi {
+namespace {
+
+enum Tag : int { kPoint = 1, kDone = 2, kSignal = 3, kStop = 4 };
+
+constexpr auto kPoll = std::chrono::milliseconds(1);
+
+std::vector<char> encode(const FinishedPoint& p) {
+    const std::uint64_t index = p.index;
+    const std::uint32_t status_size = static_cast<std::uint32_t>(p.status.size());
+    std::vector<char> b(sizeof index + sizeof status_size + p.status.size() + p.row.size());
+    char* at = b.data();
+    std::memcpy(at, &index, sizeof index);
+    at += sizeof index;
+    std::memcpy(at, &status_size, sizeof status_size);
+    at += sizeof status_size;
+    std::memcpy(at, p.status.data(), p.status.size());
+    at += p.status.size();
+    std::memcpy(at, p.row.data(), p.row.size());
+    return b;
+}
+
+FinishedPoint decode(const std::vector<char>& b) {
+    std::uint64_t index = 0;
+    std::uint32_t status_size = 0;
+    if (b.size() < sizeof index + sizeof status_size) throw std::runtime_error("MPI: truncated sweep point message");
+    std::memcpy(&index, b.data(), sizeof index);
+    std::memcpy(&status_size, b.data() + sizeof index, sizeof status_size);
+    const std::size_t head = sizeof index + sizeof status_size;
+    if (b.size() < head + status_size) throw std::runtime_error("MPI: truncated sweep point message");
+    FinishedPoint p;
+    p.index = static_cast<std::size_t>(index);
+    p.status.assign(b.data() + head, status_size);
+    p.row.assign(b.data() + head + status_size, b.size() - head - status_size);
+    return p;
+}
+
+// Points finished by this rank's workers, waiting for the MPI thread.
+class PointQueue {
+public:
+    void push(const FinishedPoint& p) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        points_.push_back(p);
+    }
+    std::deque<FinishedPoint> take() {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        std::deque<FinishedPoint> out;
+        out.swap(points_);
+        return out;
+    }
+
+private:
+    std::mutex mutex_;
+    std::deque<FinishedPoint> points_;
+};
+
+// Runs `local` on a thread of its own, its points into a queue.
+class LocalWorker {
+public:
+    LocalWorker(const LocalRun& local, const std::atomic<bool>& stop)
+        : thread_([this, &local, &stop]() {
+              try {
+                  local([this](const FinishedPoint& p) { queue_.push(p); }, stop);
+              } catch (...) {
+                  error_ = std::current_exception();
+              }
+              finished_.store(true);
+          }) {}
+    ~LocalWorker() {
+        if (thread_.joinable()) thread_.join();
+    }
+    LocalWorker(const LocalWorker&) = delete;
+    LocalWorker& operator=(const LocalWorker&) = delete;
+
+    // True once `local` has returned; every point it emitted is then in the queue.
+    [[nodiscard]] bool finished() const { return finished_.load(); }
+    PointQueue& queue() { return queue_; }
+    // Joins the thread and rethrows what `local` threw.
+    void join() {
+        if (thread_.joinable()) thread_.join();
+        if (error_) std::rethrow_exception(error_);
+    }
+
+private:
+    PointQueue queue_;
+    std::atomic<bool> finished_{false};
+    std::exception_ptr error_;
+    std::thread thread_;  // last: starts once the members it uses exist
+};
+
+class MpiRanks final : public SweepRanks {
+public:
+    MpiRanks() {
+        int provided = 0;
+        if (MPI_Init_thread(nullptr, nullptr, MPI_THREAD_FUNNELED, &provided) != MPI_SUCCESS) {
+            throw std::runtime_error("MPI: MPI_Init_thread failed");
+        }
+        MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+        MPI_Comm_size(MPI_COMM_WORLD, &size_);
+        MPI_Comm_dup(MPI_COMM_WORLD, &points_comm_);
+        MPI_Comm node = MPI_COMM_NULL;
+        MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+        MPI_Comm_size(node, &on_node_);
+        MPI_Comm_free(&node);
+    }
+    ~MpiRanks() override {
+        MPI_Comm_free(&points_comm_);
+        MPI_Finalize();
+    }
+    MpiRanks(const MpiRanks&) = delete;
+    MpiRanks& operator=(const MpiRanks&) = delete;
+
+    [[nodiscard]] int rank() const override { return rank_; }
+    [[nodiscard]] int size() const override { return size_; }
+    [[nodiscard]] int ranks_on_this_machine() const override { return on_node_; }
+
+    int max_over_ranks(int value) override {
+        int out = value;
+        MPI_Allreduce(&value, &out, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+        return out;
+    }
+
+    int broadcast(int value) override {
+        MPI_Bcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD);
+        return value;
+    }
+
+    std::vector<std::size_t> broadcast(std::vector<std::size_t> values) override {
+        std::uint64_t n = values.size();
+        MPI_Bcast(&n, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+        std::vector<std::uint64_t> wire(values.begin(), values.end());
+        wire.resize(static_cast<std::size_t>(n));
+        // MPI counts are int: large lists go in pieces.
+        constexpr std::size_t kPiece = 1u << 24;
+        for (std::size_t at = 0; at < wire.size(); at += kPiece) {
+            const int count = static_cast<int>(std::min(kPiece, wire.size() - at));
+            MPI_Bcast(wire.data() + at, count, MPI_UINT64_T, 0, MPI_COMM_WORLD);
+        }
+        return {wire.begin(), wire.end()};
+    }
+
+    void collect(const LocalRun& local, const PointSink& sink, std::atomic<bool>& stop) override {
+        if (rank_ == 0) {
+            collect_on_root(local, sink, stop);
+        } else {
+            collect_on_other(local, stop);
+        }
+    }
+
+private:
+    void collect_on_root(const LocalRun& local, const PointSink& sink, std::atomic<bool>& stop) {
+        std::exception_ptr sink_error;
+        auto deliver = [&](const FinishedPoint& p) {
+            if (sink_error) return;
+            try {
+                sink(p);
+            } catch (...) {
+                // Keep the protocol going so that no rank hangs; stop everyone, report afterwards.
+                sink_error = std::current_exception();
+                stop.store(true);
+            }
+        };
+        std::vector<int> stop_sent(static_cast<std::size_t>(size_), 0);
+        std::vector<int> stop_value(static_cast<std::size_t>(size_), 0);
+        std::vector<MPI_Request> requests;
+        auto send_stops = [&](int value) {
+            for (int r = 1; r < size_; ++r) {
+                const auto k = static_cast<std::size_t>(r);
+                if (stop_sent[k]) continue;
+                stop_sent[k] = 1;
+                stop_value[k] = value;
+                requests.emplace_back();
+                MPI_Isend(&stop_value[k], 1, MPI_INT, r, kStop, points_comm_, &requests.back());
+            }
+        };
+
+        LocalWorker worker(local, stop);
+        int running = size_ - 1;
+        for (;;) {
+            bool busy = false;
+            if (stop.load()) send_stops(1);
+            int flag = 0;
+            MPI_Status st;
+            MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, points_comm_, &flag, &st);
+            if (flag) {
+                busy = true;
+                if (st.MPI_TAG == kPoint) {
+                    int bytes = 0;
+                    MPI_Get_count(&st, MPI_BYTE, &bytes);
+                    std::vector<char> buf(static_cast<std::size_t>(bytes));
+                    MPI_Recv(buf.data(), bytes, MPI_BYTE, st.MPI_SOURCE, kPoint, points_comm_, MPI_STATUS_IGNORE);
+                    deliver(decode(buf));
+                } else if (st.MPI_TAG == kDone) {
+                    MPI_Recv(nullptr, 0, MPI_BYTE, st.MPI_SOURCE, kDone, points_comm_, MPI_STATUS_IGNORE);
+                    --running;
+                } else {
+                    int value = 0;
+                    MPI_Recv(&value, 1, MPI_INT, st.MPI_SOURCE, st.MPI_TAG, points_comm_, MPI_STATUS_IGNORE);
+                    if (st.MPI_TAG == kSignal) stop.store(true);
+                }
+            }
+            const bool local_finished = worker.finished();
+            for (const FinishedPoint& p : worker.queue().take()) {
+                busy = true;
+                deliver(p);
+            }
+            if (local_finished && running == 0) break;
+            if (!busy) std::this_thread::sleep_for(kPoll);
+        }
+        send_stops(0);
+        MPI_Waitall(static_cast<int>(requests.size()), requests.data(), MPI_STATUSES_IGNORE);
+        worker.join();
+        if (sink_error) std::rethrow_exception(sink_error);
+    }
+
+    void collect_on_other(const LocalRun& local, std::atomic<bool>& stop) {
+        bool got_stop = false;
+        bool signal_sent = false;
+        auto send_points = [&](LocalWorker& w) {
+            bool any = false;
+            for (const FinishedPoint& p : w.queue().take()) {
+                std::vector<char> buf = encode(p);
+                MPI_Send(buf.data(), static_cast<int>(buf.size()), MPI_BYTE, 0, kPoint, points_comm_);
+                any = true;
+            }
+            return any;
+        };
+        LocalWorker worker(local, stop);
+        for (;;) {
+            bool busy = false;
+            int flag = 0;
+            MPI_Iprobe(0, kStop, points_comm_, &flag, MPI_STATUS_IGNORE);
+            if (flag) {
+                int value = 0;
+                MPI_Recv(&value, 1, MPI_INT, 0, kStop, points_comm_, MPI_STATUS_IGNORE);
+                got_stop = true;
+                if (value) stop.store(true);
+                busy = true;
+            }
+            if (stop.load() && !got_stop && !signal_sent) {
+                int one = 1;
+                MPI_Send(&one, 1, MPI_INT, 0, kSignal, points_comm_);
+                signal_sent = true;
+            }
+            const bool local_finished = worker.finished();
+            busy = send_points(worker) || busy;
+            if (local_finished) break;
+            if (!busy) std::this_thread::sleep_for(kPoll);
+        }
+        send_points(worker);
+        MPI_Send(nullptr, 0, MPI_BYTE, 0, kDone, points_comm_);
+        if (!got_stop) {
+            int value = 0;
+            MPI_Recv(&value, 1, MPI_INT, 0, kStop, points_comm_, MPI_STATUS_IGNORE);
+        }
+        worker.join();
+    }
+
+    int rank_ = 0;
+    int size_ = 1;
+    int on_node_ = 1;
+    MPI_Comm points_comm_ = MPI_COMM_NULL;
+};
+
+}  // namespace
+
+std::unique_ptr<SweepRanks> start_mpi_ranks() { return std::make_unique<MpiRanks>(); }
+
+}  // namespace vi
