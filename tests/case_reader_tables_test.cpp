@@ -70,7 +70,7 @@ TEST(CaseReaderTables, WithoutInitialTheBeamStartsAtRest) {
     EXPECT_EQ(c.initial.kind, vi::InitialState::Kind::rest);
     EXPECT_EQ(c.initial.velocity_kind, vi::InitialState::Velocity::none);
     EXPECT_TRUE(c.loads.empty());
-    EXPECT_EQ(c.solver.method, vi::SolverSettings::Method::exact);
+    EXPECT_EQ(c.solver.method, vi::SolverSettings::Method::automatic);
     EXPECT_EQ(c.solver.horizon, 0.0);
     EXPECT_EQ(c.solver.output_step, 0.0);
     EXPECT_DOUBLE_EQ(c.solver.settle_tolerance, 0.01);
@@ -217,7 +217,7 @@ TEST(CaseReaderTablesErrors, LoadTableFiles) {
 
 TEST(CaseReaderTablesErrors, Solver) {
     const std::string s = kBase + "[solver]\n";  // header at line 11
-    expect_error(s + "method = \"euler\"\n", "bad.toml:12: solver.method: must be one of \"exact\", \"cvode\"");
+    expect_error(s + "method = \"euler\"\n", "bad.toml:12: solver.method: must be one of \"auto\", \"exact\", \"cvode\"");
     expect_error(s + "horizon = 0\n", "bad.toml:12: solver.horizon: must be positive");
     expect_error(s + "horizon = \"1 us\"\noutput_step = \"-1 ns\"\n", "bad.toml:13: solver.output_step: must be positive");
     expect_error(s + "horizon = \"1 us\"\noutput_step = \"2 us\"\n",

@@ -75,7 +75,7 @@ TEST(CaseReader, ReadsThePaperCantilever) {
     EXPECT_EQ(c.damping.beta, 0.0);
     // The modal example has no [initial] or [solver]: rest, and no horizon.
     EXPECT_EQ(c.initial.kind, vi::InitialState::Kind::rest);
-    EXPECT_EQ(c.solver.method, vi::SolverSettings::Method::exact);
+    EXPECT_EQ(c.solver.method, vi::SolverSettings::Method::automatic);
     EXPECT_EQ(c.solver.horizon, 0.0);
 }
 

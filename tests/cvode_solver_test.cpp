@@ -21,9 +21,9 @@ double total(const EnergyLedger& e) { return e.kinetic + e.strain + e.contact_sp
 
 // Mass m at distance h from a support (below for sign = +1, above for -1, surface at 0), moving
 // towards it at v0; K = 0, so only the contact acts.
-TransientProblem falling_mass(double zeta, double sign = 1.0) {
+PiecewiseLinearProblem falling_mass(double zeta, double sign = 1.0) {
     const double m = 1e-11, Kc = 50.0, v0 = 0.1, h = 0.2e-6;
-    TransientProblem p;
+    PiecewiseLinearProblem p;
     p.M = Eigen::MatrixXd::Constant(1, 1, m);
     p.K = Eigen::MatrixXd::Zero(1, 1);
     ContactElement c;
@@ -45,7 +45,7 @@ TransientProblem falling_mass(double zeta, double sign = 1.0) {
 // e = exp(-zeta w_n t_c). Measured (rtol 1e-10): t_c 2e-11..2e-10, e 1e-9..5e-9, impulse 3e-10..2e-9.
 TEST(CvodeSolver, FreeMassImpactMatchesKelvinVoigtClosedForm) {
     for (const auto& [zeta, sign] : {std::pair{0.0, 1.0}, {0.1, 1.0}, {0.5, 1.0}, {0.1, -1.0}}) {
-        const TransientProblem p = falling_mass(zeta, sign);
+        const PiecewiseLinearProblem p = falling_mass(zeta, sign);
         const double m = p.M(0, 0), Kc = p.contacts[0].stiffness, v0 = std::abs(p.v0[0]);
         const double wn = std::sqrt(Kc / m);
         const double tc = (std::numbers::pi - 2.0 * std::asin(zeta)) / std::sqrt(1.0 - zeta * zeta) / wn;
@@ -80,7 +80,7 @@ TEST(CvodeSolver, FreeMassImpactMatchesKelvinVoigtClosedForm) {
 // Prestressed start: the mass rests at rest on the support with penetration d0 (closed at t = 0);
 // undamped, it is pushed out and leaves when d = 0 after a quarter period with speed w d0.
 TEST(CvodeSolver, ContactClosedAtStartOpensAfterQuarterPeriod) {
-    TransientProblem p = falling_mass(0.0);
+    PiecewiseLinearProblem p = falling_mass(0.0);
     const double d0 = 1e-8, wn = std::sqrt(p.contacts[0].stiffness / p.M(0, 0));
     p.q0[0] = -d0;
     p.v0[0] = 0.0;
@@ -102,7 +102,7 @@ TEST(CvodeSolver, ContactClosedAtStartOpensAfterQuarterPeriod) {
 // The ledger: kinetic + strain = external work.
 TEST(CvodeSolver, StepLoadBreakpointIsExact) {
     const double m = 1e-11, k = 10.0, F = 1e-6, w = std::sqrt(k / m), T = 2.0 * std::numbers::pi / w;
-    TransientProblem p;
+    PiecewiseLinearProblem p;
     p.M = Eigen::MatrixXd::Constant(1, 1, m);
     p.K = Eigen::MatrixXd::Constant(1, 1, k);
     p.q0 = p.v0 = Eigen::VectorXd::Zero(1);
@@ -141,7 +141,7 @@ TEST(CvodeSolver, StepLoadBreakpointIsExact) {
 TEST(CvodeSolver, GrazingContactIsNotMissed) {
     const double m = 1e-11, k = 10.0, A = 1e-6, w = std::sqrt(k / m);
     for (double eps : {1e-4, 1e-6, 1e-8}) {
-        TransientProblem p;
+        PiecewiseLinearProblem p;
         p.M = Eigen::MatrixXd::Constant(1, 1, m);
         p.K = Eigen::MatrixXd::Constant(1, 1, k);
         p.q0 = Eigen::VectorXd::Constant(1, A);
@@ -168,10 +168,10 @@ TEST(CvodeSolver, GrazingContactIsNotMissed) {
 
 // The paper's cantilever (bending DOFs), one contact at the tip with zero gap, released from rest
 // in its static shape under a tip force with the tip 1 um up.
-TransientProblem bouncing_cantilever(int elements, double alpha, double beta, double Cc) {
+PiecewiseLinearProblem bouncing_cantilever(int elements, double alpha, double beta, double Cc) {
     const Case c = test::paper_cantilever(elements);
     const System s = build_system(c);
-    TransientProblem p;
+    PiecewiseLinearProblem p;
     p.M = Eigen::MatrixXd(submatrix(s.M, s.bending));
     p.K = Eigen::MatrixXd(submatrix(s.K, s.bending));
     const int tip_reduced = s.reduced_of[global_dof(s.mesh.node_count() - 1, 1)];
@@ -214,7 +214,7 @@ void expect_sane_episodes(const TransientResult& r) {
 // the highest mode: with m = 10 elements 100 us take 3.5 million steps (about 60 s, drift 2e-8).
 // With m = 2 elements and rtol 1e-11 (130 us: 21 episodes, drift 3.5e-8, 2.6e5 steps, 0.7 s).
 TEST(CvodeSolver, UndampedBeamConservesEnergyThroughImpacts) {
-    const TransientProblem p = bouncing_cantilever(2, 0.0, 0.0, 0.0);
+    const PiecewiseLinearProblem p = bouncing_cantilever(2, 0.0, 0.0, 0.0);
     CvodeOptions o;
     o.rtol = 1e-11;
     const TransientResult r = solve_cvode(p, o);
@@ -233,7 +233,7 @@ TEST(CvodeSolver, UndampedBeamConservesEnergyThroughImpacts) {
 // sample. Measured (130 us): 21 episodes, 3.6e-10 relative, 8.8e4 steps, 1.1 s.
 TEST(CvodeSolver, DampedBeamLedgerBalancesAndEpisodesAreSane) {
     const double w1 = 7.15e5;  // about the first circular frequency of the cantilever [rad/s]
-    const TransientProblem p = bouncing_cantilever(10, 0.02 * w1, 0.002 / w1, 5e-6);
+    const PiecewiseLinearProblem p = bouncing_cantilever(10, 0.02 * w1, 0.002 / w1, 5e-6);
     const TransientResult r = solve_cvode(p);
     EXPECT_GT(r.episodes.size(), 20u);
     const double e0 = total(r.initial_energy);
@@ -254,7 +254,7 @@ TEST(CvodeSolver, DampedBeamLedgerBalancesAndEpisodesAreSane) {
 }
 
 TEST(CvodeSolver, RejectsInconsistentProblems) {
-    TransientProblem p = falling_mass(0.0);
+    PiecewiseLinearProblem p = falling_mass(0.0);
     p.tip_dof = 3;
     EXPECT_THROW((void)solve_cvode(p), std::invalid_argument);
     p = falling_mass(0.0);

@@ -24,7 +24,7 @@ TEST(ExactSolver, SingleDofContactDurationAndRestitution) {
         const double Cc = 2.0 * zeta * std::sqrt(Kc * m);
         const double tc = (std::numbers::pi - 2.0 * std::asin(zeta)) / (wn * std::sqrt(1.0 - zeta * zeta));
         const double h = 1e-9;  // flight h / v = 1 us before the impact
-        const TransientProblem p = test::single_dof_drop(m, Kc, Cc, h, v, h / v + 1.5 * tc);
+        const PiecewiseLinearProblem p = test::single_dof_drop(m, Kc, Cc, h, v, h / v + 1.5 * tc);
         const TransientResult r = solve_exact(p);
         ASSERT_GE(r.episodes.size(), 1u) << zeta;
         const ContactEpisode& e = r.episodes.front();
@@ -42,7 +42,7 @@ TEST(ExactSolver, SingleDofContactDurationAndRestitution) {
 TEST(ExactSolver, SingleMassContactStateDecomposesToRoundoff) {
     const double m = 1e-9, Kc = 10.0;
     for (double zeta : {0.0, 0.1, 0.5, 0.9}) {
-        const TransientProblem p = test::single_dof_drop(m, Kc, 2.0 * zeta * std::sqrt(Kc * m), 1e-9, 1e-3, 1e-5);
+        const PiecewiseLinearProblem p = test::single_dof_drop(m, Kc, 2.0 * zeta * std::sqrt(Kc * m), 1e-9, 1e-3, 1e-5);
         const StateModes s = decompose_state(base_modes(p), p, {true});
         EXPECT_EQ(s.method, "rank-one") << zeta;
         EXPECT_LT(s.residual, 1e-13) << zeta;
@@ -50,7 +50,7 @@ TEST(ExactSolver, SingleMassContactStateDecomposesToRoundoff) {
 }
 
 TEST(ExactSolver, RankOneDecompositionMatchesDense) {
-    const TransientProblem p = test::cantilever_drop(10, 40.0, 2e-7, 1e-6, 1e3, 1e-10, 1e-5);
+    const PiecewiseLinearProblem p = test::cantilever_drop(10, 40.0, 2e-7, 1e-6, 1e3, 1e-10, 1e-5);
     const BaseModes b = base_modes(p);
     const StateModes s = decompose_state(b, p, {true});
     EXPECT_EQ(s.method, "rank-one");
@@ -58,7 +58,7 @@ TEST(ExactSolver, RankOneDecompositionMatchesDense) {
 }
 
 TEST(ExactSolver, UndampedEnergyIsConservedThroughTwentyImpacts) {
-    const TransientProblem p = test::cantilever_drop(10, 40.0, 0.0, 1e-6, 0.0, 0.0, 1.5e-4);
+    const PiecewiseLinearProblem p = test::cantilever_drop(10, 40.0, 0.0, 1e-6, 0.0, 0.0, 1.5e-4);
     const TransientResult r = solve_exact(p);
     EXPECT_GE(r.episodes.size(), 20u);
     auto total = [](const EnergyLedger& e) { return e.kinetic + e.strain + e.contact_spring - e.external_work; };
@@ -72,7 +72,7 @@ TEST(ExactSolver, UndampedEnergyIsConservedThroughTwentyImpacts) {
 }
 
 TEST(ExactSolver, DampedEnergyLossEqualsDamperWork) {
-    const TransientProblem p = test::cantilever_drop(10, 40.0, 5e-7, 1e-6, 2e3, 2e-10, 1.2e-4);
+    const PiecewiseLinearProblem p = test::cantilever_drop(10, 40.0, 5e-7, 1e-6, 2e3, 2e-10, 1.2e-4);
     const TransientResult r = solve_exact(p);
     EXPECT_GE(r.episodes.size(), 5u);
     auto total = [](const EnergyLedger& e) {
@@ -94,9 +94,9 @@ namespace {
 
 // A mass on a spring released from +A swings down to exactly -A. A support below at -A (1 - delta)
 // is touched with a penetration of only A delta; at -A (1 + delta) it is never touched.
-TransientProblem grazing_oscillator(double delta_gap) {
+PiecewiseLinearProblem grazing_oscillator(double delta_gap) {
     const double m = 1e-9, k = 1.0, A = 1e-6;
-    TransientProblem p = test::single_dof_drop(m, 1e3, 0.0, A, 0.0, 0.0);
+    PiecewiseLinearProblem p = test::single_dof_drop(m, 1e3, 0.0, A, 0.0, 0.0);
     p.K(0, 0) = k;
     p.contacts[0].surface = -A * (1.0 + delta_gap);
     p.t_end = 1.2 * std::numbers::pi * std::sqrt(m / k);  // past the lowest point at pi sqrt(m/k)
@@ -137,7 +137,7 @@ namespace {
 // A negative damping ratio makes a mode grow without end: refused, not run (the case reader refuses
 // such ratios with its own message; this is the guard for problems built in code).
 TEST(ExactSolver, NegativelyDampedModelIsRefused) {
-    TransientProblem p = test::cantilever_drop(6, 1000.0, 2e-7, 1e-6, 0.0, 0.0, 8e-6);
+    PiecewiseLinearProblem p = test::cantilever_drop(6, 1000.0, 2e-7, 1e-6, 0.0, 0.0, 8e-6);
     p.beta = -1e-10;
     EXPECT_THROW(solve_exact(p), std::runtime_error);
 }
@@ -145,7 +145,7 @@ TEST(ExactSolver, NegativelyDampedModelIsRefused) {
 // At m = 100 stiffness-proportional damping makes the highest modes overdamped (zeta ~ 100, poles
 // from 1e8 to 1e13 1/s); the contact state must still decompose and the ledger still close.
 TEST(ExactSolver, FineMeshWithOverdampedHighModes) {
-    const TransientProblem p = test::cantilever_drop(100, 1000.0, 2e-7, 1e-6, 0.0, 1.9e-9, 8e-6);
+    const PiecewiseLinearProblem p = test::cantilever_drop(100, 1000.0, 2e-7, 1e-6, 0.0, 1.9e-9, 8e-6);
     const TransientResult r = solve_exact(p, ExactOptions{true, false, 1e-9});
     ASSERT_GE(r.episodes.size(), 1u);
     auto total = [](const EnergyLedger& e) {

@@ -1,4 +1,4 @@
-// From Case to TransientProblem: the static step and equilibrium against closed forms (a cantilever's
+// From Case to PiecewiseLinearProblem: the static step and equilibrium against closed forms (a cantilever's
 // tip stiffness 3EI/l^3 in series or parallel with the support spring), contact damping from a
 // damping ratio, Rayleigh damping from ratios, initial velocities, loads, and the bad starts.
 
@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "dynamics/piecewise_linear_form.hpp"
 #include "dynamics/problem_builder.hpp"
 #include "io/case_reader.hpp"
 #include "model/input_error.hpp"
@@ -42,6 +43,9 @@ vi::Support support_at(double position, vi::Side side, double surface) {
     return s;
 }
 
+// The problem as the exact solver sees it: each force element's piecewise-linear form.
+vi::PiecewiseLinearProblem pl(const BuiltProblem& b) { return vi::piecewise_linear_form(b.problem); }
+
 // The message of the InputError building c throws, or "built".
 std::string build_error(const Case& c) {
     try {
@@ -55,7 +59,7 @@ std::string build_error(const Case& c) {
 TEST(ProblemBuilder, TipLiftedAboveAZeroGapSupport) {
     const Case c = lifted_cantilever(1e-6);
     const BuiltProblem b = vi::build_transient_problem(c);
-    const vi::TransientProblem& p = b.problem;
+    const vi::PiecewiseLinearProblem p = vi::piecewise_linear_form(b.problem);  // what the elements say of themselves
     ASSERT_EQ(p.size(), 100);  // 51 nodes x (v, theta), the clamp's two removed
     EXPECT_EQ(p.K.rows(), 100);
     EXPECT_EQ(p.q0.size(), 100);
@@ -85,7 +89,7 @@ TEST(ProblemBuilder, PrestressedTipRestsOnItsSupport) {
     c.initial.kind = vi::InitialState::Kind::rest;
     BuiltProblem b = vi::build_transient_problem(c);
     EXPECT_NEAR(b.q_equilibrium[b.problem.tip_dof], v_eq, 1e-9 * v_eq);
-    EXPECT_EQ(b.problem.active0, std::vector<bool>{true});
+    EXPECT_EQ(pl(b).active0, std::vector<bool>{true});
     EXPECT_EQ(b.problem.q0, b.q_equilibrium);
     EXPECT_EQ(b.static_force_n, 0.0);
 
@@ -94,13 +98,13 @@ TEST(ProblemBuilder, PrestressedTipRestsOnItsSupport) {
     const double v_eq_fe = b.q_equilibrium[b.problem.tip_dof];
     EXPECT_NEAR(b.problem.q0[b.problem.tip_dof], v_eq_fe + 1e-6, 1e-12 * (v_eq_fe + 1e-6));
     EXPECT_NEAR(b.static_force_n, kb * (v_eq + 1e-6), 1e-9 * kb * (v_eq + 1e-6));
-    EXPECT_EQ(b.problem.active0, std::vector<bool>{false});
+    EXPECT_EQ(pl(b).active0, std::vector<bool>{false});
     EXPECT_NEAR(b.y0_m, 1e-6, 1e-15);
 
     // A small lift keeps it closed: beam and spring in parallel.
     b = vi::build_transient_problem(lifted_cantilever(1e-8, s));
     EXPECT_NEAR(b.static_force_n, (kb + kc) * 1e-8, 1e-9 * (kb + kc) * 1e-8);
-    EXPECT_EQ(b.problem.active0, std::vector<bool>{true});
+    EXPECT_EQ(pl(b).active0, std::vector<bool>{true});
 }
 
 TEST(ProblemBuilder, PrestressedSupportAboveAndClampedClampedBeam) {
@@ -109,8 +113,8 @@ TEST(ProblemBuilder, PrestressedSupportAboveAndClampedClampedBeam) {
     c.supports.push_back(support_at(1.0, vi::Side::above, 0.5e-6));
     const double kb = tip_stiffness(c);
     BuiltProblem b = vi::build_transient_problem(c);
-    EXPECT_EQ(b.problem.contacts[0].sign, -1.0);
-    EXPECT_EQ(b.problem.contacts[0].surface, -0.5e-6);
+    EXPECT_EQ(pl(b).contacts[0].sign, -1.0);
+    EXPECT_EQ(pl(b).contacts[0].surface, -0.5e-6);
     EXPECT_NEAR(b.q_equilibrium[b.problem.tip_dof], -50.0 * 0.5e-6 / (50.0 + kb), 1e-15);
 
     Case cc = vi::test::clamped_clamped(50);
@@ -118,7 +122,7 @@ TEST(ProblemBuilder, PrestressedSupportAboveAndClampedClampedBeam) {
     cc.supports.push_back(support_at(0.5, vi::Side::below, 0.5e-6));
     const double k_mid = 192.0 * cc.material.youngs_modulus * cc.beam.second_moment() / std::pow(cc.beam.length, 3);
     b = vi::build_transient_problem(cc);
-    ASSERT_EQ(b.problem.tip_dof, b.problem.contacts[0].dof);  // no free end: watch mid-span
+    ASSERT_EQ(b.problem.tip_dof, pl(b).contacts[0].dof);  // no free end: watch mid-span
     EXPECT_NEAR(b.q_equilibrium[b.problem.tip_dof], 50.0 * 0.5e-6 / (50.0 + k_mid), 1e-9 * 0.5e-6);
 }
 
@@ -157,7 +161,7 @@ TEST(ProblemBuilder, ContactDampingFromARatio) {
     const double rho_a_l = c.material.density * c.beam.area() * c.beam.length;
     const double expected = 2.0 * 0.1 * std::sqrt(50.0 * rho_a_l / 4.0);  // phi1(l)^2 = 4 / (rho A l)
     EXPECT_NEAR(b.contact_damping[0], expected, 1e-6 * expected);
-    EXPECT_EQ(b.problem.contacts[0].damping, b.contact_damping[0]);
+    EXPECT_EQ(pl(b).contacts[0].damping, b.contact_damping[0]);
     EXPECT_EQ(b.contact_stiffness, std::vector<double>{50.0});
 }
 
@@ -216,8 +220,8 @@ TEST(ProblemBuilder, LoadsAndSampling) {
     c.loads.push_back(load);
     c.solver.horizon = 100e-6;
     BuiltProblem b = vi::build_transient_problem(c);
-    ASSERT_EQ(b.problem.loads.size(), 1u);
-    const vi::LoadTerm& t = b.problem.loads[0];
+    ASSERT_EQ(pl(b).loads.size(), 1u);
+    const vi::LoadTerm t = pl(b).loads[0];
     EXPECT_EQ(t.amplitude, 3e-6);
     EXPECT_EQ(t.time.kind, vi::TimeFunction::Kind::step);
     EXPECT_EQ(t.shape.size(), 100);
@@ -234,7 +238,7 @@ TEST(ProblemBuilder, ThePaperExampleFile) {
     const Case c = vi::read_case_file(std::string(VI_SOURCE_DIR) + "/examples/paper/free_impact_tip.toml");
     const BuiltProblem b = vi::build_transient_problem(c);
     EXPECT_NEAR(b.problem.q0[b.problem.tip_dof], 1e-6, 1e-18);
-    EXPECT_EQ(b.problem.active0, std::vector<bool>{false});
+    EXPECT_EQ(pl(b).active0, std::vector<bool>{false});
     EXPECT_DOUBLE_EQ(b.problem.t_end, 150e-6);
     EXPECT_DOUBLE_EQ(b.problem.output_step, 10e-9);
     EXPECT_GT(b.omega1, 0.0);

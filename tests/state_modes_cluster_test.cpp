@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "impacts/simulation.hpp"
+#include "dynamics/piecewise_linear_form.hpp"
 #include "dynamics/problem_builder.hpp"
 #include "dynamics/state_modes.hpp"
 #include "io/case_reader.hpp"
@@ -31,8 +32,9 @@ TEST(StateModesCluster, InteriorContactsDecomposeExactly) {
     // the computed roots) these fell back to a dense solve that failed.
     for (double x0 : {0.5, 0.536, 0.67, 0.87}) {
         const BuiltProblem b = build_transient_problem(example_at(x0));
-        const BaseModes base = base_modes(b.problem);
-        const StateModes s = decompose_state(base, b.problem, {true});
+        const PiecewiseLinearProblem p = piecewise_linear_form(b.problem);
+        const BaseModes base = base_modes(p);
+        const StateModes s = decompose_state(base, p, {true});
         EXPECT_EQ(s.method, "rank-one") << x0;
         EXPECT_LT(s.residual, 1e-6) << x0;
     }

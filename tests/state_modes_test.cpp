@@ -16,8 +16,8 @@ namespace vi {
 namespace {
 
 // The paper cantilever with its contact moved to the node nearest to x/l = position.
-TransientProblem with_contact_at(int m, double position, double beta) {
-    TransientProblem p = test::cantilever_drop(m, 1000.0, 5e-5, 1e-6, 0.0, beta, 1e-5);
+PiecewiseLinearProblem with_contact_at(int m, double position, double beta) {
+    PiecewiseLinearProblem p = test::cantilever_drop(m, 1000.0, 5e-5, 1e-6, 0.0, beta, 1e-5);
     const int node = static_cast<int>(std::lround(position * m));
     const System s = build_system(test::paper_cantilever(m, 1.0));
     const int reduced = s.reduced_of[static_cast<std::size_t>(global_dof(node, 1))];
@@ -38,7 +38,7 @@ TEST(StateModes, RankOneAgreesWithDenseAtInteriorSupports) {
     // Stiffness-proportional damping as in the examples: the slow poles of the overdamped modes
     // crowd near -1/beta, where the secular roots are hardest to separate.
     for (const double position : {0.28, 0.5, 0.68, 0.86, 1.0}) {
-        const TransientProblem p = with_contact_at(50, position, 1.9e-9);
+        const PiecewiseLinearProblem p = with_contact_at(50, position, 1.9e-9);
         const BaseModes b = base_modes(p);
         const StateModes s = decompose_state(b, p, {true});
         EXPECT_EQ(s.method, "rank-one") << position;
@@ -68,7 +68,7 @@ TEST(StateModes, RankOneAgreesWithDenseAtInteriorSupports) {
 }
 
 TEST(StateModes, ConjugateRepresentativesGiveTheFullResponse) {
-    const TransientProblem p = with_contact_at(20, 0.7, 1.9e-9);
+    const PiecewiseLinearProblem p = with_contact_at(20, 0.7, 1.9e-9);
     const BaseModes b = base_modes(p);
     for (const bool closed : {false, true}) {
         const StateModes s = decompose_state(b, p, {closed});
@@ -94,7 +94,7 @@ TEST(StateModes, ConjugateRepresentativesGiveTheFullResponse) {
 }
 
 TEST(StateModes, SecularRootsAreConjugateClosed) {
-    const TransientProblem p = with_contact_at(20, 1.0, 1e-9);
+    const PiecewiseLinearProblem p = with_contact_at(20, 1.0, 1e-9);
     const BaseModes b = base_modes(p);
     const Eigen::VectorXd phi = b.phi.row(p.contacts[0].dof).transpose();
     std::vector<SecularMode> modes;

@@ -79,7 +79,7 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
         EXPECT_FALSE(case_path_unit(p).empty());
         ++checked;
     }
-    EXPECT_EQ(checked, 36);
+    EXPECT_EQ(checked, 38);
 }
 
 TEST(SweepCasePaths, ValuesLandWhereTheCaseFileWouldPutThem) {

@@ -1,109 +1,118 @@
 #pragma once
-// CvodeSystem: the first-order form of a TransientProblem for CVODE (right-hand side, analytic
-// Jacobian, event functions, contact quantities, energy). Internal to the CVODE solver.
-
-#include <sundials/sundials_matrix.h>
-#include <sundials/sundials_nvector.h>
+// ModalSystem: the first-order form CVODE integrates, in the coordinates of a ModalBasis (right-hand
+// side, the pieces of the Jacobian, root functions, element readings, energy). Internal to the CVODE
+// solver (dynamics/cvode_solver.*).
 
 #include <Eigen/Dense>
 #include <vector>
 
+#include "dynamics/modal_basis.hpp"
 #include "dynamics/transient_problem.hpp"
 #include "dynamics/transient_result.hpp"
 
 namespace vi::cvode_detail {
 
-// Layout of the CVODE state y, N = 2n + 3 + nc (n DOFs, nc contacts):
-//   [0, n)       q                                   displacements [m, rad]
-//   [n, 2n)      v = dq/dt                           velocities [m/s, rad/s]
-//   2n           integral of v^T C v dt              Rayleigh dissipation [J]
-//   2n + 1       integral of sum_active Cc (dd/dt)^2 contact-damper dissipation [J]
-//   2n + 2       integral of Q(t)^T v dt             external work [J]
-//   2n + 3 + j   integral of F_j dt while j closed   impulse of contact j [N s]
-// The quadratures feed nothing back, so they only add rows to the Jacobian; keeping them in y makes
-// one CVODE run integrate them to the same tolerance as the motion.
+// Layout of the CVODE state y, N = 2r + 3 + nc (r basis vectors, nc contact elements):
+//   [0, r)       eta                                   modal displacements [m sqrt(kg)]
+//   [r, 2r)      eta' = d eta / dt
+//   2r           integral of eta'^T D eta' dt          Rayleigh dissipation [J], D = diag(alpha + beta w^2)
+//   2r + 1       integral of the elements' dissipated power [J]
+//   2r + 2       integral of the elements' input power (external work) [J]
+//   2r + 3 + j   integral of F_j dt while contact j is closed: its impulse [N s]
+// eta'' = -w^2 eta - D eta' + sum_e P_e^T f_e(P_e eta, P_e eta', t), P_e the basis rows of element
+// e's DOFs. The quadratures feed nothing back.
 //
-// Event functions, three per contact j (index 3j + k), all evaluated from the state:
-//   k = 0  switching: open:   min(s d, F)  (s = Kc, or 1 if Kc = 0), direction +1: the contact
-//                             closes when d > 0 and F > 0 become both true (d crossing 0 upward,
-//                             or F crossing 0 upward while d > 0);
-//                     closed: -F, direction +1: the contact opens when F falls through 0.
-//   k = 1  dd/dt, direction -1: local maxima of d. Closed: peak penetration. Open: a guard against
-//          an engagement CVODE stepped over (d up through 0 and back within one step).
-//   k = 2  closed: dF/dt, direction -1: local maxima of F (peak force). Open: constant 1 (unused).
-class CvodeSystem {
+// Root functions: per hybrid element its switching function (direction +1); per element its watch
+// functions (their own directions); then the velocities of the watched point and of the first
+// contact's point (direction 0: their zeros are the extremes of the displacements).
+class ModalSystem {
 public:
-    explicit CvodeSystem(const TransientProblem& p);
+    ModalSystem(const TransientProblem& p, ModalBasis basis);
 
-    [[nodiscard]] int dofs() const { return n_; }
-    [[nodiscard]] int size() const { return 2 * n_ + 3 + nc_; }
-    [[nodiscard]] int contacts() const { return nc_; }
-    // 3 per contact, then 2 for the extremes: the watched point's velocity and contact 0's
-    // velocity (zero crossings in either direction are its local maxima and minima).
-    [[nodiscard]] int roots() const { return 3 * nc_ + 2; }
-    [[nodiscard]] int extreme_root() const { return 3 * nc_; }
-    [[nodiscard]] int rayleigh_index() const { return 2 * n_; }
-    [[nodiscard]] int contact_damping_index() const { return 2 * n_ + 1; }
-    [[nodiscard]] int work_index() const { return 2 * n_ + 2; }
-    [[nodiscard]] int impulse_index(int j) const { return 2 * n_ + 3 + j; }
+    [[nodiscard]] int basis_size() const { return r_; }
+    [[nodiscard]] int size() const { return 2 * r_ + 3 + static_cast<int>(contacts_.size()); }
+    [[nodiscard]] int elements() const { return static_cast<int>(p_.forces.size()); }
+    [[nodiscard]] const ForceElement& element(int e) const { return *p_.forces[static_cast<std::size_t>(e)]; }
+    [[nodiscard]] const std::vector<int>& contacts() const { return contacts_; }  // element index per contact
+    [[nodiscard]] const ModalBasis& basis() const { return basis_; }
+    [[nodiscard]] const Eigen::VectorXd& rayleigh() const { return d_; }  // alpha + beta w^2 per vector
+    [[nodiscard]] const Eigen::MatrixXd& rows(int e) const { return rows_[static_cast<std::size_t>(e)]; }
 
-    // Sets the closed contacts; rebuilds the linear operator of the current piece.
-    void set_active(const std::vector<bool>& active);
-    [[nodiscard]] const std::vector<bool>& active() const { return active_; }
-    // Loads are evaluated at min(t, left limit of t_stop): a jump at the stop time belongs to the
-    // next segment, which starts after a reinit there.
-    void set_segment_end(double t_stop);
+    [[nodiscard]] int rayleigh_index() const { return 2 * r_; }
+    [[nodiscard]] int dissipation_index() const { return 2 * r_ + 1; }
+    [[nodiscard]] int work_index() const { return 2 * r_ + 2; }
+    [[nodiscard]] int impulse_index(int j) const { return 2 * r_ + 3 + j; }
 
-    // CVODE callbacks on raw arrays of length size() (J: column-major size() x size()).
+    [[nodiscard]] int roots() const { return roots_; }
+    [[nodiscard]] int switch_root(int e) const { return switch_root_[static_cast<std::size_t>(e)]; }  // -1: none
+    [[nodiscard]] int watch_root(int e) const { return watch_root_[static_cast<std::size_t>(e)]; }    // first one
+    [[nodiscard]] int extreme_root() const { return roots_ - 2; }
+    [[nodiscard]] std::vector<int> root_directions() const;
+
+    // The elements' modes of the current piece.
+    void set_modes(const std::vector<int>& modes) { modes_ = modes; }
+    [[nodiscard]] const std::vector<int>& modes() const { return modes_; }
+    // Element forces are evaluated at min(t, the left limit of t_stop): a jump at a stop belongs to
+    // the next segment, which starts after a reinit there.
+    void set_segment_end(double t_stop) { t_limit_ = t_stop; }
+
+    // CVODE callbacks on raw arrays of length size().
     void rhs(double t, const double* y, double* ydot) const;
-    void jacobian(double t, const double* y, double* jac) const;
-    void events(double t, const double* y, double* g) const;
+    void root_functions(double t, const double* y, double* g) const;
+    // d f_e / d q_e and d f_e / d v_e of every element at y (row-major |D_e| x |D_e| each).
+    void tangents(double t, const double* y, std::vector<Eigen::MatrixXd>& dfdq, std::vector<Eigen::MatrixXd>& dfdv) const;
 
-    // Contact j from the state: penetration d, its rate, the force magnitude F = Kc d + Cc dd/dt
-    // (whether or not the contact is closed), and the switching function (event 0) for open j.
-    [[nodiscard]] double penetration(int j, const double* y) const;
-    [[nodiscard]] double penetration_rate(int j, const double* y) const;
-    [[nodiscard]] double force(int j, const double* y) const;
-    [[nodiscard]] double closing_function(int j, const double* y) const;
-    [[nodiscard]] double contact_velocity(int j, const double* y) const;
+    // Element e at y in mode `mode`: switching function, contact reading, stored energy.
+    [[nodiscard]] double switching_function(int e, int mode, double t, const double* y) const;
+    [[nodiscard]] ContactReading reading(int e, double t, const double* y) const;
+    [[nodiscard]] double stored_energy(int e, int mode, double t, const double* y) const;
+    // The mode each element starts in at y: the problem's modes0, turned to the contact mode where a
+    // contact's initial_mode says it touches and moves in.
+    [[nodiscard]] std::vector<int> initial_modes(const double* y) const;
 
-    // kinetic, strain, contact_spring (closed contacts) and the three integrals from y; the
-    // contact_dissipated entry gets `jump` added (see cvode_solver.cpp for what that holds).
-    [[nodiscard]] EnergyLedger energy(const double* y, double jump) const;
+    // Displacement and velocity of the watched point and of a contact's point [m], [m/s].
+    [[nodiscard]] double tip(const double* y) const { return tip_row_.dot(Eigen::Map<const Eigen::VectorXd>(y, r_)); }
+    [[nodiscard]] double tip_velocity(const double* y) const {
+        return tip_row_.dot(Eigen::Map<const Eigen::VectorXd>(y + r_, r_));
+    }
+    [[nodiscard]] double contact_displacement(int j, const double* y) const;
 
+    // kinetic, strain, the elements' stored energy and the three integrals from y; `jump` is added to
+    // the dissipated energy (what a massless element loses when it switches; cvode_solver.cpp).
+    [[nodiscard]] EnergyLedger energy(double t, const double* y, double jump) const;
+
+    // y at t = 0: eta = phi^T M q0, eta' = phi^T M v0.
+    [[nodiscard]] Eigen::VectorXd initial_state() const;
+    // How far the basis is from the initial displacement: |q0 - phi eta0| / |q0| (0 for a full basis).
+    [[nodiscard]] double initial_projection_error() const;
     // Absolute tolerance of each component: atol_scale times a characteristic magnitude.
     [[nodiscard]] Eigen::VectorXd absolute_tolerances(double atol_scale) const;
 
-    [[nodiscard]] Eigen::VectorXd initial_state() const;
-
 private:
-    [[nodiscard]] double load_time(double t) const;
-    void acceleration(double t, const double* y, Eigen::VectorXd& a) const;
+    struct Gathered {
+        std::vector<double> q, v, a;
+    };
+    void gather(int e, const double* y, const double* acc, Gathered& g) const;
+    [[nodiscard]] double element_time(double t) const;
+    void acceleration(double t, const double* y, Eigen::VectorXd& acc) const;
 
     const TransientProblem& p_;
-    int n_ = 0;
-    int nc_ = 0;
-    Eigen::MatrixXd C_;              // alpha M + beta K
-    Eigen::MatrixXd Minv_;           // M^-1 (from the Cholesky factor of M)
-    Eigen::MatrixXd MinvK_, MinvC_;  // M^-1 K, M^-1 C
-    Eigen::MatrixXd MinvE_;          // column j: M^-1 e_dof(j)
-    Eigen::MatrixXd MinvQ_;          // column k: M^-1 amplitude_k shape_k
-    bool damped_ = false;
-    // Current piece: v' = -A q - B v + c + sum_k g_k(t) MinvQ_k.
-    std::vector<bool> active_;
-    Eigen::MatrixXd A_, B_;
-    Eigen::VectorXd c_;
+    ModalBasis basis_;
+    int r_ = 0;
+    Eigen::VectorXd w2_, d_;                 // omega^2, alpha + beta omega^2
+    std::vector<Eigen::MatrixXd> rows_;      // per element: basis rows of its DOFs (|D_e| x r)
+    Eigen::RowVectorXd tip_row_;
+    std::vector<int> contacts_;
+    std::vector<int> modes_;
+    std::vector<int> switch_root_, watch_root_;
+    int roots_ = 0;
+    bool needs_acceleration_ = false;
     double t_limit_ = 0.0;
-    mutable Eigen::VectorXd acc_;    // scratch for events()
+    mutable Gathered scratch_;
+    mutable Eigen::VectorXd acc_;
 };
 
-// Throws std::invalid_argument when p is inconsistent (sizes, DOF indices, signs, horizon).
+// Throws std::invalid_argument when p is inconsistent (sizes, DOF indices, horizon).
 void validate(const TransientProblem& p);
-
-// CVODE callbacks; user_data is the CvodeSystem. They never let an exception into the C library:
-// one becomes an unrecoverable error (-1) and CVODE fails.
-int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void* user_data);
-int jac_fn(realtype t, N_Vector y, N_Vector fy, SUNMatrix J, void* user_data, N_Vector, N_Vector, N_Vector);
-int root_fn(realtype t, N_Vector y, realtype* g, void* user_data);
 
 }  // namespace vi::cvode_detail

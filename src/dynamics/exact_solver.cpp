@@ -12,6 +12,7 @@
 
 #include "dynamics/event_search.hpp"
 #include "dynamics/exact_state.hpp"
+#include "dynamics/piecewise_linear_form.hpp"
 #include "model/run_control.hpp"
 
 namespace vi {
@@ -93,7 +94,7 @@ std::optional<Tangency> resolve_tangency(const ExpSignal& F, const ExpSignal& d,
 
 }  // namespace
 
-TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o) {
+TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions& o) {
     if (p.size() == 0) throw std::runtime_error("transient: the model has no free bending DOF");
     if (!(p.t_end > 0.0)) throw std::runtime_error("transient: the horizon must be positive");
     TransientResult res;
@@ -295,6 +296,10 @@ TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o) {
     std::sort(res.episodes.begin(), res.episodes.end(),
               [](const ContactEpisode& a, const ContactEpisode& b) { return a.t_on < b.t_on; });
     return res;
+}
+
+TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o) {
+    return solve_exact(piecewise_linear_form(p), o);
 }
 
 }  // namespace vi

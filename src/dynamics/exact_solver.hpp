@@ -2,6 +2,7 @@
 // Exact event-driven solver: within each contact state the response is a sum of modal exponentials
 // (decomposed once per state and reused); only the switching instants are found by root finding.
 
+#include "dynamics/piecewise_linear_problem.hpp"
 #include "dynamics/transient_problem.hpp"
 #include "dynamics/transient_result.hpp"
 
@@ -18,6 +19,10 @@ struct ExactOptions {
 // Solves the problem from t = 0 to p.t_end. Throws std::runtime_error on numerical trouble (a state
 // that cannot be decomposed, resonant undamped forcing), WorkLimitReached when max_events or
 // max_steps is reached, and StopRequested / TimeLimitReached from check_run() (model/run_control.hpp).
+TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions& o = {});
+
+// The same for a problem of force elements: each describes itself as a piecewise-linear term
+// (dynamics/piecewise_linear_form.hpp); InputError on solver.method names one that cannot.
 TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o = {});
 
 }  // namespace vi

@@ -35,7 +35,7 @@ void negate(ExpSignal& f) {
 
 // ---------------------------------------------------------------------------------------------
 
-ExactModel::ExactModel(const TransientProblem& p, bool energy) : p_(&p), energy_(energy), base_(base_modes(p)) {}
+ExactModel::ExactModel(const PiecewiseLinearProblem& p, bool energy) : p_(&p), energy_(energy), base_(base_modes(p)) {}
 
 Eigen::VectorXd ExactModel::initial_state(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0) const {
     Eigen::VectorXd x(2 * base_.n);
@@ -123,7 +123,7 @@ const PieceSolution& ExactModel::piece(const std::vector<bool>& active, const Ei
 
 // ---------------------------------------------------------------------------------------------
 
-PieceSolution::PieceSolution(const TransientProblem& p, const BaseModes& b, const StateData& s,
+PieceSolution::PieceSolution(const PiecewiseLinearProblem& p, const BaseModes& b, const StateData& s,
                              const std::vector<bool>& active, const Eigen::VectorXd& x0, double t0, double t1,
                              bool energy)
     : p_(&p), b_(&b), s_(&s), active_(active) {
@@ -189,7 +189,7 @@ PieceSolution::PieceSolution(const TransientProblem& p, const BaseModes& b, cons
 // has a particular solution in closed form. The set of forcing terms is closed under conjugation
 // (the forcing is real), which is what lets the representatives stand for their conjugates.
 void PieceSolution::particular_solution(const Eigen::VectorXd& x0, double t0, double t1, bool energy) {
-    const TransientProblem& p = *p_;
+    const PiecewiseLinearProblem& p = *p_;
     const BaseModes& b = *b_;
     const int n = b.n;
     Eigen::VectorXd f_const = Eigen::VectorXd::Zero(2 * n);

@@ -8,7 +8,7 @@
 
 #include "dynamics/exp_signal.hpp"
 #include "dynamics/state_modes.hpp"
-#include "dynamics/transient_problem.hpp"
+#include "dynamics/piecewise_linear_problem.hpp"
 #include "dynamics/transient_result.hpp"
 
 namespace vi {
@@ -38,7 +38,7 @@ struct StateData {
 // The solution from x0 at t0 in one state with the loads of [t0, t1]: c(tau) = a exp(lambda tau) + P(tau).
 class PieceSolution {
 public:
-    PieceSolution(const TransientProblem& p, const BaseModes& b, const StateData& s, const std::vector<bool>& active,
+    PieceSolution(const PiecewiseLinearProblem& p, const BaseModes& b, const StateData& s, const std::vector<bool>& active,
                   const Eigen::VectorXd& x0, double t0, double t1, bool energy);
     // Penetration d (open contact) or -F (closed one): its upward zero crossing is the next event.
     [[nodiscard]] const ExpSignal& event_function(int c) const { return event_[static_cast<std::size_t>(c)]; }
@@ -81,7 +81,7 @@ private:
 
     void particular_solution(const Eigen::VectorXd& x0, double t0, double t1, bool energy);
 
-    const TransientProblem* p_;
+    const PiecewiseLinearProblem* p_;
     const BaseModes* b_;
     const StateData* s_;
     std::vector<bool> active_;
@@ -104,7 +104,7 @@ private:
 // The model shared by all pieces: base modes and a cache of decomposed contact states.
 class ExactModel {
 public:
-    ExactModel(const TransientProblem& p, bool energy);
+    ExactModel(const PiecewiseLinearProblem& p, bool energy);
     [[nodiscard]] const BaseModes& base() const { return base_; }
     // x = [Phi^T M q0; Phi^T M v0].
     [[nodiscard]] Eigen::VectorXd initial_state(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0) const;
@@ -116,7 +116,7 @@ public:
 
 private:
     const StateData& state(const std::vector<bool>& active);
-    const TransientProblem* p_;
+    const PiecewiseLinearProblem* p_;
     bool energy_;
     BaseModes base_;
     std::map<std::vector<bool>, std::unique_ptr<StateData>> cache_;

@@ -7,6 +7,8 @@
 #include <string>
 
 #include "dynamics/initial_state.hpp"
+#include "forces/kelvin_voigt_contact.hpp"
+#include "forces/point_load_element.hpp"
 #include "model/input_error.hpp"
 #include "modal/eigen_solver.hpp"
 #include "model/case_checks.hpp"
@@ -84,38 +86,54 @@ RayleighCoefficients rayleigh(const RayleighDamping& d, const ModeSet& modes) {
     return c;
 }
 
-// One contact element per support, on the v DOF of its node. Surfaces in beam coordinates (v up):
-// below, +Support::surface (a prestress lifts it above the unloaded axis); above, -Support::surface.
-// Cc from a damping ratio zeta: Cc = 2 zeta sqrt(Kc m_eff), with m_eff = 1 / phi1(x0)^2 the effective
-// mass of the first unsupported bending mode (mass normalised) at the support: the critical damping
-// of that mode's one-DOF model on the support spring.
-std::vector<ContactElement> contacts(const Case& c, const System& s, const std::vector<int>& pos,
-                                     const Eigen::VectorXd& phi1) {
-    std::vector<ContactElement> out;
+// One Kelvin-Voigt contact element per support, on the v DOF of its node. Surfaces in beam
+// coordinates (v up): below, +Support::surface (a prestress lifts it above the unloaded axis); above,
+// -Support::surface. Cc from a damping ratio zeta: Cc = 2 zeta sqrt(Kc m_eff), with m_eff = 1 /
+// phi1(x0)^2 the effective mass of the first unsupported bending mode (mass normalised) at the
+// support: the critical damping of that mode's one-DOF model on the support spring.
+void add_contacts(const Case& c, const System& s, const std::vector<int>& pos, const Eigen::VectorXd& phi1,
+                  BuiltProblem& b) {
     for (std::size_t k = 0; k < c.supports.size(); ++k) {
         const Support& sup = c.supports[k];
-        const std::string key = "supports[" + std::to_string(k) + "].";
+        const std::string name = "supports[" + std::to_string(k) + "]";
         const int r = s.support_dof[k];
         if (r < 0) {
-            throw InputError(key + "position: the support sits on a node held by an end condition (v never moves there)");
+            throw InputError(name + ".position: the support sits on a node held by an end condition (v never moves there)");
         }
-        ContactElement e;
-        e.dof = pos[static_cast<std::size_t>(r)];
-        e.sign = sup.side == Side::below ? 1.0 : -1.0;
-        e.surface = sup.side == Side::below ? sup.surface : -sup.surface;
-        e.stiffness = sup.stiffness;
-        e.damping = sup.damping;
-        e.x = s.mesh.x[static_cast<std::size_t>(s.mesh.support_nodes[k])];
+        const int dof = pos[static_cast<std::size_t>(r)];
+        double damping = sup.damping;
         if (sup.damping_ratio) {
-            const double phi = phi1[e.dof];
+            const double phi = phi1[dof];
             if (!(std::abs(phi) > 1e-9 * phi1.cwiseAbs().maxCoeff())) {
-                throw InputError(key + "damping_ratio: the first mode does not move at the support (give damping)");
+                throw InputError(name + ".damping_ratio: the first mode does not move at the support (give damping)");
             }
-            e.damping = 2.0 * *sup.damping_ratio * std::sqrt(sup.stiffness) / std::abs(phi);
+            damping = 2.0 * *sup.damping_ratio * std::sqrt(sup.stiffness) / std::abs(phi);
         }
-        out.push_back(e);
+        const double sign = sup.side == Side::below ? 1.0 : -1.0;
+        const double surface = sup.side == Side::below ? sup.surface : -sup.surface;
+        const double x = s.mesh.x[static_cast<std::size_t>(s.mesh.support_nodes[k])];
+        b.problem.forces.push_back(std::make_shared<KelvinVoigtContact>(name, dof, sign, surface, sup.stiffness, damping, x));
+        b.contact_stiffness.push_back(sup.stiffness);
+        b.contact_damping.push_back(damping);
     }
-    return out;
+}
+
+// One point-load element per load: its consistent load vector's nonzero entries.
+void add_loads(const Case& c, const System& s, BuiltProblem& b) {
+    for (std::size_t k = 0; k < c.loads.size(); ++k) {
+        const PointLoad& load = c.loads[k];
+        const Eigen::VectorXd shape = unit_point_load(s, load.position);
+        std::vector<int> dofs;
+        std::vector<double> weights;
+        for (Index i = 0; i < shape.size(); ++i) {
+            if (shape[i] == 0.0) continue;
+            dofs.push_back(static_cast<int>(i));
+            weights.push_back(shape[i]);
+        }
+        b.problem.forces.push_back(std::make_shared<PointLoadElement>("loads[" + std::to_string(k) + "]", std::move(dofs),
+                                                                   std::move(weights), load.amplitude, load.time,
+                                                                   load.position * s.length));
+    }
 }
 
 // The watched DOF: v at the free end (the right end, else the left); when neither end is free, v at
@@ -171,27 +189,23 @@ BuiltProblem build_transient_problem(const Case& c) {
     b.rayleigh = rayleigh(c.damping, modes);
 
     TransientProblem& p = b.problem;
-    p.M = Eigen::MatrixXd(submatrix(s.M, s.bending));
-    p.K = Eigen::MatrixXd(submatrix(s.K, s.bending));
+    p.M = submatrix(s.M, s.bending);
+    p.K = submatrix(s.K, s.bending);
     p.alpha = b.rayleigh.alpha;
     p.beta = b.rayleigh.beta;
-    p.contacts = contacts(c, s, pos, modes.shapes.col(0));
-    for (const ContactElement& e : p.contacts) {
-        b.contact_stiffness.push_back(e.stiffness);
-        b.contact_damping.push_back(e.damping);
-    }
-    for (const PointLoad& load : c.loads) p.loads.push_back({unit_point_load(s, load.position), load.amplitude, load.time});
+    add_contacts(c, s, pos, modes.shapes.col(0), b);
+    add_loads(c, s, b);
 
     // The static step: the time-dependent loads are not part of it (they act from t = 0 on).
     std::vector<bool> is_v(s.bending.size());
     for (std::size_t i = 0; i < s.bending.size(); ++i) is_v[i] = s.free_dofs[static_cast<std::size_t>(s.bending[i])] % 3 == 1;
     const Eigen::VectorXd mode =
         mode_velocity ? Eigen::VectorXd(modes.shapes.col(c.initial.velocity_mode - 1)) : Eigen::VectorXd();
-    InitialConditions ic =
-        initial_conditions(c.initial, p.K, p.contacts, unit_point_load(s, c.initial.position), is_v, mode);
+    InitialConditions ic = initial_conditions(c.initial, p.K, p.forces, unit_point_load(s, c.initial.position), is_v,
+                                              mode, c.solver.max_static_iterations);
     p.q0 = std::move(ic.stepped.q);
     p.v0 = std::move(ic.v0);
-    p.active0 = std::move(ic.stepped.active);
+    p.modes0 = std::move(ic.stepped.modes);
     b.q_equilibrium = std::move(ic.equilibrium.q);
     b.y0_m = ic.lift;
     b.static_force_n = ic.force;

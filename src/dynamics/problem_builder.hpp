@@ -1,5 +1,5 @@
 #pragma once
-// From a Case to a TransientProblem: bending matrices, Rayleigh damping, contact elements, loads and
+// From a Case to a TransientProblem: bending matrices, Rayleigh damping, force elements (contacts, loads) and
 // the initial state (static step, then release at t = 0).
 
 #include <Eigen/Dense>

@@ -147,7 +147,7 @@ bool dense_modes(const BaseModes& b, const Eigen::MatrixXd& A, StateModes& s) {
 
 // Worst of: each eigenpair's backward error |(z^2 + z C~ + K~) v| / ((|z|^2 + |z||C~| + |K~|)|v|),
 // and |L R c - c| / |c| on two probe vectors over all 2n modes. O(n m) with the structure of A.
-double check_residual(const BaseModes& b, const TransientProblem& p, const StateModes& s) {
+double check_residual(const BaseModes& b, const PiecewiseLinearProblem& p, const StateModes& s) {
     const int n = s.dofs(), m = s.size();
     double knorm = b.omega.cwiseAbs2().maxCoeff(), cnorm = s.damping.cwiseAbs().maxCoeff();
     std::vector<const ContactElement*> closed;
@@ -302,7 +302,7 @@ FullModes expand(const StateModes& s) {
     return f;
 }
 
-BaseModes base_modes(const TransientProblem& p) {
+BaseModes base_modes(const PiecewiseLinearProblem& p) {
     BaseModes b;
     b.n = p.size();
     const ModeSet set = all_modes_dense(p.K.sparseView(), p.M.sparseView());
@@ -337,7 +337,7 @@ BaseModes base_modes(const TransientProblem& p) {
     return b;
 }
 
-Eigen::MatrixXd state_matrix(const BaseModes& b, const TransientProblem& p, const std::vector<bool>& active) {
+Eigen::MatrixXd state_matrix(const BaseModes& b, const PiecewiseLinearProblem& p, const std::vector<bool>& active) {
     const int n = b.n;
     Eigen::MatrixXd kk = b.omega.cwiseAbs2().asDiagonal();
     Eigen::MatrixXd cc = (2.0 * b.zeta.cwiseProduct(b.omega)).asDiagonal();
@@ -354,7 +354,7 @@ Eigen::MatrixXd state_matrix(const BaseModes& b, const TransientProblem& p, cons
     return A;
 }
 
-StateModes decompose_state(const BaseModes& b, const TransientProblem& p, const std::vector<bool>& active) {
+StateModes decompose_state(const BaseModes& b, const PiecewiseLinearProblem& p, const std::vector<bool>& active) {
     StateModes s;
     s.active = active;
     s.damping = 2.0 * b.zeta.cwiseProduct(b.omega);

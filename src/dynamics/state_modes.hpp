@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/transient_problem.hpp"
+#include "dynamics/piecewise_linear_problem.hpp"
 
 namespace vi {
 
@@ -28,7 +28,7 @@ struct BaseModes {
 inline constexpr double kCriticalDampingGap = 1e-7;
 
 // Solves the undamped eigenproblem of the problem's (K, M) and adds the Rayleigh ratios.
-BaseModes base_modes(const TransientProblem& p);
+BaseModes base_modes(const PiecewiseLinearProblem& p);
 
 // The order of ascending |z| (the order the signal bounds split slow from fast modes by).
 std::vector<int> order_by_magnitude(const std::vector<cd>& z);
@@ -81,11 +81,11 @@ struct FullModes {
 FullModes expand(const StateModes& s);
 
 // The system matrix A of a contact set in x coordinates (dense, 2n x 2n): for tests and fallback.
-Eigen::MatrixXd state_matrix(const BaseModes& b, const TransientProblem& p, const std::vector<bool>& active);
+Eigen::MatrixXd state_matrix(const BaseModes& b, const PiecewiseLinearProblem& p, const std::vector<bool>& active);
 
 // Decomposes the contact set: closed form for no contact, a secular-equation (Aberth) solution of
 // the rank-one update for one contact, a dense eigen solve otherwise or when the fast path cannot
 // verify itself. Throws std::runtime_error when even the dense path is not diagonalisable.
-StateModes decompose_state(const BaseModes& b, const TransientProblem& p, const std::vector<bool>& active);
+StateModes decompose_state(const BaseModes& b, const PiecewiseLinearProblem& p, const std::vector<bool>& active);
 
 }  // namespace vi

@@ -55,6 +55,11 @@ struct SolverStats {
     // Exact solver: contacts found on a tangency (F at roundoff, switching back at once) whose state
     // was decided by the sign of F just ahead (docs/model.md §12); each also counts as unproven.
     int tangencies = 0;
+    // CVODE: the basis it integrated in (every bending mode, or a reduced-order model's modes plus
+    // static corrections), and how far that basis is from the initial displacement (0 when full).
+    int basis_vectors = 0;
+    int basis_modes = 0;
+    double initial_projection_error = 0.0;
     std::string method;            // "exact" or "cvode"
 };
 

@@ -9,16 +9,32 @@
 
 namespace vi {
 
+namespace {
+
+// The exact solver when the case asks for it, or when it is left to choose and every force element
+// is piecewise linear; CVODE otherwise.
+bool use_exact(const Case& c, const TransientProblem& p) {
+    switch (c.solver.method) {
+        case SolverSettings::Method::exact: return true;
+        case SolverSettings::Method::cvode: return false;
+        case SolverSettings::Method::automatic: return first_nonlinear(p.forces) == nullptr;
+    }
+    return true;
+}
+
+}  // namespace
+
 SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
     if (!(c.solver.horizon > 0.0)) throw InputError("solver.horizon: required for a transient (e.g. \"200 us\")");
     SimulationRun run;
     run.built = build_transient_problem(c);
     const TransientProblem& p = run.built.problem;
-    if (c.solver.method == SolverSettings::Method::cvode) {
+    if (!use_exact(c, p)) {
         CvodeOptions co;
         co.rtol = c.solver.rtol;
         co.max_steps = c.solver.max_steps;
         co.max_events = c.solver.max_events;
+        co.reduced_modes = c.solver.reduced_modes;
         run.result = solve_cvode(p, co);
     } else {
         ExactOptions eo;
@@ -29,14 +45,21 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
         eo.max_steps = c.solver.max_steps;
         run.result = solve_exact(p, eo);
     }
-    const bool touching_at_start = std::find(p.active0.begin(), p.active0.end(), true) != p.active0.end();
-    // Released at rest from its own static equilibrium with no load acting: nothing ever moves, and
-    // that is the answer, not a horizon too short (shared/cases/rest_on_support.toml).
+    const std::vector<int> contacts = contact_indices(p.forces);
+    bool touching_at_start = false;
+    bool loaded = false;
+    for (std::size_t i = 0; i < p.forces.size(); ++i) {
+        const ForceElement& e = *p.forces[i];
+        if (e.is_contact() && i < p.modes0.size() && p.modes0[i] == e.contact_mode()) touching_at_start = true;
+        if (!e.in_static_state()) loaded = true;
+    }
+    // Released at rest from its own static equilibrium with nothing acting after t = 0: nothing ever
+    // moves, and that is the answer, not a horizon too short (shared/cases/rest_on_support.toml).
     const double q_scale = std::max(run.built.q_equilibrium.lpNorm<Eigen::Infinity>(), p.q0.lpNorm<Eigen::Infinity>());
-    const bool at_rest = p.loads.empty() && p.v0.isZero(0.0) &&
+    const bool at_rest = !loaded && p.v0.isZero(0.0) &&
                          (p.q0 - run.built.q_equilibrium).lpNorm<Eigen::Infinity>() <=
                              64.0 * std::numeric_limits<double>::epsilon() * q_scale;
-    if (run.result.episodes.empty() && !touching_at_start && !p.contacts.empty() && !at_rest) {
+    if (run.result.episodes.empty() && !touching_at_start && !contacts.empty() && !at_rest) {
         throw InputError("solver.horizon: too short to see the first impact (no contact before " +
                          std::to_string(p.t_end * 1e6) + " us)");
     }
@@ -46,7 +69,9 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
     s.settle_tolerance = c.solver.settle_tolerance;
     s.length = c.beam.length;
     if (p.tip_dof >= 0) s.tip_equilibrium = run.built.q_equilibrium[p.tip_dof];
-    if (!p.contacts.empty()) s.contact_equilibrium = run.built.q_equilibrium[p.contacts.front().dof];
+    if (!contacts.empty()) {
+        s.contact_equilibrium = run.built.q_equilibrium[p.forces[static_cast<std::size_t>(contacts.front())]->dofs().front()];
+    }
     run.summary = summarize_impacts(run.result, s);
     if (at_rest && run.summary.impacts.empty()) {
         run.summary.Tp = 0.0;

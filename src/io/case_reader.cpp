@@ -229,9 +229,11 @@ PointLoad read_load(const toml::table& t, const std::string& path, Position at, 
 void read_solver(const toml::table& t, Position at, Reading& r, SolverSettings& s) {
     FieldReader f(t, "solver", at, r.log,
                   {"method", "horizon", "output_step", "group_gap", "settle_tolerance", "rtol", "min_search_step",
-                   "max_events", "max_steps"});
-    if (auto v = f.choice("method", {"exact", "cvode"}, false)) {
-        s.method = *v == "cvode" ? SolverSettings::Method::cvode : SolverSettings::Method::exact;
+                   "max_events", "max_steps", "max_static_iterations", "reduced_modes"});
+    if (auto v = f.choice("method", {"auto", "exact", "cvode"}, false)) {
+        s.method = *v == "cvode"   ? SolverSettings::Method::cvode
+                   : *v == "exact" ? SolverSettings::Method::exact
+                                   : SolverSettings::Method::automatic;
     }
     // In the Case, 0 stands for "not given"; written in the file, these two must be positive.
     const auto positive_time = [&](std::string_view key, double& out) {
@@ -248,6 +250,8 @@ void read_solver(const toml::table& t, Position at, Reading& r, SolverSettings& 
     if (auto v = f.quantity("min_search_step", Dimension::dimensionless, false)) s.min_search_step = *v;
     if (auto v = f.integer("max_events", false)) s.max_events = static_cast<long>(*v);
     if (auto v = f.integer("max_steps", false)) s.max_steps = static_cast<long>(*v);
+    if (auto v = f.integer("max_static_iterations", false)) s.max_static_iterations = static_cast<int>(std::clamp<long long>(*v, -1, 1000000000));
+    if (auto v = f.integer("reduced_modes", false)) s.reduced_modes = static_cast<int>(std::clamp<long long>(*v, -1, 1000000000));
     f.finish();
 }
 

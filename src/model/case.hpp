@@ -92,18 +92,23 @@ struct PointLoad {
 
 // Transient solver settings.
 struct SolverSettings {
-    enum class Method { exact, cvode };
-    Method method = Method::exact;
+    // automatic: the exact solver when every force element is piecewise linear, else CVODE.
+    enum class Method { automatic, exact, cvode };
+    Method method = Method::automatic;
     double horizon = 0.0;            // t_end [s]; 0 = not given (required by `simulate`)
     double output_step = 0.0;        // time-history sampling [s]; 0 = horizon / 2000
     double group_gap = 0.0;          // flights shorter than this join episodes into one impact [s];
                                      // 0 = a quarter of the first unsupported period
     double settle_tolerance = 0.01;  // impacts below this fraction of the first peak penetration end T_p
     double rtol = 1e-10;             // CVODE relative tolerance
+    // CVODE's basis: 0 = every bending mode (the full FE model); N > 0 = a reduced-order model on the
+    // first N unsupported modes plus static corrections at the force elements (docs/model.md §13).
+    int reduced_modes = 0;
     double min_search_step = 1e-9;   // exact solver's smallest event-search step [periods of mode 1]
     // Bounds on the work of one transient (docs/case-files.md): reaching one is an error naming it.
     long max_events = 1000000;       // contact switches and load breakpoints over the horizon
     long max_steps = 50000000;       // exact: event and extremum search evaluations; cvode: internal steps
+    int max_static_iterations = 200; // Newton iterations of a static solution (each contact set counts)
 };
 
 // Where a case came from: the file and the line of every key read, for messages about problems

@@ -145,6 +145,12 @@ void check_solver(std::vector<CaseProblem>& out, const SolverSettings& s) {
     if (!(s.max_steps >= 1000 && s.max_steps <= 100000000000L)) {
         out.push_back({"solver.max_steps", "must lie in [1000, 1e11]"});
     }
+    if (!(s.max_static_iterations >= 1 && s.max_static_iterations <= 1000000)) {
+        out.push_back({"solver.max_static_iterations", "must lie in [1, 1e6]"});
+    }
+    if (!(s.reduced_modes >= 0 && s.reduced_modes <= 100000)) {
+        out.push_back({"solver.reduced_modes", "must lie in [0, 1e5] (0: the full model)"});
+    }
 }
 
 }  // namespace

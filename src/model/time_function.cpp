@@ -24,6 +24,20 @@ double TimeFunction::operator()(double t) const {
     return 0.0;
 }
 
+double TimeFunction::max_abs() const {
+    switch (kind) {
+        case Kind::constant:
+        case Kind::step: return 1.0;
+        case Kind::harmonic: return std::abs(offset) + 1.0;
+        case Kind::table: {
+            double m = 0.0;
+            for (double v : values) m = std::max(m, std::abs(v));
+            return m;
+        }
+    }
+    return 0.0;
+}
+
 std::vector<double> TimeFunction::breakpoints(double t0, double t1) const {
     std::vector<double> out;
     if (kind == Kind::step && t_on > t0 && t_on < t1) out.push_back(t_on);

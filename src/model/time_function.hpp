@@ -20,6 +20,8 @@ struct TimeFunction {
 
     // g(t).
     [[nodiscard]] double operator()(double t) const;
+    // The largest |g(t)| over all t.
+    [[nodiscard]] double max_abs() const;
     // Times in (t0, t1) where g or its slope jumps (step time, table knots), ascending.
     [[nodiscard]] std::vector<double> breakpoints(double t0, double t1) const;
 };

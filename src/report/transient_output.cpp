@@ -76,7 +76,9 @@ nlohmann::json resolved_case_json(const Case& c, const BuiltProblem& b, const Im
                     {"velocity_m_s", c.initial.velocity},
                     {"velocity_mode", c.initial.velocity_mode}};
     j["loads"] = static_cast<int>(c.loads.size());
-    j["solver"] = {{"method", c.solver.method == SolverSettings::Method::exact ? "exact" : "cvode"},
+    j["solver"] = {{"method", c.solver.method == SolverSettings::Method::exact   ? "exact"
+                              : c.solver.method == SolverSettings::Method::cvode ? "cvode"
+                                                                                 : "auto"},
                    {"horizon_s", b.problem.t_end},
                    {"output_step_s", b.problem.output_step},
                    {"group_gap_s", s.group_gap},

@@ -123,6 +123,10 @@ const FieldSpec kFields[] = {
      VI_SET(c.solver.max_events = static_cast<long>(v)), always},
     {"solver", "max_steps", "-", true, false, VI_GET(static_cast<double>(c.solver.max_steps)),
      VI_SET(c.solver.max_steps = static_cast<long>(v)), always},
+    {"solver", "max_static_iterations", "-", true, false, VI_GET(static_cast<double>(c.solver.max_static_iterations)),
+     VI_SET(c.solver.max_static_iterations = static_cast<int>(v)), always},
+    {"solver", "reduced_modes", "-", true, false, VI_GET(static_cast<double>(c.solver.reduced_modes)),
+     VI_SET(c.solver.reduced_modes = static_cast<int>(v)), always},
 };
 
 #undef VI_GET

@@ -12,8 +12,8 @@ double LoadedOscillator::omega() const { return std::sqrt(stiffness / mass); }
 
 double LoadedOscillator::period() const { return 2.0 * std::numbers::pi / omega(); }
 
-TransientProblem LoadedOscillator::problem(double t_end, double output_step) const {
-    TransientProblem p;
+PiecewiseLinearProblem LoadedOscillator::problem(double t_end, double output_step) const {
+    PiecewiseLinearProblem p;
     p.M = Eigen::MatrixXd::Constant(1, 1, mass);
     p.K = Eigen::MatrixXd::Constant(1, 1, stiffness);
     p.alpha = 2.0 * zeta * omega();

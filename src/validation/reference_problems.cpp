@@ -29,10 +29,10 @@ Case clamped_clamped(int elements) {
     return c;
 }
 
-TransientProblem cantilever_drop(int m, double Kc, double Cc, double y0, double alpha, double beta, double t_end) {
+PiecewiseLinearProblem cantilever_drop(int m, double Kc, double Cc, double y0, double alpha, double beta, double t_end) {
     const Case c = paper_cantilever(m, 1.0);
     const System s = build_system(c);
-    TransientProblem p;
+    PiecewiseLinearProblem p;
     p.M = Eigen::MatrixXd(submatrix(s.M, s.bending));
     p.K = Eigen::MatrixXd(submatrix(s.K, s.bending));
     p.alpha = alpha;
@@ -61,8 +61,8 @@ TransientProblem cantilever_drop(int m, double Kc, double Cc, double y0, double 
     return p;
 }
 
-TransientProblem single_dof_drop(double m, double Kc, double Cc, double h, double v, double t_end) {
-    TransientProblem p;
+PiecewiseLinearProblem single_dof_drop(double m, double Kc, double Cc, double h, double v, double t_end) {
+    PiecewiseLinearProblem p;
     p.M = Eigen::MatrixXd::Constant(1, 1, m);
     // The free state needs a positive stiffness; 1e-14 Kc changes the closed forms by O(1e-14).
     p.K = Eigen::MatrixXd::Constant(1, 1, 1e-14 * Kc);

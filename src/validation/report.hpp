@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "validation/reference_problems.hpp"
-#include "dynamics/transient_problem.hpp"
+#include "dynamics/piecewise_linear_problem.hpp"
 #include "model/case.hpp"
 
 namespace vi {

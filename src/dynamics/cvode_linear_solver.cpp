@@ -1,0 +1,213 @@
+#include "dynamics/cvode_linear_solver.hpp"
+
+#include <nvector/nvector_serial.h>
+
+#include <cmath>
+#include <new>
+
+namespace vi::cvode_detail {
+namespace {
+
+// ---- the matrix -------------------------------------------------------------------------------
+
+SUNMatrix_ID matrix_id(SUNMatrix) { return SUNMATRIX_CUSTOM; }
+
+void matrix_destroy(SUNMatrix A) {
+    if (!A) return;
+    delete static_cast<StructuredJacobian*>(A->content);
+    A->content = nullptr;
+    SUNMatFreeEmpty(A);
+}
+
+int matrix_zero(SUNMatrix A) {
+    StructuredJacobian& j = structured_content(A);
+    j.a = 0.0;
+    j.b = 0.0;
+    j.dfdq.clear();
+    j.dfdv.clear();
+    return 0;
+}
+
+int matrix_copy(SUNMatrix from, SUNMatrix to) {
+    structured_content(to) = structured_content(from);
+    return 0;
+}
+
+// A = c A + I.
+int matrix_scale_add_identity(realtype c, SUNMatrix A) {
+    StructuredJacobian& j = structured_content(A);
+    j.a *= c;
+    j.b = c * j.b + 1.0;
+    return 0;
+}
+
+SUNMatrix matrix_clone(SUNMatrix A) {
+    const StructuredJacobian& j = structured_content(A);
+    return structured_matrix(*j.system, A->sunctx);
+}
+
+// ---- the solver --------------------------------------------------------------------------------
+
+// The factorisation of one Newton matrix b I + a J.
+struct Factors {
+    const ModalSystem* system = nullptr;
+    double a = 0.0, b = 1.0;
+    Eigen::VectorXd inv_delta;             // 1 / (b^2 + a^2 w^2 - a b D)
+    std::vector<int> active;               // elements with a tangent
+    Eigen::MatrixXd P;                     // their basis rows, stacked (s x r)
+    Eigen::MatrixXd W;                     // -a^2 dfdq + a b dfdv, block diagonal (s x s)
+    Eigen::MatrixXd Fq;                    // dfdq, block diagonal (s x s), for the right-hand side
+    Eigen::PartialPivLU<Eigen::MatrixXd> capacitance;  // I + W P Delta^-1 P^T (s x s)
+    Eigen::PartialPivLU<Eigen::MatrixXd> dense;        // the whole Delta + P^T W P (r x r) when s is large
+    bool use_dense = false;
+    long last_flag = 0;
+};
+
+Factors& factors(SUNLinearSolver S) { return *static_cast<Factors*>(S->content); }
+
+SUNLinearSolver_Type solver_type(SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; }
+SUNLinearSolver_ID solver_id(SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; }
+int solver_initialize(SUNLinearSolver) { return SUNLS_SUCCESS; }
+sunindextype solver_last_flag(SUNLinearSolver S) { return static_cast<sunindextype>(factors(S).last_flag); }
+
+int solver_free(SUNLinearSolver S) {
+    if (!S) return SUNLS_SUCCESS;
+    delete static_cast<Factors*>(S->content);
+    S->content = nullptr;
+    SUNLinSolFreeEmpty(S);
+    return SUNLS_SUCCESS;
+}
+
+bool nonzero(const Eigen::MatrixXd& m) { return m.size() > 0 && m.cwiseAbs().maxCoeff() > 0.0; }
+
+int solver_setup(SUNLinearSolver S, SUNMatrix A) {
+    try {
+        Factors& f = factors(S);
+        const StructuredJacobian& j = structured_content(A);
+        const ModalSystem& sys = *f.system;
+        const int r = sys.basis_size();
+        f.a = j.a;
+        f.b = j.b;
+        const Eigen::VectorXd& w = sys.basis().omega;
+        const Eigen::ArrayXd delta = f.b * f.b + f.a * f.a * w.array().square() - f.a * f.b * sys.rayleigh().array();
+        if (!(delta.abs() > 0.0).all()) return f.last_flag = 1, 1;  // recoverable: CVODE retries smaller
+        f.inv_delta = delta.inverse().matrix();
+        f.active.clear();
+        int s = 0;
+        for (int e = 0; e < static_cast<int>(j.dfdq.size()); ++e) {
+            const std::size_t ue = static_cast<std::size_t>(e);
+            if (nonzero(j.dfdq[ue]) || nonzero(j.dfdv[ue])) {
+                f.active.push_back(e);
+                s += static_cast<int>(j.dfdq[ue].rows());
+            }
+        }
+        f.P.resize(s, r);
+        f.W = Eigen::MatrixXd::Zero(s, s);
+        f.Fq = Eigen::MatrixXd::Zero(s, s);
+        int at = 0;
+        for (int e : f.active) {
+            const std::size_t ue = static_cast<std::size_t>(e);
+            const Eigen::Index m = j.dfdq[ue].rows();
+            f.P.middleRows(at, m) = sys.rows(e);
+            f.W.block(at, at, m, m) = -f.a * f.a * j.dfdq[ue] + f.a * f.b * j.dfdv[ue];
+            f.Fq.block(at, at, m, m) = j.dfdq[ue];
+            at += static_cast<int>(m);
+        }
+        f.use_dense = s > r / 4;
+        if (f.use_dense) {
+            Eigen::MatrixXd full = f.P.transpose() * f.W * f.P;
+            full.diagonal() += delta.matrix();
+            f.dense.compute(full);
+        } else if (s > 0) {
+            const Eigen::MatrixXd G = f.P * f.inv_delta.asDiagonal() * f.P.transpose();
+            f.capacitance.compute(Eigen::MatrixXd::Identity(s, s) + f.W * G);
+        }
+        f.last_flag = 0;
+        return SUNLS_SUCCESS;
+    } catch (...) {
+        return -1;
+    }
+}
+
+// Rows of (b I + a J) x = rhs: b x_eta + a x_v = r_eta; b x_v + a (-w^2 x_eta + P^T Fq P x_eta -
+// D x_v + P^T Fv P x_v) = r_v; the quadratures b x_e = r_e (their Jacobian rows are left out: they
+// feed nothing back, so Newton's iteration still converges on them). With x_eta = (r_eta - a x_v) / b:
+// (Delta + P^T W P) x_v = b r_v + a w^2 r_eta - a P^T Fq P r_eta.
+int solver_solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector rhs, realtype) {
+    try {
+        Factors& f = factors(S);
+        const ModalSystem& sys = *f.system;
+        const int r = sys.basis_size();
+        const int n = sys.size();
+        const double* in = N_VGetArrayPointer(rhs);
+        double* out = N_VGetArrayPointer(x);
+        const Eigen::Map<const Eigen::VectorXd> r_eta(in, r), r_v(in + r, r);
+        const Eigen::VectorXd& w = sys.basis().omega;
+        Eigen::VectorXd t = f.b * r_v + f.a * w.cwiseAbs2().cwiseProduct(r_eta);
+        Eigen::VectorXd xv;
+        if (f.P.rows() > 0) {
+            t.noalias() -= f.a * (f.P.transpose() * (f.Fq * (f.P * r_eta)));
+            if (f.use_dense) {
+                xv = f.dense.solve(t);
+            } else {
+                const Eigen::VectorXd z = f.inv_delta.cwiseProduct(t);
+                const Eigen::VectorXd u = f.capacitance.solve(f.W * (f.P * z));
+                xv = z - f.inv_delta.cwiseProduct(f.P.transpose() * u);
+            }
+        } else {
+            xv = f.inv_delta.cwiseProduct(t);
+        }
+        Eigen::Map<Eigen::VectorXd>(out, r) = (r_eta - f.a * xv) / f.b;
+        Eigen::Map<Eigen::VectorXd>(out + r, r) = xv;
+        for (int k = 2 * r; k < n; ++k) out[k] = in[k] / f.b;
+        f.last_flag = 0;
+        return SUNLS_SUCCESS;
+    } catch (...) {
+        return -1;
+    }
+}
+
+}  // namespace
+
+StructuredJacobian& structured_content(SUNMatrix A) { return *static_cast<StructuredJacobian*>(A->content); }
+
+SUNMatrix structured_matrix(const ModalSystem& system, SUNContext ctx) {
+    SUNMatrix A = SUNMatNewEmpty(ctx);
+    if (!A) throw std::bad_alloc();
+    A->ops->getid = matrix_id;
+    A->ops->clone = matrix_clone;
+    A->ops->destroy = matrix_destroy;
+    A->ops->zero = matrix_zero;
+    A->ops->copy = matrix_copy;
+    A->ops->scaleaddi = matrix_scale_add_identity;
+    auto* content = new (std::nothrow) StructuredJacobian();
+    if (!content) {
+        SUNMatFreeEmpty(A);
+        throw std::bad_alloc();
+    }
+    content->system = &system;
+    A->content = content;
+    return A;
+}
+
+SUNLinearSolver structured_solver(const ModalSystem& system, SUNContext ctx) {
+    SUNLinearSolver S = SUNLinSolNewEmpty(ctx);
+    if (!S) throw std::bad_alloc();
+    S->ops->gettype = solver_type;
+    S->ops->getid = solver_id;
+    S->ops->initialize = solver_initialize;
+    S->ops->setup = solver_setup;
+    S->ops->solve = solver_solve;
+    S->ops->lastflag = solver_last_flag;
+    S->ops->free = solver_free;
+    auto* f = new (std::nothrow) Factors();
+    if (!f) {
+        SUNLinSolFreeEmpty(S);
+        throw std::bad_alloc();
+    }
+    f->system = &system;
+    S->content = f;
+    return S;
+}
+
+}  // namespace vi::cvode_detail

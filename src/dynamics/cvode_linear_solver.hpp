@@ -1,0 +1,35 @@
+#pragma once
+// The Newton matrix of the modal first-order form and its solver, as a SUNDIALS SUNMatrix and
+// SUNLinearSolver of their own. The Jacobian is kept in pieces: the diagonal linear part (w^2 and
+// the Rayleigh D of each basis vector) and each element's small tangent blocks on its DOFs. Solving
+// (b I + a J) x = r eliminates the displacements, leaving (Delta + P^T W P) x_v = ..., a diagonal
+// Delta plus a low-rank term from the elements, solved by Sherman-Morrison-Woodbury in O(r s^2) for
+// s element DOFs (or densely when s is large). Internal to the CVODE solver.
+
+#include <sundials/sundials_linearsolver.h>
+#include <sundials/sundials_matrix.h>
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "dynamics/cvode_system.hpp"
+
+namespace vi::cvode_detail {
+
+// The matrix a J + b I. J is filled by the Jacobian callback (a = 1, b = 0 then); CVODE forms
+// I - gamma J from it with SUNMatCopy and SUNMatScaleAddI.
+struct StructuredJacobian {
+    const ModalSystem* system = nullptr;
+    double a = 0.0;
+    double b = 0.0;
+    std::vector<Eigen::MatrixXd> dfdq, dfdv;  // per element (empty or zero: no tangent)
+};
+
+// A new SUNMatrix holding a StructuredJacobian of `system` (zero).
+SUNMatrix structured_matrix(const ModalSystem& system, SUNContext ctx);
+// The matrix's content.
+StructuredJacobian& structured_content(SUNMatrix A);
+// A direct SUNLinearSolver for such matrices.
+SUNLinearSolver structured_solver(const ModalSystem& system, SUNContext ctx);
+
+}  // namespace vi::cvode_detail

@@ -1,0 +1,109 @@
+#pragma once
+// ForceElement: one physical force acting on a few DOFs of the beam (a contact support, a point
+// load; electrostatic pads, squeeze films and adhesion to come). Solvers, the static solution and
+// the energy ledger see forces only through this interface (docs/architecture.md).
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "forces/linear_form.hpp"
+
+namespace vi {
+
+// What an element sees at one instant: the time [s] and the displacements [m, rad] and velocities
+// [m/s, rad/s] of its own DOFs, in the order of dofs(). `a` (accelerations) is given only where a
+// solver has it (watch functions); it may be null.
+struct ElementState {
+    double t = 0.0;
+    const double* q = nullptr;
+    const double* v = nullptr;
+    const double* a = nullptr;
+};
+
+// A contact's reading for the episode ledger: penetration d [m] (> 0 inside the surface), the
+// force magnitude F = what the surface pushes with [N] (whether or not it is closed), and the
+// velocity of the beam at the contact point [m/s] (dv/dt, positive up).
+struct ContactReading {
+    double penetration = 0.0;
+    double force = 0.0;
+    double point_velocity = 0.0;
+};
+
+// A force element. Forces are generalised nodal forces on dofs() [N, N m], positive along the DOF.
+//
+// Modes: an element may be hybrid (a contact is open or closed). Mode 0 is the first; modes() says
+// how many. In a mode the force is smooth in (q, v, t). The element switches when its switching
+// function, evaluated in the current mode, crosses zero upward; then mode_after_switch() holds.
+// A smooth element has one mode and never switches.
+//
+// Contract (checked for every element by the tests): add_tangent is the derivative of add_force
+// (central differences), and in every mode the stored energy's gradient is minus the conservative
+// part of the force.
+class ForceElement {
+public:
+    virtual ~ForceElement() = default;
+
+    // The case key it comes from, for messages ("supports[0]", "loads[1]").
+    [[nodiscard]] virtual const std::string& name() const = 0;
+    // What it is, for messages ("Kelvin-Voigt contact").
+    [[nodiscard]] virtual std::string kind() const = 0;
+    // The problem DOFs it acts on (fixed for the life of the element).
+    [[nodiscard]] virtual const std::vector<int>& dofs() const = 0;
+
+    [[nodiscard]] virtual int modes() const { return 1; }
+    // Adds the force in `mode` to f (|dofs| entries).
+    virtual void add_force(const ElementState& s, int mode, double* f) const = 0;
+    // Adds d f_i / d q_j to dfdq and d f_i / d v_j to dfdv (row-major |dofs| x |dofs|).
+    virtual void add_tangent(const ElementState& s, int mode, double* dfdq, double* dfdv) const = 0;
+    // Energy stored in the element [J] (a contact spring's 1/2 Kc d^2).
+    [[nodiscard]] virtual double stored_energy(const ElementState& s, int mode) const = 0;
+    // Power it dissipates [W], >= 0 (a contact damper's Cc (dd/dt)^2).
+    [[nodiscard]] virtual double dissipated_power(const ElementState& s, int mode) const = 0;
+    // Power an external source delivers through it [W] (a load's Q(t) v).
+    [[nodiscard]] virtual double input_power(const ElementState& s, int mode) const = 0;
+
+    // Hybrid behaviour. The switching function of `mode`: its upward zero crossing ends the mode.
+    [[nodiscard]] virtual double switching_function(const ElementState& /*s*/, int /*mode*/) const { return -1.0; }
+    [[nodiscard]] virtual int mode_after_switch(int mode) const { return mode; }
+    // The mode a static state (v = 0) is in, e.g. a contact is closed where it penetrates.
+    [[nodiscard]] virtual int static_mode(const ElementState& /*s*/) const { return 0; }
+    // The mode at the start of a transient from state s: static_mode, except where a solver must
+    // take a contact that touches and moves in (d = 0, dd/dt > 0) as closed.
+    [[nodiscard]] virtual int initial_mode(const ElementState& s) const { return static_mode(s); }
+
+    // Watch functions: smooth functions whose zero crossings a solver locates because something is
+    // reported there (a contact's peak force and penetration) or because a switch could hide between
+    // two steps (the maximum of d of an open contact). `directions` like CVODE's root directions.
+    [[nodiscard]] virtual int watch_count() const { return 0; }
+    virtual void watch_functions(const ElementState& /*s*/, int /*mode*/, double* /*g*/) const {}
+    [[nodiscard]] virtual std::vector<int> watch_directions() const { return {}; }
+    // Whether a watch function needs the accelerations (ElementState::a).
+    [[nodiscard]] virtual bool watch_needs_acceleration() const { return false; }
+
+    // The largest magnitude of a force it prescribes [N] (a load's amplitude times max |g|), for the
+    // scales of solver tolerances; 0 when its force follows from the motion alone.
+    [[nodiscard]] virtual double force_scale() const { return 0.0; }
+
+    // Whether it acts in the static state a transient starts from (a prescribed load Q(t) acts only
+    // from t = 0 on, so it does not).
+    [[nodiscard]] virtual bool in_static_state() const { return true; }
+
+    // Times in (t0, t1) where the force jumps or kinks in time (a step, table knots), ascending.
+    [[nodiscard]] virtual std::vector<double> breakpoints(double /*t0*/, double /*t1*/) const { return {}; }
+
+    // The element as the exact solver needs it, or nullopt when its force is not piecewise linear.
+    [[nodiscard]] virtual std::optional<LinearForm> linear_form() const { return std::nullopt; }
+
+    // Contacts report episodes: which mode is "in contact", and the reading.
+    [[nodiscard]] virtual bool is_contact() const { return false; }
+    [[nodiscard]] virtual int contact_mode() const { return 1; }
+    [[nodiscard]] virtual ContactReading contact_reading(const ElementState& /*s*/) const { return {}; }
+    // Position along the beam [m] where it acts (for output), or a negative number.
+    [[nodiscard]] virtual double position() const { return -1.0; }
+};
+
+using ForceElementPtr = std::shared_ptr<const ForceElement>;
+
+}  // namespace vi
