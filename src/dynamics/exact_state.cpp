@@ -317,6 +317,52 @@ Eigen::VectorXd PieceSolution::state_at(double tau, const Eigen::VectorXcd& e) c
     return s_->modes.state(coords_at(tau, e));
 }
 
+const Eigen::VectorXcd& PieceSolution::sample_exponentials(double tau, double t_abs, bool all_modes) const {
+    const double dt = tau - sample_tau_;
+    // Sample times are k times the output step: their differences are exact to a few ulps of t_abs.
+    const bool same_step = sample_tau_ >= 0.0 && dt > 0.0 &&
+                           std::abs(dt - sample_dt_) <= 8.0 * std::numeric_limits<double>::epsilon() * t_abs;
+    if (same_step && sample_run_ < kSampleAnchor) {
+        for (int k : sample_live_) sample_e_[k] *= sample_step_[k];
+        ++sample_run_;
+    } else {
+        if (sample_tau_ >= 0.0 && dt > 0.0 && !same_step) {
+            sample_dt_ = dt;
+            sample_step_ = exponentials(dt);
+        }
+        sample_e_ = exponentials(tau);
+        sample_run_ = 0;
+        const Eigen::Index m = sample_e_.size();
+        sample_live_.clear();
+        if (all_modes) {
+            for (Eigen::Index k = 0; k < m; ++k) sample_live_.push_back(static_cast<int>(k));
+        } else {
+            if (sample_weight_.size() != m) {
+                sample_weight_ = tip_v_.A.cwiseAbs().cwiseMax(tip_vel_.A.cwiseAbs());
+                for (std::size_t c = 0; c < v_.size(); ++c) {
+                    sample_weight_ = sample_weight_.cwiseMax(v_[c].A.cwiseAbs())
+                                         .cwiseMax(vel_[c].A.cwiseAbs())
+                                         .cwiseMax(force_[c].A.cwiseAbs());
+                }
+            }
+            const double floor = 1e-18 * sample_weight_.sum();
+            for (Eigen::Index k = 0; k < m; ++k) {
+                if (sample_weight_[k] * std::abs(sample_e_[k]) > floor) sample_live_.push_back(static_cast<int>(k));
+            }
+        }
+    }
+    sample_tau_ = tau;
+    return sample_e_;
+}
+
+double PieceSolution::sampled_value(const ExpSignal& f, double tau) const {
+    cd sum = 0.0;
+    for (int k : sample_live_) sum += f.A[k] * sample_e_[k];
+    double v = sum.real();
+    for (const ExpTerm& t : f.terms) v += term_derivative(t, tau, 0).real();
+    return v;
+}
+
 void PieceSolution::sample(double tau, double t_abs, const std::vector<bool>& active, TimeHistory& h, bool energy,
                            const EnergyLedger& start) const {
     const std::size_t nc = p_->contacts.size();
@@ -326,14 +372,14 @@ void PieceSolution::sample(double tau, double t_abs, const std::vector<bool>& ac
         h.contact_force.resize(nc);
     }
     // One set of exponentials serves every channel, the state and the energy terms.
-    const Eigen::VectorXcd e = exponentials(tau);
+    const Eigen::VectorXcd& e = sample_exponentials(tau, t_abs, energy);
     h.t.push_back(t_abs);
-    h.tip_v.push_back(tip_v_.value(tau, e));
-    h.tip_velocity.push_back(tip_vel_.value(tau, e));
+    h.tip_v.push_back(sampled_value(tip_v_, tau));
+    h.tip_velocity.push_back(sampled_value(tip_vel_, tau));
     for (std::size_t c = 0; c < nc; ++c) {
-        h.contact_v[c].push_back(v_[c].value(tau, e));
-        h.contact_velocity[c].push_back(vel_[c].value(tau, e));
-        h.contact_force[c].push_back(active[c] ? force_[c].value(tau, e) : 0.0);
+        h.contact_v[c].push_back(sampled_value(v_[c], tau));
+        h.contact_velocity[c].push_back(sampled_value(vel_[c], tau));
+        h.contact_force[c].push_back(active[c] ? sampled_value(force_[c], tau) : 0.0);
     }
     if (energy) h.energy.push_back(energy_at(tau, start, e));
 }

@@ -33,7 +33,6 @@ ModeSet from_eigenvalues(const Eigen::VectorXd& lambda, Eigen::MatrixXd shapes) 
     return set;
 }
 
-}  // namespace
 
 // Symmetric diagonal scaling D K D with unit diagonal: v rows (EI/L^3) and theta rows (EI/L) differ
 // by L^-2, many decades for a fine mesh, which would otherwise spoil the factorisations.
@@ -45,7 +44,7 @@ Eigen::VectorXd equilibration(const SparseMatrix& K) {
     return d.cwiseSqrt().cwiseInverse();
 }
 
-ModeSet all_modes_dense(const SparseMatrix& K, const SparseMatrix& M) {
+ModeSet solve_all_modes_dense(const SparseMatrix& K, const SparseMatrix& M) {
     // Solved as the inverse problem (L^-1 M L^-T) y = (1/omega^2) y with K = L L^T: the lowest modes,
     // the ones that matter, then carry the largest eigenvalues and hence full relative accuracy.
     const Eigen::VectorXd d = equilibration(K);
@@ -70,6 +69,32 @@ ModeSet all_modes_dense(const SparseMatrix& K, const SparseMatrix& M) {
     ModeSet set = from_eigenvalues(lambda, std::move(shapes));
     normalise(set, M);
     return set;
+}
+
+// The last dense solution on this thread, kept with the matrices it belongs to: a transient
+// computes the modes of the same (K, M) twice (the problem's frequencies and the solver's basis),
+// and the points of a sweep that keep the mesh and the material (contact stiffness, damping, gap,
+// initial step) share them. A different (K, M) replaces it; the result is the same either way.
+struct DenseModesMemo {
+    Eigen::MatrixXd K, M;
+    ModeSet modes;
+};
+
+bool same_matrix(const Eigen::MatrixXd& dense, const SparseMatrix& sparse) {
+    if (dense.rows() != sparse.rows() || dense.cols() != sparse.cols()) return false;
+    return dense == Eigen::MatrixXd(sparse);
+}
+
+}  // namespace
+
+ModeSet all_modes_dense(const SparseMatrix& K, const SparseMatrix& M) {
+    thread_local DenseModesMemo memo;
+    if (same_matrix(memo.K, K) && same_matrix(memo.M, M)) return memo.modes;
+    ModeSet modes = solve_all_modes_dense(K, M);
+    memo.K = Eigen::MatrixXd(K);
+    memo.M = Eigen::MatrixXd(M);
+    memo.modes = modes;
+    return modes;
 }
 
 ModeSet lowest_modes_sparse(const SparseMatrix& K, const SparseMatrix& M, int count) {
