@@ -1,0 +1,220 @@
+// The force-element contract (forces/force_element.hpp), checked for every element in every mode:
+// the tangent is the derivative of the force (central differences), the stored energy's gradient is
+// minus the conservative part of the force, the dissipated power is what the velocity-dependent part
+// takes out, the input power is the prescribed force times the velocity, and the piecewise-linear
+// form the exact solver reads gives the same force.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <random>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "forces/force_set.hpp"
+#include "forces/kelvin_voigt_contact.hpp"
+#include "forces/point_load_element.hpp"
+#include "support/test_elements.hpp"
+
+namespace vi {
+namespace {
+
+struct Sample {
+    double t;
+    std::vector<double> q, v;
+};
+
+std::vector<double> force_at(const ForceElement& e, const Sample& s, int mode) {
+    std::vector<double> f(e.dofs().size(), 0.0);
+    e.add_force(ElementState{s.t, s.q.data(), s.v.data(), nullptr}, mode, f.data());
+    return f;
+}
+
+// States around the element's working range: displacements of +-1 um, velocities of +-0.5 m/s.
+std::vector<Sample> samples(std::size_t dofs) {
+    std::mt19937 rng(12345);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::vector<Sample> out;
+    for (int k = 0; k < 20; ++k) {
+        Sample s{1e-6 * (1.0 + u(rng)), {}, {}};
+        for (std::size_t i = 0; i < dofs; ++i) {
+            s.q.push_back(1e-6 * u(rng));
+            s.v.push_back(0.5 * u(rng));
+        }
+        out.push_back(s);
+    }
+    return out;
+}
+
+struct Named {
+    std::string label;
+    std::function<ForceElementPtr()> make;
+};
+
+std::vector<Named> elements() {
+    return {
+        {"contact below, damped",
+         [] { return std::make_shared<KelvinVoigtContact>("supports[0]", 0, 1.0, 0.2e-6, 1000.0, 5e-5, 1e-4); }},
+        {"contact above, undamped",
+         [] { return std::make_shared<KelvinVoigtContact>("supports[1]", 0, -1.0, -0.3e-6, 50.0, 0.0, 1e-4); }},
+        {"step load on four DOFs",
+         [] {
+             TimeFunction g;
+             g.kind = TimeFunction::Kind::step;
+             g.t_on = 1e-6;
+             return std::make_shared<PointLoadElement>("loads[0]", std::vector<int>{0, 1, 2, 3},
+                                                       std::vector<double>{0.5, 1e-7, 0.5, -1e-7}, 2e-6, g, 5e-5);
+         }},
+        {"harmonic load",
+         [] {
+             TimeFunction g;
+             g.kind = TimeFunction::Kind::harmonic;
+             g.frequency_hz = 1e5;
+             g.phase = 0.3;
+             g.offset = 0.2;
+             return std::make_shared<PointLoadElement>("loads[1]", std::vector<int>{0}, std::vector<double>{1.0}, 1e-6,
+                                                       g, 1e-4);
+         }},
+    };
+}
+
+class ForceElementContract : public ::testing::TestWithParam<std::size_t> {};
+
+TEST_P(ForceElementContract, TangentIsTheDerivativeOfTheForce) {
+    const Named n = elements()[GetParam()];
+    const ForceElementPtr e = n.make();
+    const std::size_t m = e->dofs().size();
+    double worst = 0.0;
+    for (int mode = 0; mode < e->modes(); ++mode) {
+        for (const Sample& s : samples(m)) {
+            std::vector<double> dq(m * m, 0.0), dv(m * m, 0.0);
+            e->add_tangent(ElementState{s.t, s.q.data(), s.v.data(), nullptr}, mode, dq.data(), dv.data());
+            for (std::size_t j = 0; j < m; ++j) {
+                for (int which = 0; which < 2; ++which) {
+                    const double h = which == 0 ? 1e-12 : 1e-5;  // a thousandth of the state's size
+                    Sample plus = s, minus = s;
+                    (which == 0 ? plus.q : plus.v)[j] += h;
+                    (which == 0 ? minus.q : minus.v)[j] -= h;
+                    const std::vector<double> fp = force_at(*e, plus, mode), fm = force_at(*e, minus, mode);
+                    for (std::size_t i = 0; i < m; ++i) {
+                        const double fd = (fp[i] - fm[i]) / (2.0 * h);
+                        const double an = (which == 0 ? dq : dv)[i * m + j];
+                        const double scale = std::max({std::abs(fd), std::abs(an), 1e-30});
+                        worst = std::max(worst, std::abs(fd - an) / scale);
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_LT(worst, 1e-7) << n.label;
+}
+
+TEST_P(ForceElementContract, EnergyAndPowersMatchTheForce) {
+    const Named n = elements()[GetParam()];
+    const ForceElementPtr e = n.make();
+    const std::size_t m = e->dofs().size();
+    for (int mode = 0; mode < e->modes(); ++mode) {
+        for (const Sample& s : samples(m)) {
+            const ElementState st{s.t, s.q.data(), s.v.data(), nullptr};
+            Sample still = s;
+            std::fill(still.v.begin(), still.v.end(), 0.0);
+            const std::vector<double> f = force_at(*e, s, mode), f0 = force_at(*e, still, mode);
+            const bool prescribed = e->force_scale() > 0.0;
+            double power = 0.0, damper_power = 0.0, scale = 1e-30;
+            for (std::size_t i = 0; i < m; ++i) {
+                power += f[i] * s.v[i];
+                damper_power -= (f[i] - f0[i]) * s.v[i];
+                scale += std::abs(f[i] * s.v[i]);
+                // -dE/dq_i by central differences equals the conservative (v = 0) force.
+                if (!prescribed) {
+                    const double h = 1e-12;
+                    Sample plus = still, minus = still;
+                    plus.q[i] += h;
+                    minus.q[i] -= h;
+                    const double dE = (e->stored_energy(ElementState{s.t, plus.q.data(), plus.v.data(), nullptr}, mode) -
+                                       e->stored_energy(ElementState{s.t, minus.q.data(), minus.v.data(), nullptr}, mode)) /
+                                      (2.0 * h);
+                    EXPECT_NEAR(-dE, f0[i], 1e-6 * std::abs(f0[i]) + 1e-18) << n.label << " mode " << mode;
+                }
+            }
+            if (prescribed) {
+                EXPECT_NEAR(e->input_power(st, mode), power, 1e-12 * scale) << n.label;
+                EXPECT_EQ(e->dissipated_power(st, mode), 0.0) << n.label;
+                EXPECT_EQ(e->stored_energy(st, mode), 0.0) << n.label;
+            } else {
+                EXPECT_NEAR(e->dissipated_power(st, mode), damper_power, 1e-12 * scale) << n.label;
+                EXPECT_GE(e->dissipated_power(st, mode), 0.0) << n.label;
+                EXPECT_EQ(e->input_power(st, mode), 0.0) << n.label;
+            }
+        }
+    }
+}
+
+// The exact solver integrates the element through its linear form: the same force in every mode
+// (a unilateral spring-damper acts in its closed mode only).
+TEST_P(ForceElementContract, LinearFormGivesTheSameForce) {
+    const Named n = elements()[GetParam()];
+    const ForceElementPtr e = n.make();
+    const std::optional<LinearForm> lf = e->linear_form();
+    ASSERT_TRUE(lf.has_value()) << n.label;
+    for (int mode = 0; mode < e->modes(); ++mode) {
+        for (const Sample& s : samples(e->dofs().size())) {
+            const std::vector<double> f = force_at(*e, s, mode);
+            std::vector<double> g(f.size(), 0.0);
+            std::visit(
+                [&](const auto& term) {
+                    using T = std::decay_t<decltype(term)>;
+                    if constexpr (std::is_same_v<T, UnilateralSpringDamper>) {
+                        ASSERT_EQ(e->dofs().front(), term.dof);
+                        if (mode == e->contact_mode()) {
+                            g[0] = term.stiffness * (term.surface - s.q[0]) - term.damping * s.v[0];
+                        }
+                    } else {
+                        for (std::size_t i = 0; i < term.dofs.size(); ++i) {
+                            ASSERT_EQ(e->dofs()[i], term.dofs[i]);
+                            g[i] = term.amplitude * term.time(s.t) * term.weights[i];
+                        }
+                    }
+                },
+                lf->term);
+            for (std::size_t i = 0; i < f.size(); ++i) EXPECT_NEAR(f[i], g[i], 1e-14 * std::abs(g[i]) + 1e-30) << n.label;
+        }
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllElements, ForceElementContract, ::testing::Range<std::size_t>(0, 4));
+
+// The contact's switching rules: open, it closes exactly where d > 0 and F > 0 both hold (its
+// switching function crosses zero upward there); closed, it opens where F falls through 0.
+TEST(KelvinVoigtContact, SwitchingFunctionsStateTheNoTensionRule) {
+    const KelvinVoigtContact c("supports[0]", 0, 1.0, 0.0, 1000.0, 5e-5, 1e-4);
+    for (const Sample& s : samples(1)) {
+        const ElementState st{s.t, s.q.data(), s.v.data(), nullptr};
+        const double d = c.penetration(st), F = c.force_magnitude(st);
+        EXPECT_EQ(c.switching_function(st, 0) > 0.0, d > 0.0 && F > 0.0);
+        EXPECT_EQ(c.switching_function(st, 1) > 0.0, F < 0.0);
+        EXPECT_EQ(c.mode_after_switch(0), 1);
+        EXPECT_EQ(c.mode_after_switch(1), 0);
+    }
+    // Touching (d = 0) and moving in: closed from the start, as the exact solver's search closes it.
+    const double q = 0.0, v_in = -0.1, v_out = 0.1;
+    EXPECT_EQ(c.initial_mode(ElementState{0.0, &q, &v_in, nullptr}), 1);
+    EXPECT_EQ(c.initial_mode(ElementState{0.0, &q, &v_out, nullptr}), 0);
+}
+
+TEST(ForceSet, TheFirstElementThatIsNotPiecewiseLinearIsNamed) {
+    // An element with no linear form rules the exact solver out; the set names it.
+    ForceSet set{elements()[0].make(), std::make_shared<test::CubicSpring>(0, 1.0), elements()[2].make()};
+    ASSERT_NE(first_nonlinear(set), nullptr);
+    EXPECT_EQ(first_nonlinear(set)->name(), "springs[0]");
+    set.erase(set.begin() + 1);
+    EXPECT_EQ(first_nonlinear(set), nullptr);
+    EXPECT_EQ(contact_indices(set), std::vector<int>{0});
+}
+
+}  // namespace
+}  // namespace vi
