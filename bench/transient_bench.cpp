@@ -1,10 +1,13 @@
 // Wall time of the default free-impact transient (examples/paper/free_impact_tip.toml, m = 50)
-// through T_p, for the exact and the CVODE solver, with the exact solver's time split; and the
+// through T_p, for the exact solver (with its time split) and the nonlinear path (full and reduced
+// order, with their error against the exact solver); and the
 // exact transient over the example's whole horizon (150 us) with the support moved inside the beam,
 // as a support-position sweep runs it.
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <string>
 
@@ -39,13 +42,14 @@ void report(benchmark::State& state, const vi::TransientResult& r) {
     state.counters["states"] = r.stats.decompositions;
 }
 
-// Exact solver: events, episode peaks and extremes (y_max), no sampled history or energy ledger.
+// Exact solver through T_p: events, episode peaks and extremes (y_max); with range(0) = 1 also the
+// 10 ns history of the tip and contact (no energy ledger), with 2 the history and the energy ledger.
 void BM_ExactThroughTp(benchmark::State& state) {
     const vi::Case c = example_through_tp();
     const vi::BuiltProblem b = vi::build_transient_problem(c);
     vi::ExactOptions o;
-    o.history = state.range(0) != 0;
-    o.energy = state.range(0) != 0;
+    o.history = state.range(0) >= 1;
+    o.energy = state.range(0) >= 2;
     vi::TransientResult r;
     for (auto _ : state) {
         r = vi::solve_exact(b.problem, o);
@@ -53,7 +57,7 @@ void BM_ExactThroughTp(benchmark::State& state) {
     }
     report(state, r);
 }
-BENCHMARK(BM_ExactThroughTp)->Arg(0)->Arg(1)->ArgName("history_and_energy")->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_ExactThroughTp)->Arg(0)->Arg(1)->Arg(2)->ArgName("history")->Unit(benchmark::kMillisecond);
 
 // Exact solver, support at x/l = range(0) / 100, range(1) elements, the example's 150 us horizon,
 // events, peaks and extremes only (as a sweep over support positions needs them).
@@ -80,17 +84,44 @@ BENCHMARK(BM_ExactSupportAt)
     ->ArgNames({"x_percent", "elements"})
     ->Unit(benchmark::kMillisecond);
 
+// The nonlinear path (CVODE in modal coordinates) on the same transient at rtol = range(0) decades
+// below 1 (8: 1e-8), with range(1) reduced modes (0: the full model), and its largest relative error
+// against the exact solver in T, T2, y_max and the first impact's peak force (counter "error").
 void BM_CvodeThroughTp(benchmark::State& state) {
-    const vi::Case c = example_through_tp();
+    vi::Case c = example_through_tp();
+    vi::SimulationOptions o;
+    o.history = false;
+    o.energy = false;
+    const vi::SimulationRun exact = vi::run_simulation(c, o);
+    c.solver.method = vi::SolverSettings::Method::cvode;
+    c.solver.rtol = std::pow(10.0, -static_cast<double>(state.range(0)));
+    c.solver.reduced_modes = static_cast<int>(state.range(1));
     const vi::BuiltProblem b = vi::build_transient_problem(c);
+    vi::CvodeOptions co;
+    co.rtol = c.solver.rtol;
+    co.reduced_modes = c.solver.reduced_modes;
     vi::TransientResult r;
     for (auto _ : state) {
-        r = vi::solve_cvode(b.problem);
+        r = vi::solve_cvode(b.problem, co);
         benchmark::DoNotOptimize(r.episodes.data());
     }
     report(state, r);
+    const vi::SimulationRun run = vi::run_simulation(c, o);
+    const auto rel = [](double a, double x) { return std::abs(a / x - 1.0); };
+    state.counters["error"] = std::max({rel(*run.summary.T_first, *exact.summary.T_first),
+                                        rel(*run.summary.T2_first, *exact.summary.T2_first),
+                                        rel(*run.summary.y_max, *exact.summary.y_max),
+                                        rel(run.summary.impacts.front().peak_force, exact.summary.impacts.front().peak_force)});
+    state.counters["steps"] = r.stats.steps;
+    state.counters["basis"] = r.stats.basis_vectors;
 }
-BENCHMARK(BM_CvodeThroughTp)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_CvodeThroughTp)
+    ->Args({8, 0})
+    ->Args({10, 0})
+    ->Args({8, 10})
+    ->Args({8, 5})
+    ->ArgNames({"rtol_exp", "reduced_modes"})
+    ->Unit(benchmark::kMillisecond);
 
 // Building the problem (modes, static step) is part of every run of a sweep.
 void BM_BuildProblem(benchmark::State& state) {
