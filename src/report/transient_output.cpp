@@ -128,6 +128,11 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
     if (r.stats.method == "exact") {
         j["solver"]["unproven_steps"] = r.stats.unproven_steps;
         j["solver"]["unproven_excess"] = r.stats.unproven_excess;
+        j["solver"]["tangencies"] = r.stats.tangencies;
+    } else {
+        j["solver"]["basis_vectors"] = r.stats.basis_vectors;
+        j["solver"]["basis_modes"] = r.stats.basis_modes;
+        j["solver"]["initial_projection_error"] = r.stats.initial_projection_error;
     }
     j["resolved"] = resolved_case_json(c, b, s);
     return j;
