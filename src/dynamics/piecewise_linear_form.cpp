@@ -10,6 +10,19 @@
 #include "model/input_error.hpp"
 
 namespace vi {
+namespace {
+
+// The fields both forms share: the start and what to record.
+template <class From, class To>
+void copy_start_and_output(const From& p, To& out) {
+    out.q0 = p.q0;
+    out.v0 = p.v0;
+    out.tip_dof = p.tip_dof;
+    out.t_end = p.t_end;
+    out.output_step = p.output_step;
+}
+
+}  // namespace
 
 PiecewiseLinearProblem piecewise_linear_form(const TransientProblem& p) {
     if (const ForceElement* e = first_nonlinear(p.forces)) {
@@ -43,11 +56,7 @@ PiecewiseLinearProblem piecewise_linear_form(const TransientProblem& p) {
             e.linear_form()->term);
     }
     if (p.modes0.empty()) out.active0.clear();
-    out.q0 = p.q0;
-    out.v0 = p.v0;
-    out.tip_dof = p.tip_dof;
-    out.t_end = p.t_end;
-    out.output_step = p.output_step;
+    copy_start_and_output(p, out);
     return out;
 }
 
@@ -78,11 +87,7 @@ TransientProblem transient_problem_of(const PiecewiseLinearProblem& p) {
         out.modes0.push_back(0);
     }
     if (p.active0.empty()) out.modes0.clear();
-    out.q0 = p.q0;
-    out.v0 = p.v0;
-    out.tip_dof = p.tip_dof;
-    out.t_end = p.t_end;
-    out.output_step = p.output_step;
+    copy_start_and_output(p, out);
     return out;
 }
 

@@ -122,6 +122,19 @@ private:
     Eigen::SimplicialLDLT<SparseMatrix> ldlt_;
 };
 
+// After a Newton step: the elements' modes decided again from s.q; true when they stay and the
+// residual K q - f_el(q) - load is at roundoff (load_scale: the magnitudes of the load's entries).
+bool settled(const SparseMatrix& K, const ForceSet& forces, StaticState& s, const Eigen::VectorXd& load,
+             const Eigen::VectorXd& load_scale) {
+    std::vector<int> next = static_modes(forces, s.q, s.modes);
+    if (next != s.modes) {
+        s.modes = std::move(next);
+        return false;
+    }
+    const Assembled b = assemble(K, forces, s.modes, s.q);
+    return at_roundoff(K, s.q, K * s.q - b.force - load, load_scale + b.scale);
+}
+
 [[noreturn]] void too_many_iterations(int max_iterations) {
     throw WorkLimitReached("static solution: no equilibrium after solver.max_static_iterations = " +
                            std::to_string(max_iterations) +
@@ -143,13 +156,7 @@ StaticState solve_static(const SparseMatrix& K, const ForceSet& forces, const Ei
         const TangentSolver solver(a.tangent);
         s.q -= solver.solve(r);
         s.iterations = it + 1;
-        const std::vector<int> next = static_modes(forces, s.q, s.modes);
-        if (next != s.modes) {
-            s.modes = next;
-            continue;
-        }
-        const Assembled b = assemble(K, forces, s.modes, s.q);
-        if (at_roundoff(K, s.q, K * s.q - f_ext - b.force, f_ext.cwiseAbs() + b.scale)) return s;
+        if (settled(K, forces, s, f_ext, f_ext.cwiseAbs())) return s;
     }
     too_many_iterations(max_iterations);
 }
@@ -174,14 +181,7 @@ StaticLift solve_static_lift(const SparseMatrix& K, const ForceSet& forces, cons
         s.q += w + dP * u;
         out.force += dP;
         s.iterations = it + 1;
-        const std::vector<int> next = static_modes(forces, s.q, s.modes);
-        if (next != s.modes) {
-            s.modes = next;
-            continue;
-        }
-        const Assembled b = assemble(K, forces, s.modes, s.q);
-        const Eigen::VectorXd res = K * s.q - b.force - out.force * shape;
-        if (at_roundoff(K, s.q, res, b.scale + std::abs(out.force) * shape.cwiseAbs())) return out;
+        if (settled(K, forces, s, out.force * shape, std::abs(out.force) * shape.cwiseAbs())) return out;
     }
     too_many_iterations(max_iterations);
 }
