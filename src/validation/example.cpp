@@ -53,7 +53,8 @@ std::string section_exact_vs_cvode(const ValidationOptions& o) {
       << us(c.solver.horizon, 1) << " us, output step " << us(c.solver.output_step, 3)
       << " us), run with `solver.method = \"exact\"` and with `\"cvode\"` (rtol " << num(c.solver.rtol, 2)
       << "). The two solvers share only the problem builder: the exact one propagates modal exponentials "
-         "and finds events by certified root search, CVODE integrates with BDF steps and its own root "
+         "and finds events by certified root search, CVODE integrates with BDF steps (in the coordinates of "
+         "every bending mode, docs/model.md section 13) and its own root "
          "finding. Relative differences are |CVODE - exact| / |exact|.\n\n";
     Case ce = c, cc = c;
     ce.solver.method = SolverSettings::Method::exact;

@@ -183,7 +183,7 @@ std::string section_energy(const ValidationOptions& o) {
     s << t.str() << "\n"
       << "The exact solver propagates each contact state in closed form, so its drift is roundoff. CVODE's "
          "BDF method is slightly dissipative: undamped, it keeps every mode the impacts excite, so on "
-         "m = 10 it must resolve the highest FE mode and takes millions of steps"
+         "m = 10 it must resolve the highest FE mode (about a million steps, some seconds)"
       << (o.quick ? " (with --quick both CVODE beam runs use m = 2)" : "")
       << "; the test suite checks the undamped case on m = 2.\n\n";
     return s.str();
