@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/cvode_episodes.hpp"
 #include "dynamics/cvode_linear_solver.hpp"
 #include "dynamics/cvode_system.hpp"
 #include "dynamics/fast_nvector.hpp"
@@ -106,14 +107,11 @@ private:
     [[nodiscard]] double sample_time(std::size_t k) const;
     void sample_until(double t_lim, bool interpolate);
     void record(double t, const double* y);
-    void update_peaks(double t, const double* y);
-    void update_extremes(double t, const double* y);
     double handle_roots(double tret);
     double locate_missed_switch(int e, double tret);
     void toggle(double t, const std::vector<int>& which);
     void restart(double t);
     void add_counters();
-    [[nodiscard]] int contact_of(int e) const { return contact_of_[static_cast<std::size_t>(e)]; }
 
     const TransientProblem& p_;
     CvodeOptions o_;
@@ -124,9 +122,7 @@ private:
     std::vector<double> stops_;          // element breakpoints in (0, t_end), then t_end
     std::size_t samples_ = 0, next_sample_ = 0;
     std::vector<int> modes_;             // each element's mode
-    std::vector<int> contact_of_;        // element -> contact number, -1 when not a contact
-    std::vector<int> open_;              // open episode of each contact, -1 if none
-    std::vector<double> impulse_at_onset_;
+    cvode_detail::EpisodeRecorder episodes_{sys_, r_};
     // Energy that appears or vanishes in an element at a switch: a Kelvin-Voigt contact opening with
     // d > 0 (the damped case: F = 0 before d = 0) drops 1/2 Kc d^2 from its stored energy. A massless
     // element left alone relaxes through its damper, which dissipates exactly that, so it is booked
@@ -208,45 +204,6 @@ void Driver::record(double t, const double* y) {
     h.energy.push_back(sys_.energy(t, y, jump_));
 }
 
-// Extremes (y_max, deepest tip deflection, contact point maximum) after the first onset: local
-// extrema are roots of the velocities (located by CVODE); values at every return cover the ends.
-void Driver::update_extremes(double t, const double* y) {
-    if (r_.episodes.empty()) return;
-    Extremes& ex = r_.extremes;
-    const double tip = sys_.tip(y);
-    if (!ex.valid) {
-        ex.valid = true;
-        ex.tip_max = ex.contact_max = -std::numeric_limits<double>::infinity();
-        ex.tip_min = std::numeric_limits<double>::infinity();
-    }
-    if (tip > ex.tip_max) {
-        ex.tip_max = tip;
-        ex.tip_max_t = t;
-    }
-    bool in_contact = false;
-    for (int e : sys_.contacts()) in_contact = in_contact || modes_[static_cast<std::size_t>(e)] == sys_.element(e).contact_mode();
-    if (in_contact && tip < ex.tip_min) {
-        ex.tip_min = tip;
-        ex.tip_min_t = t;
-    }
-    if (!sys_.contacts().empty()) ex.contact_max = std::max(ex.contact_max, sys_.contact_displacement(0, y));
-}
-
-// Peaks: the largest F and d of an episode are at its ends, at an interior maximum (located
-// exactly: the contact's watch functions are dd/dt and dF/dt, direction -1) or at a stop where
-// dF/dt jumps (another element switching, a load breakpoint). This runs at every return of CVODE
-// (each step, root and stop), so all of those are covered.
-void Driver::update_peaks(double t, const double* y) {
-    for (std::size_t j = 0; j < sys_.contacts().size(); ++j) {
-        const int ep = open_[j];
-        if (ep < 0) continue;
-        ContactEpisode& episode = r_.episodes[static_cast<std::size_t>(ep)];
-        const ContactReading c = sys_.reading(sys_.contacts()[j], t, y);
-        episode.peak_force = std::max(episode.peak_force, c.force);
-        episode.peak_penetration = std::max(episode.peak_penetration, c.penetration);
-    }
-}
-
 double Driver::handle_roots(double tret) {
     std::vector<int> info(static_cast<std::size_t>(sys_.roots()), 0);
     check(CVodeGetRootInfo(s_.mem, info.data()), "CVodeGetRootInfo");
@@ -279,10 +236,10 @@ double Driver::handle_roots(double tret) {
         }
     }
     sample_until(t_ev, true);
-    update_peaks(t_ev, N_VGetArrayPointer(s_.y));
-    update_extremes(t_ev, N_VGetArrayPointer(s_.y));
+    episodes_.update_peaks(t_ev, N_VGetArrayPointer(s_.y));
+    episodes_.update_extremes(t_ev, N_VGetArrayPointer(s_.y), modes_);
     if (!which.empty()) toggle(t_ev, which);
-    update_extremes(t_ev, N_VGetArrayPointer(s_.y));
+    episodes_.update_extremes(t_ev, N_VGetArrayPointer(s_.y), modes_);
     return t_ev;
 }
 
@@ -314,28 +271,7 @@ void Driver::toggle(double t, const std::vector<int>& which) {
         const int from = modes_[ue];
         const int to = el.mode_after_switch(from);
         jump_ -= sys_.stored_energy(e, to, t, y) - sys_.stored_energy(e, from, t, y);
-        const int j = contact_of(e);
-        if (j >= 0) {
-            const std::size_t uj = static_cast<std::size_t>(j);
-            const ContactReading c = sys_.reading(e, t, y);
-            if (to == el.contact_mode() && open_[uj] < 0) {
-                ContactEpisode ep;
-                ep.support = j;
-                ep.t_on = t;
-                ep.v_in = c.point_velocity;
-                ep.peak_force = std::max(c.force, 0.0);
-                ep.peak_penetration = std::max(c.penetration, 0.0);
-                open_[uj] = static_cast<int>(r_.episodes.size());
-                impulse_at_onset_[uj] = y[sys_.impulse_index(j)];
-                r_.episodes.push_back(ep);
-            } else if (to != el.contact_mode() && open_[uj] >= 0) {
-                ContactEpisode& ep = r_.episodes[static_cast<std::size_t>(open_[uj])];
-                ep.t_off = t;
-                ep.v_out = c.point_velocity;
-                ep.impulse = y[sys_.impulse_index(j)] - impulse_at_onset_[uj];
-                open_[uj] = -1;
-            }
-        }
+        episodes_.on_switch(e, from, to, t, y);
         modes_[ue] = to;
         ++r_.stats.events;
     }
@@ -378,8 +314,6 @@ void Driver::restart(double t) {
 TransientResult Driver::run() {
     const auto t_setup = Clock::now();
     const std::size_t nc = sys_.contacts().size();
-    contact_of_.assign(static_cast<std::size_t>(sys_.elements()), -1);
-    for (std::size_t j = 0; j < nc; ++j) contact_of_[static_cast<std::size_t>(sys_.contacts()[j])] = static_cast<int>(j);
     stops_ = breakpoints(p_.forces, 0.0, p_.t_end);
     stops_.push_back(p_.t_end);
     samples_ = p_.output_step > 0.0 ? static_cast<std::size_t>(std::floor(p_.t_end / p_.output_step * (1.0 + 1e-12))) + 1
@@ -387,8 +321,6 @@ TransientResult Driver::run() {
     r_.history.contact_v.resize(nc);
     r_.history.contact_velocity.resize(nc);
     r_.history.contact_force.resize(nc);
-    open_.assign(nc, -1);
-    impulse_at_onset_.assign(nc, 0.0);
     const Eigen::VectorXd y0 = sys_.initial_state();
     const std::vector<int> start = sys_.initial_modes(y0.data());
     modes_.assign(start.size(), 0);
@@ -451,8 +383,8 @@ TransientResult Driver::run() {
             t = handle_roots(tret);
         } else {
             sample_until(tret, true);
-            update_peaks(tret, N_VGetArrayPointer(s_.y));
-            update_extremes(tret, N_VGetArrayPointer(s_.y));
+            episodes_.update_peaks(tret, N_VGetArrayPointer(s_.y));
+            episodes_.update_extremes(tret, N_VGetArrayPointer(s_.y), modes_);
             t = flag == CV_TSTOP_RETURN ? t_stop : tret;
         }
         t_done_ = t;
@@ -460,14 +392,7 @@ TransientResult Driver::run() {
     add_counters();
 
     const double* y = N_VGetArrayPointer(s_.y);
-    for (std::size_t j = 0; j < nc; ++j) {
-        if (open_[j] < 0) continue;
-        ContactEpisode& ep = r_.episodes[static_cast<std::size_t>(open_[j])];
-        ep.t_off = p_.t_end;
-        ep.v_out = sys_.reading(sys_.contacts()[j], p_.t_end, y).point_velocity;
-        ep.impulse = y[sys_.impulse_index(static_cast<int>(j))] - impulse_at_onset_[j];
-        ep.closed_at_end = true;
-    }
+    episodes_.close_at_end(p_.t_end, y);
     r_.final_energy = sys_.energy(p_.t_end, y, jump_);
     r_.t_end = p_.t_end;
     r_.stats.method = "cvode";

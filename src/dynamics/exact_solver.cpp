@@ -220,7 +220,8 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions&
             const double ts = std::min(next_sample * dt_out, p.t_end);
             if (ts > t + tau_e || (ts == t + tau_e && t + tau_e < p.t_end)) break;
             s.sample(ts - t, ts, active, res.history, o.energy, ledger);
-            ++next_sample;
+            // A long flight sampled finely is one piece of many samples: watch the stop flag there too.
+            if ((++next_sample & 1023) == 0) check_run();
         }
         for (int c = 0; c < nc; ++c) {
             const int e = open[static_cast<std::size_t>(c)];
