@@ -118,7 +118,9 @@ void BM_CvodeThroughTp(benchmark::State& state) {
 BENCHMARK(BM_CvodeThroughTp)
     ->Args({8, 0})
     ->Args({10, 0})
+    ->Args({6, 0})
     ->Args({8, 10})
+    ->Args({6, 10})
     ->Args({8, 5})
     ->ArgNames({"rtol_exp", "reduced_modes"})
     ->Unit(benchmark::kMillisecond);
