@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+#include "support/mpi_launch.hpp"
 #include "support/run_command.hpp"
 #include "support/test_files.hpp"
 
@@ -66,41 +67,8 @@ std::size_t journal_points(const std::string& path) {
     return lines.size() > 4 ? lines.size() - 4 : 0;
 }
 
-// mpirun on PATH, or empty.
-std::string find_mpirun() {
-    const char* path = std::getenv("PATH");
-    std::istringstream dirs(path ? path : "");
-    for (std::string dir; std::getline(dirs, dir, ':');) {
-        const fs::path p = fs::path(dir) / "mpirun";
-        if (!dir.empty() && access(p.c_str(), X_OK) == 0) return p.string();
-    }
-    return "";
-}
-
-// "NAME=<the variable's value>:<more>".
-std::string extended(const char* name, const std::string& more) {
-    const char* now = std::getenv(name);
-    return std::string(name) + "=" + (now && *now ? std::string(now) + ":" : std::string()) + more;
-}
-
-// Runs the command under `mpirun -n 2` as this machine allows (root needs the two flags). Under the
-// sanitizers, LeakSanitizer is told about the allocations OpenMPI keeps until exit, and needs full
-// stacks to see them (tests/lsan-openmpi.supp); the variables do nothing in other builds.
-CommandResult run_mpi(const std::vector<std::string>& args) {
-    std::vector<std::string> argv{find_mpirun(), "--allow-run-as-root", "--oversubscribe", "-n", "2",
-                                  test::vibroimpact_path()};
-    argv.insert(argv.end(), args.begin(), args.end());
-    return test::run_program(
-        argv, {extended("LSAN_OPTIONS", "suppressions=" + test::source_path("tests/lsan-openmpi.supp")),
-               extended("ASAN_OPTIONS", "fast_unwind_on_malloc=0")});
-}
-
-// Why the MPI parts cannot run here, or empty.
-std::string mpi_unavailable() {
-    if (!VI_EXE_HAS_MPI) return "vibroimpact was built without MPI (libopenmpi-dev missing)";
-    if (find_mpirun().empty()) return "mpirun is not on PATH (scripts/install-deps installs openmpi-bin)";
-    return "";
-}
+using test::mpi_unavailable;
+using test::run_mpi;
 
 class SweepCli : public ::testing::Test {
 protected:
