@@ -64,7 +64,7 @@ CommandBody add_paper_command(CLI::App& app) {
     CLI::App* sub = app.add_subcommand(
         "paper", "The paper's numerical study (Figs. 2-11: PNG, SVG, CSV) and report.html comparing its claims with ours");
     sub->add_option("--out,-o", opt->out, "Output folder (created; files of the same names are replaced)")->capture_default_str();
-    sub->add_option("--threads,-j", opt->threads, "Worker threads (0: every core)")->check(CLI::Range(0, 1024))->capture_default_str();
+    sub->add_option("--threads,-j", opt->threads, "Worker threads (0: every CPU this process may use: its affinity and cgroup CPU quota)")->check(CLI::Range(0, 1024))->capture_default_str();
     sub->add_option("--positions", opt->positions,
                     "Support positions of the transient scans, evenly over x0/l in [0.3, 1] (0.67, 0.78, 0.87 always added)")
         ->check(CLI::Range(2, 100000))

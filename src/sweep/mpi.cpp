@@ -2,6 +2,7 @@
 
 #include <mpi.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstring>
@@ -10,6 +11,9 @@
 #include <mutex>
 #include <stdexcept>
 #include <thread>
+#include <vector>
+
+#include "model/cpu_budget.hpp"
 
 // Protocol of collect(), on a communicator of its own:
 //   other rank -> root: kPoint (a finished point, as bytes), kSignal (this rank was told to stop),
@@ -23,6 +27,33 @@ namespace vi {
 namespace {
 
 enum Tag : int { kPoint = 1, kDone = 2, kSignal = 3, kStop = 4 };
+
+// Ranks of `node` (the ranks on one machine) whose CPU affinity overlaps this rank's, this one
+// included. Every rank sends its affinity bit set to all (a fixed number of 64-bit words: the
+// longest set of the machine).
+int count_ranks_sharing_cpus(MPI_Comm node) {
+    int ranks = 1;
+    int me = 0;
+    MPI_Comm_size(node, &ranks);
+    MPI_Comm_rank(node, &me);
+    std::vector<std::uint64_t> mine = affinity_mask();
+    int words = static_cast<int>(mine.size());
+    int longest = 0;
+    MPI_Allreduce(&words, &longest, 1, MPI_INT, MPI_MAX, node);
+    if (longest == 0) return ranks;  // no rank knows its affinity: assume they all share the machine
+    mine.resize(static_cast<std::size_t>(longest), 0);
+    std::vector<std::uint64_t> all(static_cast<std::size_t>(longest) * static_cast<std::size_t>(ranks), 0);
+    MPI_Allgather(mine.data(), longest, MPI_UINT64_T, all.data(), longest, MPI_UINT64_T, node);
+    int sharing = 0;
+    for (int r = 0; r < ranks; ++r) {
+        const auto from = all.begin() + static_cast<std::ptrdiff_t>(r) * longest;
+        const std::vector<std::uint64_t> theirs(from, from + longest);
+        // A rank whose affinity is unknown (all zero) is counted as sharing.
+        const bool unknown = std::all_of(theirs.begin(), theirs.end(), [](std::uint64_t w) { return w == 0; });
+        if (r == me || unknown || masks_overlap(mine, theirs)) ++sharing;
+    }
+    return sharing;
+}
 
 constexpr auto kPoll = std::chrono::milliseconds(1);
 
@@ -121,7 +152,7 @@ public:
         MPI_Comm_dup(MPI_COMM_WORLD, &points_comm_);
         MPI_Comm node = MPI_COMM_NULL;
         MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
-        MPI_Comm_size(node, &on_node_);
+        sharing_ = count_ranks_sharing_cpus(node);
         MPI_Comm_free(&node);
     }
     ~MpiRanks() override {
@@ -133,7 +164,7 @@ public:
 
     [[nodiscard]] int rank() const override { return rank_; }
     [[nodiscard]] int size() const override { return size_; }
-    [[nodiscard]] int ranks_on_this_machine() const override { return on_node_; }
+    [[nodiscard]] int ranks_sharing_cpus() const override { return sharing_; }
 
     int max_over_ranks(int value) override {
         int out = value;
@@ -279,7 +310,7 @@ private:
 
     int rank_ = 0;
     int size_ = 1;
-    int on_node_ = 1;
+    int sharing_ = 1;
     MPI_Comm points_comm_ = MPI_COMM_NULL;
 };
 
