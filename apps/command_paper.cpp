@@ -15,9 +15,11 @@
 #include "model/input_error.hpp"
 #include "io/output_files.hpp"
 #include "io/units.hpp"
+#include "model/run_control.hpp"
 #include "plot/figure_gnuplot.hpp"
 #include "study/paper/figures.hpp"
 #include "study/paper/report.hpp"
+#include "stop_signals.hpp"
 
 namespace vi::cli {
 namespace {
@@ -133,7 +135,12 @@ CommandBody add_paper_command(CLI::App& app) {
         progress("figures drawn (" + std::to_string(figures.size()) + " with gnuplot)");
         run.total_s = elapsed();
         const OutputFiles files = paper_output_files(study, claims, figures, rendered, run);
-        write_output_files(opt->out, files);
+        // Last chance to stop: from here the files are complete and go into place together.
+        check_run();
+        {
+            const CommitSection commit;
+            write_output_files(opt->out, files);
+        }
 
         int agree = 0;
         for (const Claim& c : claims) agree += c.verdict == Verdict::agrees;

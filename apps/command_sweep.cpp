@@ -24,6 +24,7 @@
 #include "sweep/store.hpp"
 #include "sweep/table.hpp"
 #include "support_model_option.hpp"
+#include "stop_signals.hpp"
 #include "sweep_progress.hpp"
 
 #ifdef VI_HAVE_MPI
@@ -154,7 +155,9 @@ int finish_on_root(const Options& o, const Plan& plan, SweepStore& store, SweepR
     if (o.out_dir.empty()) {
         std::fputs(store.csv().c_str(), stdout);
     } else {
-        store.finish(o.out_dir, sweep_summary_json(plan.grid, info).dump(2) + "\n");
+        const std::string json = sweep_summary_json(plan.grid, info).dump(2) + "\n";
+        const CommitSection commit;
+        store.finish(o.out_dir, json);
         std::printf("Written %zu points to %s/%s and %s\n", store.points(), o.out_dir.c_str(), SweepStore::kCsvName,
                     SweepStore::kJsonName);
     }

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "model/input_error.hpp"
+#include "model/run_control.hpp"
 
 namespace vi {
 namespace {
@@ -81,6 +82,7 @@ StaticContactState solve_static_contact(const Eigen::MatrixXd& K, const std::vec
     StaticContactState s;
     s.active = starting_set(contacts, std::move(start));
     for (int it = 0; it < iteration_limit(contacts.size()); ++it) {
+        check_run();  // each iteration factorises K: seconds on a fine mesh
         const ClosedSystem cs = closed_system(K, contacts, s.active);
         s.q = cs.llt.solve(f + cs.surface_load);
         std::vector<bool> next = updated_set(contacts, s.q, s.active, length_tolerance(contacts, s.q, 0.0));
@@ -95,6 +97,7 @@ PointStep solve_static_lift(const Eigen::MatrixXd& K, const std::vector<ContactE
     PointStep p;
     p.state.active = starting_set(contacts, std::move(start));
     for (int it = 0; it < iteration_limit(contacts.size()); ++it) {
+        check_run();  // each iteration factorises K: seconds on a fine mesh
         const ClosedSystem cs = closed_system(K, contacts, p.state.active);
         const Eigen::VectorXd u = cs.llt.solve(shape);             // response to a unit point force
         const Eigen::VectorXd w = cs.llt.solve(cs.surface_load);   // response to the closed surfaces

@@ -4,7 +4,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <condition_variable>
+#include <csignal>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <deque>
 #include <exception>
@@ -14,6 +18,7 @@
 #include <vector>
 
 #include "model/cpu_budget.hpp"
+#include "model/run_control.hpp"
 
 // Protocol of collect(), on a communicator of its own:
 //   other rank -> root: kPoint (a finished point, as bytes), kSignal (this rank was told to stop),
@@ -56,6 +61,9 @@ int count_ranks_sharing_cpus(MPI_Comm node) {
 }
 
 constexpr auto kPoll = std::chrono::milliseconds(1);
+
+// How long a stopped rank waits for MPI_Finalize before it ends without it (finalize_or_exit).
+constexpr auto kStopFinalize = std::chrono::milliseconds(300);
 
 std::vector<char> encode(const FinishedPoint& p) {
     const std::uint64_t index = p.index;
@@ -157,7 +165,11 @@ public:
     }
     ~MpiRanks() override {
         MPI_Comm_free(&points_comm_);
-        MPI_Finalize();
+        if (stop_flag().load()) {
+            finalize_or_exit();
+        } else {
+            MPI_Finalize();
+        }
     }
     MpiRanks(const MpiRanks&) = delete;
     MpiRanks& operator=(const MpiRanks&) = delete;
@@ -200,6 +212,31 @@ public:
     }
 
 private:
+    // MPI_Finalize after a stop. When mpirun itself was signalled it tears the job down and no longer
+    // answers MPI_Finalize's closing exchange, which then blocks until mpirun kills the rank (2 s
+    // later, measured with Open MPI 4.1). Every finished point is already journaled, so the rank
+    // waits at most kStopFinalize and then ends with the stop's exit code, 128 + the signal.
+    static void finalize_or_exit() {
+        std::fflush(nullptr);
+        std::mutex m;
+        std::condition_variable cv;
+        bool done = false;
+        std::thread guard([&] {
+            std::unique_lock<std::mutex> lock(m);
+            if (!cv.wait_for(lock, kStopFinalize, [&] { return done; })) {
+                std::fflush(nullptr);
+                std::_Exit(128 + (stop_signal() > 0 ? stop_signal() : SIGINT));
+            }
+        });
+        MPI_Finalize();
+        {
+            const std::lock_guard<std::mutex> lock(m);
+            done = true;
+        }
+        cv.notify_all();
+        guard.join();
+    }
+
     void collect_on_root(const LocalRun& local, const PointSink& sink, std::atomic<bool>& stop) {
         std::exception_ptr sink_error;
         auto deliver = [&](const FinishedPoint& p) {

@@ -11,7 +11,8 @@ namespace vi::test {
 
 // What a finished command printed and returned.
 struct CommandResult {
-    int exit_code = -1;
+    int exit_code = -1;         // the exit status, or 128 + the signal that ended the process
+    int term_signal = 0;        // the signal that ended the process, or 0 when it exited
     std::string out;  // standard output
     std::string err;  // standard error
     bool hung = false;          // outlived its limit and was killed (SIGKILL): a hang
@@ -43,12 +44,17 @@ public:
     ChildProcess(const ChildProcess&) = delete;
     ChildProcess& operator=(const ChildProcess&) = delete;
     [[nodiscard]] pid_t pid() const { return pid_; }
+    // The file the child's standard error goes to (readable while it runs).
+    [[nodiscard]] std::string stderr_path() const { return dir_ + "/stderr"; }
     // Seconds since the child started.
     [[nodiscard]] double seconds() const;
     // Sends sig to the child (the first call starts the clock of CommandResult::after_signal).
     void signal(int sig);
     // Sends sig to the child's process group (needs own_group).
     void signal_group(int sig);
+    // Sends sig to every process the child started (its direct children: mpirun's ranks) and
+    // returns how many there were.
+    int signal_children(int sig);
     // True while the child has not ended (reaps it when it has; wait() then reports it).
     [[nodiscard]] bool running();
     // Waits for the end, at most limit_s seconds from now (then SIGKILL, and the result says hung):
@@ -65,6 +71,10 @@ private:
     double signalled_ = -1.0; // steady clock of the first signal [s], or -1
     double ended_ = 0.0;      // steady clock when reaped [s]
 };
+
+// Runs argv on a pseudo-terminal (stdin, stdout and stderr all the terminal, as in an interactive
+// shell) and returns everything it wrote there in `out`; at most limit_s seconds (then hung).
+CommandResult run_on_terminal(const std::vector<std::string>& argv, double limit_s = kHangLimitSeconds);
 
 // Polls `ready` every few milliseconds until it returns true or limit_s seconds pass; returns its
 // last answer.
