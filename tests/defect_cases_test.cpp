@@ -1,0 +1,124 @@
+// The defect reports of issue 11 (item 6), each from its case file in tests/cases/ (copied from
+// shared/cases/ with the header that says what it showed), run as a user runs them: `vibroimpact
+// simulate CASE --json` in a child process with a generous limit, so that a hang fails the test
+// instead of blocking the suite. Times are printed, not asserted (the machine may be shared).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "support/run_command.hpp"
+#include "support/test_files.hpp"
+
+namespace vi {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using test::CommandResult;
+
+// Runs `simulate CASE --json` within limit_s; the summary, or a test failure.
+json simulate(const std::string& case_path, double limit_s, const char* what) {
+    const CommandResult r = test::run_vibroimpact({"simulate", case_path, "--json"}, limit_s);
+    std::printf("%s: exit %d in %.2f s\n", what, r.exit_code, r.seconds);
+    EXPECT_FALSE(r.hung) << what << ": no end within " << limit_s << " s";
+    EXPECT_EQ(r.exit_code, 0) << what << ": " << r.err;
+    if (r.exit_code != 0) return json();
+    return json::parse(r.out);
+}
+
+// Point 944 of a 60 x 50 grid: never ended (Ctrl-C could not stop it); neighbours failed with
+// "contact chatters without end". It must end with an answer.
+TEST(KnownDefects, HangNearGrazingEndsWithAnAnswer) {
+    const json s = simulate(test::source_path("tests/cases/hang_near_grazing.toml"), 120.0, "hang_near_grazing");
+    ASSERT_TRUE(s.is_object());
+    ASSERT_TRUE(s["impacts"].is_array());
+    EXPECT_GE(s["impacts"].size(), 2u);
+    EXPECT_TRUE(s["T_s"].is_number()) << s["T_s"];
+    // A damped beam on a zero-gap support settles well inside the 150 us horizon.
+    EXPECT_EQ(s["Tp_reason"], "settled");
+    ASSERT_TRUE(s["Tp_s"].is_number()) << s["Tp_s"];
+    EXPECT_GT(s["Tp_s"].get<double>(), 0.0);
+    EXPECT_LT(s["Tp_s"].get<double>(), 150e-6);
+    std::printf("hang_near_grazing: %zu impacts, T = %.4g s, T_p = %.4g s [%s]\n", s["impacts"].size(),
+                s["T_s"].get<double>(), s["Tp_s"].get<double>(), s["Tp_reason"].get<std::string>().c_str());
+}
+
+// A beam at rest on a zero-gap support ran for more than 40 s: nothing moves, and that is the answer.
+TEST(KnownDefects, RestOnSupportEndsAtOnceWithNothingMoving) {
+    const json s = simulate(test::source_path("tests/cases/rest_on_support.toml"), 60.0, "rest_on_support");
+    ASSERT_TRUE(s.is_object());
+    EXPECT_EQ(s["impacts"].size(), 0u);
+    EXPECT_EQ(s["episodes"].size(), 0u);
+    EXPECT_EQ(s["Tp_reason"], "at_rest");
+    ASSERT_TRUE(s["Tp_s"].is_number()) << s["Tp_s"];
+    EXPECT_EQ(s["Tp_s"].get<double>(), 0.0);
+    EXPECT_TRUE(s["T_s"].is_null()) << s["T_s"];
+    EXPECT_TRUE(s["y_max_m"].is_null()) << s["y_max_m"];
+}
+
+// The beam starts touching the support and moving into it (0.1 m/s down). The exact solver takes
+// that contact at t = 0 as an impact of the first support.
+TEST(KnownDefects, StartsInContactExactTakesTheContactAtZero) {
+    const json s = simulate(test::source_path("tests/cases/starts_in_contact.toml"), 60.0, "starts_in_contact, exact");
+    ASSERT_TRUE(s.is_object());
+    ASSERT_FALSE(s["episodes"].empty());
+    EXPECT_EQ(s["episodes"][0]["t_on_s"].get<double>(), 0.0) << "the contact at t = 0 was not taken";
+    EXPECT_EQ(s["episodes"][0]["support"], 0);
+    ASSERT_FALSE(s["impacts"].empty());
+    EXPECT_EQ(s["impacts"][0]["t_on_s"].get<double>(), 0.0);
+    EXPECT_NEAR(s["impacts"][0]["v_in_m_s"].get<double>(), -0.1, 1e-6);
+    EXPECT_TRUE(s["y_max_m"].is_number()) << s["y_max_m"];
+}
+
+// CVODE used to miss the contact at t = 0 and let the beam pass into the support (3.4 times the
+// exact rebound). It must take it at t = 0 as the exact solver does and give the same rebound y_max
+// to 1e-6 relative (measured: 9e-12).
+//
+// SLOW TODAY, so it runs only with VI_SLOW_TESTS=1 in the environment:
+//     VI_SLOW_TESTS=1 ./build/tests/vi_tests --gtest_filter='KnownDefects.*'
+// CVODE took 597 s for this case's 20 us on the 2-core development machine (loaded by other builds),
+// 156 s for its first 4 us: beyond what the suite can hold (CTest stops a test at 600 s). Another
+// engineer is making CVODE fast; once it takes seconds, remove the gate.
+TEST(KnownDefects, StartsInContactCvodeAgreesWithExact_SLOW) {
+    const char* slow = std::getenv("VI_SLOW_TESTS");
+    if (slow == nullptr || std::string(slow) != "1") {
+        GTEST_SKIP() << "CVODE takes about 10 min on this case today; set VI_SLOW_TESTS=1 to run it";
+    }
+    const std::string exact_case = test::source_path("tests/cases/starts_in_contact.toml");
+    const json exact = simulate(exact_case, 60.0, "starts_in_contact, exact");
+    ASSERT_TRUE(exact.is_object());
+
+    const std::string dir = test::make_temp_dir();
+    std::string text = test::read_text(exact_case);
+    const std::string from = "method = \"exact\"";
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, from.size(), "method = \"cvode\"");
+    test::write_text(dir + "/starts_in_contact_cvode.toml", text);
+    // Three hours at most: outside CTest (no 600 s limit) a hang still ends as a failure.
+    const json cvode = simulate(dir + "/starts_in_contact_cvode.toml", 3 * 3600.0, "starts_in_contact, cvode (slow)");
+    fs::remove_all(dir);
+    ASSERT_TRUE(cvode.is_object());
+
+    ASSERT_FALSE(cvode["episodes"].empty());
+    EXPECT_EQ(cvode["episodes"][0]["t_on_s"].get<double>(), 0.0) << "the contact at t = 0 was not taken";
+    EXPECT_EQ(cvode["episodes"][0]["support"], 0);
+    ASSERT_FALSE(cvode["impacts"].empty());
+    EXPECT_EQ(cvode["impacts"][0]["t_on_s"].get<double>(), 0.0);
+    EXPECT_NEAR(cvode["impacts"][0]["v_in_m_s"].get<double>(), -0.1, 1e-6);
+    EXPECT_EQ(cvode["impacts"].size(), exact["impacts"].size());
+    const double y_exact = exact["y_max_m"].get<double>();
+    const double y_cvode = cvode["y_max_m"].get<double>();
+    std::printf("starts_in_contact: y_max exact %.10g m, cvode %.10g m, relative difference %.2g\n", y_exact, y_cvode,
+                std::abs(y_cvode - y_exact) / std::abs(y_exact));
+    EXPECT_LE(std::abs(y_cvode - y_exact), 1e-6 * std::abs(y_exact));
+}
+
+}  // namespace
+}  // namespace vi
