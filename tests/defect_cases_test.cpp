@@ -96,15 +96,18 @@ TEST(KnownDefects, StartsInContactCvodeAgreesWithExact_SLOW) {
 
     const std::string dir = test::make_temp_dir();
     std::string text = test::read_text(exact_case);
-    const std::string from = "method = \"exact\"";
+    // The key at the start of its line (the header comment mentions `method = "exact"` too).
+    const std::string from = "\nmethod = \"exact\"";
     const auto at = text.find(from);
     ASSERT_NE(at, std::string::npos);
-    text.replace(at, from.size(), "method = \"cvode\"");
+    text.replace(at, from.size(), "\nmethod = \"cvode\"");
     test::write_text(dir + "/starts_in_contact_cvode.toml", text);
     // Three hours at most: outside CTest (no 600 s limit) a hang still ends as a failure.
     const json cvode = simulate(dir + "/starts_in_contact_cvode.toml", 3 * 3600.0, "starts_in_contact, cvode (slow)");
     fs::remove_all(dir);
     ASSERT_TRUE(cvode.is_object());
+    ASSERT_EQ(cvode["solver"]["method"], "cvode");
+    ASSERT_EQ(exact["solver"]["method"], "exact");
 
     ASSERT_FALSE(cvode["episodes"].empty());
     EXPECT_EQ(cvode["episodes"][0]["t_on_s"].get<double>(), 0.0) << "the contact at t = 0 was not taken";
