@@ -82,7 +82,8 @@ int run_in(const std::string& program, const std::string& script, const fs::path
         const bool late = std::chrono::steady_clock::now() > give_up;
         if (stop || late) {
             kill(pid, SIGKILL);
-            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+            // Reaped at once (SIGKILL cannot be caught); a few retries only if a signal interrupts the wait.
+            for (int tries = 0; tries < 100 && waitpid(pid, &status, 0) < 0 && errno == EINTR; ++tries) {
             }
             if (stop) check_run();  // throws StopRequested
             throw std::runtime_error("gnuplot: no end after " +
