@@ -56,8 +56,8 @@ int main(int argc, char** argv) {
 
     install_stop_handlers();
     for (CLI::App* sub : app.get_subcommands()) {
-        // A failure while a stop was requested is the stop's doing (a read interrupted by the
-        // signal, work abandoned half-way): the command was stopped, not given bad input.
+        // A failure while a stop was requested is the stop's doing (a system call the signal
+        // interrupted, work abandoned half-way): the command was stopped, not given bad input.
         try {
             return bodies.at(sub)();
         } catch (const vi::StopRequested& s) {

@@ -1,6 +1,7 @@
 #include "stop_signals.hpp"
 
 #include <signal.h>
+#include <time.h>
 
 #include <atomic>
 
@@ -11,34 +12,45 @@ namespace {
 
 constexpr int kStopSignals[] = {SIGINT, SIGTERM};
 
-// Signals that arrived during a commit section, and the last of them.
-std::atomic<int> g_commit_count{0};
-std::atomic<int> g_commit_last{0};
-static_assert(std::atomic<int>::is_always_lock_free, "a signal handler may only touch lock-free atomics");
+// When the first stop signal came [ns of CLOCK_MONOTONIC], 0 before; whether a commit section runs;
+// a second signal held back by it (0: none).
+std::atomic<long long> g_first_ns{0};
+std::atomic<bool> g_in_commit{false};
+std::atomic<int> g_deferred{0};
+static_assert(std::atomic<long long>::is_always_lock_free && std::atomic<bool>::is_always_lock_free &&
+                  std::atomic<int>::is_always_lock_free,
+              "a signal handler may only touch lock-free atomics");
 
-void set_action(int signal, void (*handler)(int), int flags, struct sigaction* old = nullptr) {
+long long now_ns() {
+    timespec ts{};
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return static_cast<long long>(ts.tv_sec) * 1000000000LL + ts.tv_nsec;
+}
+
+// Ends the process by `signal`: its default action, delivered once the handler (which blocks it)
+// returns, or at once outside a handler.
+void end_by(int signal) {
     struct sigaction sa {};
-    sa.sa_handler = handler;
+    sa.sa_handler = SIG_DFL;
     sigemptyset(&sa.sa_mask);
-    // Neither handler runs inside the other: the disposition changes stay consistent.
-    for (const int s : kStopSignals) sigaddset(&sa.sa_mask, s);
-    sa.sa_flags = flags;
-    sigaction(signal, &sa, old);
+    sigaction(signal, &sa, nullptr);
+    raise(signal);
 }
 
-// Only async-signal-safe calls: atomics and sigaction.
+// Only async-signal-safe calls: atomics, clock_gettime, sigaction, raise.
 extern "C" void on_stop_signal(int signal) {
-    vi::request_stop(signal);
-    for (const int s : kStopSignals) set_action(s, SIG_DFL, 0);
-}
-
-extern "C" void on_signal_in_commit(int signal) {
-    g_commit_last.store(signal);
-    g_commit_count.fetch_add(1);
-}
-
-bool is_stop_handler(const struct sigaction& sa) {
-    return (sa.sa_flags & SA_SIGINFO) == 0 && sa.sa_handler == on_stop_signal;
+    const long long now = now_ns();
+    long long first = 0;
+    if (g_first_ns.compare_exchange_strong(first, now)) {
+        vi::request_stop(signal);
+        return;
+    }
+    if (now - first < kDuplicateWindowMs * 1000000LL) return;  // the same stop, delivered twice
+    if (g_in_commit.load()) {
+        g_deferred.store(signal);
+        return;
+    }
+    end_by(signal);
 }
 
 }  // namespace
@@ -48,39 +60,24 @@ void install_stop_handlers() {
         struct sigaction old {};
         sigaction(s, nullptr, &old);
         if (s == SIGINT && (old.sa_flags & SA_SIGINFO) == 0 && old.sa_handler == SIG_IGN) continue;
-        set_action(s, on_stop_signal, SA_RESETHAND);
+        struct sigaction sa {};
+        sa.sa_handler = on_stop_signal;
+        sigemptyset(&sa.sa_mask);
+        // Neither handler runs inside the other: the first-signal bookkeeping stays consistent.
+        for (const int m : kStopSignals) sigaddset(&sa.sa_mask, m);
+        sa.sa_flags = SA_RESTART;
+        sigaction(s, &sa, nullptr);
     }
 }
 
-namespace {
-struct sigaction g_saved[2];
-}  // namespace
-
 CommitSection::CommitSection() {
-    g_commit_count.store(0);
-    g_commit_last.store(0);
-    for (int k = 0; k < 2; ++k) {
-        sigaction(kStopSignals[k], nullptr, &g_saved[k]);
-        // An ignored signal stays ignored.
-        if ((g_saved[k].sa_flags & SA_SIGINFO) == 0 && g_saved[k].sa_handler == SIG_IGN) continue;
-        set_action(kStopSignals[k], on_signal_in_commit, 0);
-    }
+    g_deferred.store(0);
+    g_in_commit.store(true);
 }
 
 CommitSection::~CommitSection() {
-    // Was the stop handler still in place, i.e. had no stop signal come before the section?
-    const bool armed = is_stop_handler(g_saved[0]) || is_stop_handler(g_saved[1]);
-    for (int k = 0; k < 2; ++k) sigaction(kStopSignals[k], &g_saved[k], nullptr);
-    const int count = g_commit_count.load();
-    if (count == 0) return;
-    const int last = g_commit_last.load();
-    // What the handlers would have done, in order: the first signal (if armed) stops, the next ends.
-    if (armed) {
-        vi::request_stop(last);
-        for (const int s : kStopSignals) set_action(s, SIG_DFL, 0);
-        if (count == 1) return;
-    }
-    raise(last);
+    g_in_commit.store(false);
+    if (const int signal = g_deferred.exchange(0); signal != 0) end_by(signal);
 }
 
 }  // namespace vi::cli
