@@ -15,9 +15,11 @@
 #include "model/input_error.hpp"
 #include "io/output_files.hpp"
 #include "io/units.hpp"
+#include "model/run_control.hpp"
 #include "plot/figure_gnuplot.hpp"
 #include "study/paper/figures.hpp"
 #include "study/paper/report.hpp"
+#include "stop_signals.hpp"
 
 namespace vi::cli {
 namespace {
@@ -64,7 +66,7 @@ CommandBody add_paper_command(CLI::App& app) {
     CLI::App* sub = app.add_subcommand(
         "paper", "The paper's numerical study (Figs. 2-11: PNG, SVG, CSV) and report.html comparing its claims with ours");
     sub->add_option("--out,-o", opt->out, "Output folder (created; files of the same names are replaced)")->capture_default_str();
-    sub->add_option("--threads,-j", opt->threads, "Worker threads (0: every core)")->check(CLI::Range(0, 1024))->capture_default_str();
+    sub->add_option("--threads,-j", opt->threads, "Worker threads (0: every CPU this process may use: its affinity and cgroup CPU quota)")->check(CLI::Range(0, 1024))->capture_default_str();
     sub->add_option("--positions", opt->positions,
                     "Support positions of the transient scans, evenly over x0/l in [0.3, 1] (0.67, 0.78, 0.87 always added)")
         ->check(CLI::Range(2, 100000))
@@ -133,7 +135,12 @@ CommandBody add_paper_command(CLI::App& app) {
         progress("figures drawn (" + std::to_string(figures.size()) + " with gnuplot)");
         run.total_s = elapsed();
         const OutputFiles files = paper_output_files(study, claims, figures, rendered, run);
-        write_output_files(opt->out, files);
+        // Last chance to stop: from here the files are complete and go into place together.
+        check_run();
+        {
+            const CommitSection commit;
+            write_output_files(opt->out, files);
+        }
 
         int agree = 0;
         for (const Claim& c : claims) agree += c.verdict == Verdict::agrees;

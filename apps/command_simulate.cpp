@@ -10,7 +10,9 @@
 #include "io/case_reader.hpp"
 #include "model/input_error.hpp"
 #include "io/output_files.hpp"
+#include "model/run_control.hpp"
 #include "report/transient_output.hpp"
+#include "stop_signals.hpp"
 
 namespace vi::cli {
 namespace {
@@ -54,7 +56,12 @@ CommandBody add_simulate_command(CLI::App& app) {
                          opt->case_path.c_str(), run.result.stats.unproven_excess);
         }
         const OutputFiles files = transient_files(c, run.built, run.result, run.summary);
-        if (!opt->out_dir.empty()) write_output_files(opt->out_dir, files);
+        // Last chance to stop: from here the results are complete and go out together.
+        check_run();
+        if (!opt->out_dir.empty()) {
+            const CommitSection commit;
+            write_output_files(opt->out_dir, files);
+        }
         if (opt->json) {
             std::fputs(files.at("summary.json").c_str(), stdout);
             return kExitOk;

@@ -24,6 +24,7 @@
 #include "sweep/store.hpp"
 #include "sweep/table.hpp"
 #include "support_model_option.hpp"
+#include "stop_signals.hpp"
 #include "sweep_progress.hpp"
 
 #ifdef VI_HAVE_MPI
@@ -122,9 +123,11 @@ std::unique_ptr<SweepRanks> start_ranks() {
 #endif
 }
 
+// --threads, or by default the CPUs this process may use (affinity, cgroup quota) shared among the
+// ranks that may run on the same CPUs (all ranks of the machine unless the launcher binds them).
 int worker_threads(const Options& o, const SweepRanks& ranks) {
     if (o.threads > 0) return o.threads;
-    return std::max(1, resolve_thread_count(0) / std::max(1, ranks.ranks_on_this_machine()));
+    return std::max(1, resolve_thread_count(0) / std::max(1, ranks.ranks_sharing_cpus()));
 }
 
 // The root's last step: the files of a complete sweep, or how to resume an interrupted one.
@@ -152,7 +155,9 @@ int finish_on_root(const Options& o, const Plan& plan, SweepStore& store, SweepR
     if (o.out_dir.empty()) {
         std::fputs(store.csv().c_str(), stdout);
     } else {
-        store.finish(o.out_dir, sweep_summary_json(plan.grid, info).dump(2) + "\n");
+        const std::string json = sweep_summary_json(plan.grid, info).dump(2) + "\n";
+        const CommitSection commit;
+        store.finish(o.out_dir, json);
         std::printf("Written %zu points to %s/%s and %s\n", store.points(), o.out_dir.c_str(), SweepStore::kCsvName,
                     SweepStore::kJsonName);
     }
@@ -285,8 +290,8 @@ CommandBody add_sweep_command(CLI::App& app) {
         ->check(CLI::Range(0.0, 1e9))
         ->capture_default_str();
     sub->add_option("--threads,-j", opt->threads,
-                    "Worker threads per process (0: every core; under MPI, the cores shared by the ranks of a "
-                    "machine)")
+                    "Worker threads per process (0: every CPU this process may use, its affinity and cgroup CPU "
+                    "quota; under MPI, shared among the ranks that may use the same CPUs)")
         ->check(CLI::Range(0, 4096))
         ->capture_default_str();
     sub->footer(paths_help());

@@ -12,6 +12,8 @@
 #include "io/case_reader.hpp"
 #include "model/input_error.hpp"
 #include "io/output_files.hpp"
+#include "model/run_control.hpp"
+#include "stop_signals.hpp"
 
 namespace vi::cli {
 
@@ -50,10 +52,13 @@ CommandBody add_validate_command(CLI::App& app) {
             };
         }
         const std::string text = opt->paper_parameters ? paper_parameters_report(vo) : validation_report(vo);
+        // Last chance to stop: from here the document is complete and goes out whole.
+        check_run();
         if (opt->out.empty()) {
             std::fputs(text.c_str(), stdout);
         } else {
             const std::filesystem::path dir = out_path.parent_path().empty() ? "." : out_path.parent_path();
+            const CommitSection commit;
             write_output_files(dir.string(), {{out_path.filename().string(), text}});
             std::printf("Written to %s\n", opt->out.c_str());
         }

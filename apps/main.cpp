@@ -9,21 +9,15 @@
 #include "commands.hpp"
 #include "model/input_error.hpp"
 #include "model/run_control.hpp"
+#include "stop_signals.hpp"
 
 namespace {
 
-extern "C" void on_stop_signal(int signal) { vi::request_stop(signal); }
-
-// SIGINT and SIGTERM set the stop flag that every solver loop checks (model/run_control.hpp): the
-// command abandons its work, writes nothing half-done and exits 128 + the signal. The handler then
-// resets itself, so a second signal ends the process at once.
-void stop_on_signals() {
-    struct sigaction sa {};
-    sa.sa_handler = on_stop_signal;
-    sigemptyset(&sa.sa_mask);
-    sa.sa_flags = SA_RESETHAND;
-    sigaction(SIGINT, &sa, nullptr);
-    sigaction(SIGTERM, &sa, nullptr);
+// What a stopped command prints and returns: 128 + the signal (130 SIGINT, 143 SIGTERM).
+int stopped(int signal) {
+    std::fprintf(stderr, "vibroimpact: stopped by %s; nothing written\n",
+                 signal == SIGTERM ? "SIGTERM" : signal == SIGINT ? "SIGINT" : "a stop request");
+    return vi::cli::kExitStoppedBase + (signal > 0 ? signal : SIGINT);
 }
 
 }  // namespace
@@ -60,18 +54,20 @@ int main(int argc, char** argv) {
         return kExitBadInput;
     }
 
-    stop_on_signals();
+    install_stop_handlers();
     for (CLI::App* sub : app.get_subcommands()) {
+        // A failure while a stop was requested is the stop's doing (a system call the signal
+        // interrupted, work abandoned half-way): the command was stopped, not given bad input.
         try {
             return bodies.at(sub)();
         } catch (const vi::StopRequested& s) {
-            std::fprintf(stderr, "vibroimpact: stopped by %s; nothing written\n",
-                         s.signal() == SIGTERM ? "SIGTERM" : s.signal() == SIGINT ? "SIGINT" : "a stop request");
-            return kExitStoppedBase + (s.signal() > 0 ? s.signal() : SIGINT);
+            return stopped(s.signal());
         } catch (const vi::InputError& e) {
+            if (vi::stop_flag().load()) return stopped(vi::stop_signal());
             std::fprintf(stderr, "vibroimpact: error: %s\n", e.what());
             return kExitBadInput;
         } catch (const std::exception& e) {
+            if (vi::stop_flag().load()) return stopped(vi::stop_signal());
             std::fprintf(stderr, "vibroimpact: failure: %s\n", e.what());
             return kExitFailure;
         }

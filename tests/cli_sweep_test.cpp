@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 #include <pty.h>
+#include <sched.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -18,6 +19,8 @@
 #include <thread>
 #include <vector>
 
+#include "model/cpu_budget.hpp"
+#include "support/mpi_launch.hpp"
 #include "support/run_command.hpp"
 #include "support/test_files.hpp"
 
@@ -66,41 +69,8 @@ std::size_t journal_points(const std::string& path) {
     return lines.size() > 4 ? lines.size() - 4 : 0;
 }
 
-// mpirun on PATH, or empty.
-std::string find_mpirun() {
-    const char* path = std::getenv("PATH");
-    std::istringstream dirs(path ? path : "");
-    for (std::string dir; std::getline(dirs, dir, ':');) {
-        const fs::path p = fs::path(dir) / "mpirun";
-        if (!dir.empty() && access(p.c_str(), X_OK) == 0) return p.string();
-    }
-    return "";
-}
-
-// "NAME=<the variable's value>:<more>".
-std::string extended(const char* name, const std::string& more) {
-    const char* now = std::getenv(name);
-    return std::string(name) + "=" + (now && *now ? std::string(now) + ":" : std::string()) + more;
-}
-
-// Runs the command under `mpirun -n 2` as this machine allows (root needs the two flags). Under the
-// sanitizers, LeakSanitizer is told about the allocations OpenMPI keeps until exit, and needs full
-// stacks to see them (tests/lsan-openmpi.supp); the variables do nothing in other builds.
-CommandResult run_mpi(const std::vector<std::string>& args) {
-    std::vector<std::string> argv{find_mpirun(), "--allow-run-as-root", "--oversubscribe", "-n", "2",
-                                  test::vibroimpact_path()};
-    argv.insert(argv.end(), args.begin(), args.end());
-    return test::run_program(
-        argv, {extended("LSAN_OPTIONS", "suppressions=" + test::source_path("tests/lsan-openmpi.supp")),
-               extended("ASAN_OPTIONS", "fast_unwind_on_malloc=0")});
-}
-
-// Why the MPI parts cannot run here, or empty.
-std::string mpi_unavailable() {
-    if (!VI_EXE_HAS_MPI) return "vibroimpact was built without MPI (libopenmpi-dev missing)";
-    if (find_mpirun().empty()) return "mpirun is not on PATH (scripts/install-deps installs openmpi-bin)";
-    return "";
-}
+using test::mpi_unavailable;
+using test::run_mpi;
 
 class SweepCli : public ::testing::Test {
 protected:
@@ -176,6 +146,30 @@ TEST_F(SweepCli, CsvIsTheSameForOneTwoThreadsAndTwoMpiRanks) {
     ASSERT_EQ(mpi.exit_code, 0) << mpi.out << mpi.err;
     EXPECT_EQ(read_text(dir_ + "/mpi/sweep.csv"), csv);
     EXPECT_EQ(json::parse(read_text(dir_ + "/mpi/sweep.json"))["processes"], 2);
+}
+
+// --threads 0 (the default) runs as many threads as the CPUs the process may use: one under
+// `taskset -c N`, and otherwise what usable_cpu_count() finds for a process started like this one
+// (same affinity, same cgroup); sweep.json says how many ran.
+TEST_F(SweepCli, DefaultThreadsFollowTheAllowedCpus) {
+    const CommandResult free_run = run_vibroimpact(sweep(with(kGrid, {"--out", dir_ + "/all"})));
+    ASSERT_EQ(free_run.exit_code, 0) << free_run.err;
+    EXPECT_EQ(json::parse(read_text(dir_ + "/all/sweep.json"))["threads"], usable_cpu_count());
+
+    const std::string taskset = test::find_on_path("taskset");
+    if (taskset.empty()) GTEST_SKIP() << "taskset is not on PATH (util-linux)";
+    cpu_set_t allowed;
+    CPU_ZERO(&allowed);
+    ASSERT_EQ(sched_getaffinity(0, sizeof allowed, &allowed), 0);
+    int cpu = 0;
+    while (cpu < CPU_SETSIZE - 1 && !CPU_ISSET(cpu, &allowed)) ++cpu;
+    std::vector<std::string> argv{taskset, "-c", std::to_string(cpu), test::vibroimpact_path()};
+    for (const std::string& a : sweep(with(kGrid, {"--out", dir_ + "/one"}))) argv.push_back(a);
+    const CommandResult pinned = test::run_program(argv);
+    ASSERT_EQ(pinned.exit_code, 0) << pinned.err;
+    const json summary = json::parse(read_text(dir_ + "/one/sweep.json"));
+    EXPECT_EQ(summary["threads"], 1);
+    EXPECT_EQ(read_text(dir_ + "/one/sweep.csv"), read_text(dir_ + "/all/sweep.csv"));
 }
 
 TEST_F(SweepCli, FailingPointGetsItsStatusAndTheSweepGoesOn) {

@@ -6,6 +6,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "model/run_control.hpp"
+
 namespace vi {
 namespace {
 
@@ -49,7 +51,11 @@ const StateData& ExactModel::state(const std::vector<bool>& active) {
     if (it != cache_.end()) return *it->second;
     const auto t0 = std::chrono::steady_clock::now();
     auto sd = std::make_unique<StateData>();
+    // A new contact state of a fine mesh is seconds of linear algebra: the stop flag is watched
+    // between its stages (and between column blocks of the largest product).
+    check_run();
     sd->modes = decompose_state(base_, *p_, active);
+    check_run();
     const StateModes& md = sd->modes;
     const int n = base_.n, m = md.size();
     const Eigen::VectorXcd& lam = md.lambda;
@@ -74,6 +80,7 @@ const StateData& ExactModel::state(const std::vector<bool>& active) {
     }
     if (energy_) {
         sd->full = expand(md);
+        check_run();
         const Eigen::MatrixXcd& R = sd->full.R;
         const Eigen::VectorXcd& fl = sd->full.lambda;
         sd->full_contact_vel.resize(nc, 2 * n);
@@ -92,7 +99,13 @@ const StateData& ExactModel::state(const std::vector<bool>& active) {
         }
         const Eigen::VectorXd d = 2.0 * base_.zeta.cwiseProduct(base_.omega);
         const Eigen::MatrixXcd rv = R.bottomRows(n);
-        sd->rayleigh_w = rv.transpose() * (d.cast<cd>().asDiagonal() * rv);
+        const Eigen::MatrixXcd drv = d.cast<cd>().asDiagonal() * rv;
+        sd->rayleigh_w.resize(2 * n, 2 * n);
+        for (int c0 = 0; c0 < 2 * n; c0 += 64) {
+            const int w = std::min(64, 2 * n - c0);
+            sd->rayleigh_w.middleCols(c0, w).noalias() = rv.transpose() * drv.middleCols(c0, w);
+            check_run();
+        }
         sd->rayleigh_wc = sd->rayleigh_w.cwiseProduct(sd->cauchy);
         // What each mode's term alone could still dissipate per unit squared amplitude (exact_energy).
         auto tail = [&](int k, double weight) {

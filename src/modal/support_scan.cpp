@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "model/run_control.hpp"
+
 namespace vi {
 
 std::vector<SupportScanPoint> support_scan(const Case& c, const std::vector<double>& positions, int count,
@@ -10,6 +12,7 @@ std::vector<SupportScanPoint> support_scan(const Case& c, const std::vector<doub
     std::vector<SupportScanPoint> out;
     out.reserve(positions.size());
     for (double p : positions) {
+        check_run();
         Case moved = c;
         moved.supports[0].position = p;
         out.push_back({p, modal_study(moved, count, model)});

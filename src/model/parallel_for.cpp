@@ -6,11 +6,13 @@
 #include <thread>
 #include <vector>
 
+#include "model/cpu_budget.hpp"
+
 namespace vi {
 
 int resolve_thread_count(int requested) {
     if (requested > 0) return requested;
-    return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    return usable_cpu_count();
 }
 
 std::size_t parallel_for(std::size_t count, int threads, const std::function<void(std::size_t)>& body,

@@ -7,8 +7,8 @@
 
 namespace vi {
 
-// Number of worker threads for a request: `requested` if positive, else the machine's hardware
-// concurrency (at least 1).
+// Number of worker threads for a request: `requested` if positive, else the CPUs this process may
+// run on (usable_cpu_count, model/cpu_budget.hpp: its affinity set and cgroup CPU quota).
 int resolve_thread_count(int requested);
 
 // Calls body(i) once for every i in [0, count), on resolve_thread_count(threads) threads. Indices

@@ -1,20 +1,24 @@
 #include "plot/figure_gnuplot.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include "model/parallel_for.hpp"
 #include "io/text_file.hpp"
+#include "model/run_control.hpp"
 
 namespace vi {
 namespace {
@@ -38,7 +42,13 @@ void put(const fs::path& p, const std::string& text) {
     if (!out) throw std::runtime_error(p.string() + ": cannot write");
 }
 
+// How long one gnuplot process may take to draw its share of the figures: far above the second or
+// two the paper's figures take, and a bound on the wait.
+constexpr std::chrono::seconds kGnuplotLimit{600};
+
 // Runs `program script` in `dir` with output to files there; returns the exit status (127: not run).
+// A stop request kills gnuplot and throws StopRequested; gnuplot past kGnuplotLimit is killed and
+// std::runtime_error thrown.
 int run_in(const std::string& program, const std::string& script, const fs::path& dir) {
     const std::string out = (dir / ("." + script + ".out")).string();
     const std::string dir_s = dir.string();
@@ -60,9 +70,27 @@ int run_in(const std::string& program, const std::string& script, const fs::path
         execv(argv[0], argv.data());
         _exit(127);
     }
+    // Polled rather than waited for, so that a stop (a signal, model/run_control.hpp) ends gnuplot
+    // too and is honoured within milliseconds; bounded by kGnuplotLimit.
     int status = 0;
-    while (waitpid(pid, &status, 0) < 0) {
-        if (errno != EINTR) return 127;
+    const auto give_up = std::chrono::steady_clock::now() + kGnuplotLimit;
+    for (;;) {
+        const pid_t got = waitpid(pid, &status, WNOHANG);
+        if (got == pid) break;
+        if (got < 0 && errno != EINTR) return 127;
+        const bool stop = stop_flag().load();
+        const bool late = std::chrono::steady_clock::now() > give_up;
+        if (stop || late) {
+            kill(pid, SIGKILL);
+            // Reaped at once (SIGKILL cannot be caught); a few retries only if a signal interrupts the wait.
+            for (int tries = 0; tries < 100 && waitpid(pid, &status, 0) < 0 && errno == EINTR; ++tries) {
+            }
+            if (stop) check_run();  // throws StopRequested
+            throw std::runtime_error("gnuplot: no end after " +
+                                     std::to_string(std::chrono::duration_cast<std::chrono::seconds>(kGnuplotLimit).count()) +
+                                     " s; killed");
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
     return WIFEXITED(status) ? WEXITSTATUS(status) : 128;
 }

@@ -37,7 +37,9 @@ std::string gnuplot_script(const FigureSpec& f);
 
 // Renders every figure with `gnuplot` in a temporary folder that is removed afterwards: one gnuplot
 // process per thread, each drawing its share of the figures. Throws std::runtime_error with
-// gnuplot's first error line (which names the figure's script) when a figure fails.
+// gnuplot's first error line (which names the figure's script) when a figure fails, or when a
+// gnuplot runs for more than 10 minutes. A stop request (model/run_control.hpp) kills the gnuplot
+// processes and throws StopRequested.
 std::vector<RenderedFigure> render_figures(const std::string& gnuplot, const std::vector<FigureSpec>& figures, int threads);
 
 // Text for a gnuplot string in single quotes (quotes doubled).

@@ -30,8 +30,10 @@ public:
     virtual ~SweepRanks() = default;
     [[nodiscard]] virtual int rank() const = 0;
     [[nodiscard]] virtual int size() const = 0;
-    // Ranks sharing this machine, this one included (for a default thread count).
-    [[nodiscard]] virtual int ranks_on_this_machine() const = 0;
+    // Ranks on this machine whose allowed CPUs (affinity) overlap this rank's, this one included:
+    // the ranks that share this rank's CPUs, for a default thread count. All ranks of the machine
+    // when the launcher does not bind them; 1 when it gives each rank CPUs of its own.
+    [[nodiscard]] virtual int ranks_sharing_cpus() const = 0;
     // Collective: the largest of every rank's value.
     virtual int max_over_ranks(int value) = 0;
     // Collective: the root's value, on every rank.
@@ -49,7 +51,7 @@ class SingleProcess final : public SweepRanks {
 public:
     [[nodiscard]] int rank() const override { return 0; }
     [[nodiscard]] int size() const override { return 1; }
-    [[nodiscard]] int ranks_on_this_machine() const override { return 1; }
+    [[nodiscard]] int ranks_sharing_cpus() const override { return 1; }
     int max_over_ranks(int value) override { return value; }
     int broadcast(int value) override { return value; }
     std::vector<std::size_t> broadcast(std::vector<std::size_t> values) override { return values; }

@@ -29,7 +29,7 @@ struct PaperStudyOptions {
     std::vector<double> force_positions = {0.87, 1.0};  // Fig. 11
     int modes = 3;                     // supported modes of Figs. 6-8
     int free_modes = 5;                // unsupported modes of Fig. 2
-    int threads = 0;                   // 0: every core
+    int threads = 0;                   // 0: every CPU this process may use
     // Called with one line as each part finishes (the command prints it); may be empty.
     std::function<void(const std::string&)> progress;
 };

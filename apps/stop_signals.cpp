@@ -1,0 +1,83 @@
+#include "stop_signals.hpp"
+
+#include <signal.h>
+#include <time.h>
+
+#include <atomic>
+
+#include "model/run_control.hpp"
+
+namespace vi::cli {
+namespace {
+
+constexpr int kStopSignals[] = {SIGINT, SIGTERM};
+
+// When the first stop signal came [ns of CLOCK_MONOTONIC], 0 before; whether a commit section runs;
+// a second signal held back by it (0: none).
+std::atomic<long long> g_first_ns{0};
+std::atomic<bool> g_in_commit{false};
+std::atomic<int> g_deferred{0};
+static_assert(std::atomic<long long>::is_always_lock_free && std::atomic<bool>::is_always_lock_free &&
+                  std::atomic<int>::is_always_lock_free,
+              "a signal handler may only touch lock-free atomics");
+
+long long now_ns() {
+    timespec ts{};
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return static_cast<long long>(ts.tv_sec) * 1000000000LL + ts.tv_nsec;
+}
+
+// Ends the process by `signal`: its default action, delivered once the handler (which blocks it)
+// returns, or at once outside a handler.
+void end_by(int signal) {
+    struct sigaction sa {};
+    sa.sa_handler = SIG_DFL;
+    sigemptyset(&sa.sa_mask);
+    sigaction(signal, &sa, nullptr);
+    raise(signal);
+}
+
+// Only async-signal-safe calls: atomics, clock_gettime, sigaction, raise.
+extern "C" void on_stop_signal(int signal) {
+    const long long now = now_ns();
+    long long first = 0;
+    if (g_first_ns.compare_exchange_strong(first, now)) {
+        vi::request_stop(signal);
+        return;
+    }
+    if (now - first < kDuplicateWindowMs * 1000000LL) return;  // the same stop, delivered twice
+    if (g_in_commit.load()) {
+        g_deferred.store(signal);
+        return;
+    }
+    end_by(signal);
+}
+
+}  // namespace
+
+void install_stop_handlers() {
+    for (const int s : kStopSignals) {
+        struct sigaction old {};
+        sigaction(s, nullptr, &old);
+        if (s == SIGINT && (old.sa_flags & SA_SIGINFO) == 0 && old.sa_handler == SIG_IGN) continue;
+        struct sigaction sa {};
+        sa.sa_handler = on_stop_signal;
+        sigemptyset(&sa.sa_mask);
+        // Neither handler runs inside the other: the first-signal bookkeeping stays consistent.
+        for (const int m : kStopSignals) sigaddset(&sa.sa_mask, m);
+        sa.sa_flags = SA_RESTART;
+        sigaction(s, &sa, nullptr);
+    }
+}
+
+CommitSection::CommitSection() {
+    g_deferred.store(0);
+    g_in_commit.store(true);
+}
+
+CommitSection::~CommitSection() {
+    g_in_commit.store(false);
+    if (const int signal = g_deferred.exchange(0); signal != 0) end_by(signal);
+}
+
+}  // namespace vi::cli

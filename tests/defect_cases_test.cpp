@@ -1,0 +1,142 @@
+// The defect reports of issue 11 (item 6), each from its case file in tests/cases/ (copied from
+// shared/cases/ with the header that says what it showed), run as a user runs them: `vibroimpact
+// simulate CASE --json` in a child process with a generous limit, so that a hang fails the test
+// instead of blocking the suite. Times are printed, not asserted (the machine may be shared).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "support/run_command.hpp"
+#include "support/test_files.hpp"
+
+namespace vi {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using test::CommandResult;
+
+// Runs `simulate CASE --json` within limit_s; the summary, or a test failure.
+json simulate(const std::string& case_path, double limit_s, const char* what) {
+    const CommandResult r = test::run_vibroimpact({"simulate", case_path, "--json"}, limit_s);
+    std::printf("%s: exit %d in %.2f s\n", what, r.exit_code, r.seconds);
+    EXPECT_FALSE(r.hung) << what << ": no end within " << limit_s << " s";
+    EXPECT_EQ(r.exit_code, 0) << what << ": " << r.err;
+    if (r.exit_code != 0) return json();
+    return json::parse(r.out);
+}
+
+// Point 944 of a 60 x 50 grid: never ended (Ctrl-C could not stop it); neighbours failed with
+// "contact chatters without end". It must end with an answer.
+TEST(KnownDefects, HangNearGrazingEndsWithAnAnswer) {
+    const json s = simulate(test::source_path("tests/cases/hang_near_grazing.toml"), 120.0, "hang_near_grazing");
+    ASSERT_TRUE(s.is_object());
+    ASSERT_TRUE(s["impacts"].is_array());
+    EXPECT_GE(s["impacts"].size(), 2u);
+    EXPECT_TRUE(s["T_s"].is_number()) << s["T_s"];
+    // A damped beam on a zero-gap support settles well inside the 150 us horizon.
+    EXPECT_EQ(s["Tp_reason"], "settled");
+    ASSERT_TRUE(s["Tp_s"].is_number()) << s["Tp_s"];
+    EXPECT_GT(s["Tp_s"].get<double>(), 0.0);
+    EXPECT_LT(s["Tp_s"].get<double>(), 150e-6);
+    std::printf("hang_near_grazing: %zu impacts, T = %.4g s, T_p = %.4g s [%s]\n", s["impacts"].size(),
+                s["T_s"].get<double>(), s["Tp_s"].get<double>(), s["Tp_reason"].get<std::string>().c_str());
+}
+
+// A beam at rest on a zero-gap support ran for more than 40 s: nothing moves, and that is the answer.
+TEST(KnownDefects, RestOnSupportEndsAtOnceWithNothingMoving) {
+    const json s = simulate(test::source_path("tests/cases/rest_on_support.toml"), 60.0, "rest_on_support");
+    ASSERT_TRUE(s.is_object());
+    EXPECT_EQ(s["impacts"].size(), 0u);
+    EXPECT_EQ(s["episodes"].size(), 0u);
+    EXPECT_EQ(s["Tp_reason"], "at_rest");
+    ASSERT_TRUE(s["Tp_s"].is_number()) << s["Tp_s"];
+    EXPECT_EQ(s["Tp_s"].get<double>(), 0.0);
+    EXPECT_TRUE(s["T_s"].is_null()) << s["T_s"];
+    EXPECT_TRUE(s["y_max_m"].is_null()) << s["y_max_m"];
+}
+
+// The beam starts touching the support and moving into it (0.1 m/s down). The exact solver takes
+// that contact at t = 0 as an impact of the first support.
+TEST(KnownDefects, StartsInContactExactTakesTheContactAtZero) {
+    const json s = simulate(test::source_path("tests/cases/starts_in_contact.toml"), 60.0, "starts_in_contact, exact");
+    ASSERT_TRUE(s.is_object());
+    ASSERT_FALSE(s["episodes"].empty());
+    EXPECT_EQ(s["episodes"][0]["t_on_s"].get<double>(), 0.0) << "the contact at t = 0 was not taken";
+    EXPECT_EQ(s["episodes"][0]["support"], 0);
+    ASSERT_FALSE(s["impacts"].empty());
+    EXPECT_EQ(s["impacts"][0]["t_on_s"].get<double>(), 0.0);
+    EXPECT_NEAR(s["impacts"][0]["v_in_m_s"].get<double>(), -0.1, 1e-6);
+    EXPECT_TRUE(s["y_max_m"].is_number()) << s["y_max_m"];
+}
+
+// The case with method = "cvode" in its [solver] table (the key at the start of its line: the header
+// comment mentions `method = "exact"` too), in a temporary folder.
+std::string cvode_copy(const std::string& exact_case, const std::string& dir) {
+    std::string text = test::read_text(exact_case);
+    const std::string from = "\nmethod = \"exact\"";
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos);
+    if (at != std::string::npos) text.replace(at, from.size(), "\nmethod = \"cvode\"");
+    const std::string path = dir + "/" + fs::path(exact_case).stem().string() + "_cvode.toml";
+    test::write_text(path, text);
+    return path;
+}
+
+double rel_diff(const json& a, const json& b) { return std::abs(a.get<double>() - b.get<double>()) / std::abs(b.get<double>()); }
+
+// CVODE used to miss the contact at t = 0 and let the beam pass into the support (3.4 times the
+// exact rebound), and took 300-600 s. It must take it at t = 0 as the exact solver does and give the
+// same rebound y_max to 1e-6 relative (measured: 3e-10, in 0.4 s).
+TEST(KnownDefects, StartsInContactCvodeAgreesWithExact) {
+    const std::string exact_case = test::source_path("tests/cases/starts_in_contact.toml");
+    const json exact = simulate(exact_case, 60.0, "starts_in_contact, exact");
+    ASSERT_TRUE(exact.is_object());
+    const std::string dir = test::make_temp_dir();
+    const json cvode = simulate(cvode_copy(exact_case, dir), 300.0, "starts_in_contact, cvode");
+    fs::remove_all(dir);
+    ASSERT_TRUE(cvode.is_object());
+    ASSERT_EQ(cvode["solver"]["method"], "cvode");
+    ASSERT_EQ(exact["solver"]["method"], "exact");
+
+    ASSERT_FALSE(cvode["episodes"].empty());
+    EXPECT_EQ(cvode["episodes"][0]["t_on_s"].get<double>(), 0.0) << "the contact at t = 0 was not taken";
+    EXPECT_EQ(cvode["episodes"][0]["support"], 0);
+    ASSERT_FALSE(cvode["impacts"].empty());
+    EXPECT_EQ(cvode["impacts"][0]["t_on_s"].get<double>(), 0.0);
+    EXPECT_NEAR(cvode["impacts"][0]["v_in_m_s"].get<double>(), -0.1, 1e-6);
+    EXPECT_EQ(cvode["impacts"].size(), exact["impacts"].size());
+    const double d = rel_diff(cvode["y_max_m"], exact["y_max_m"]);
+    std::printf("starts_in_contact: y_max exact %.10g m, cvode %.10g m, relative difference %.2g\n",
+                exact["y_max_m"].get<double>(), cvode["y_max_m"].get<double>(), d);
+    EXPECT_LE(d, 1e-6);
+}
+
+// The case that hung: both solvers agree on it as on the paper's own transient (docs/model.md
+// §11.1: 83 episodes; T, T2, T_p and y_max within 5e-10).
+TEST(KnownDefects, HangNearGrazingCvodeAgreesWithExact) {
+    const std::string exact_case = test::source_path("tests/cases/hang_near_grazing.toml");
+    const json exact = simulate(exact_case, 60.0, "hang_near_grazing, exact");
+    ASSERT_TRUE(exact.is_object());
+    const std::string dir = test::make_temp_dir();
+    const json cvode = simulate(cvode_copy(exact_case, dir), 300.0, "hang_near_grazing, cvode");
+    fs::remove_all(dir);
+    ASSERT_TRUE(cvode.is_object());
+    ASSERT_EQ(cvode["solver"]["method"], "cvode");
+    EXPECT_EQ(cvode["episodes"].size(), exact["episodes"].size());
+    EXPECT_EQ(cvode["Tp_reason"], exact["Tp_reason"]);
+    for (const char* key : {"T_s", "T2_s", "Tp_s", "y_max_m"}) {
+        const double d = rel_diff(cvode[key], exact[key]);
+        std::printf("hang_near_grazing: %s relative difference %.2g\n", key, d);
+        EXPECT_LE(d, 1e-8) << key;
+    }
+}
+
+}  // namespace
+}  // namespace vi
