@@ -99,7 +99,11 @@ PointStep solve_static_lift(const Eigen::MatrixXd& K, const std::vector<ContactE
         const Eigen::VectorXd u = cs.llt.solve(shape);             // response to a unit point force
         const Eigen::VectorXd w = cs.llt.solve(cs.surface_load);   // response to the closed surfaces
         const double compliance = shape.dot(u);
-        if (!(compliance > 0.0)) throw std::runtime_error("static step: the loaded point does not move");
+        // A point so near a clamped or pinned end that its compliance underflows (x/l = 1e-300) is bad input.
+        if (!(compliance > 0.0)) {
+            throw InputError("initial.position: the point does not move under a static force (too close to a "
+                             "clamped or pinned end)");
+        }
         p.force = (target - shape.dot(w)) / compliance;
         p.state.q = p.force * u + w;
         std::vector<bool> next =
