@@ -86,6 +86,28 @@ TEST(Refusals, OutputStepTooFineForMemory) {
                     "solver.output_step", "subnormal", "simulate"});
 }
 
+// Found by the fuzz test (seed 20250611, mutants 6586 and 7513 of free_impact_prestress.toml): a
+// horizon of 30 ms, or an output step of 0.01 ns, asked for 3e6 samples and ran past 20 s.
+TEST(Refusals, MoreThanAMillionSamples) {
+    const std::string prestress = test::read_text(test::source_path("examples/paper/free_impact_prestress.toml"));
+    expect_refused({"30 ms at 10 ns", replace(prestress, "horizon = \"30 us\"", "horizon = \"30 ms\""),
+                    "solver.output_step", "at most 1e+06 samples", "simulate"});
+    expect_refused({"0.01 ns", replace(prestress, "output_step = \"10 ns\"", "output_step = \"0.01 ns\""),
+                    "solver.output_step", "3e+06 samples", "simulate"});
+}
+
+// Found by the fuzz test (seed 20250611, mutant 66): a load table naming /dev/zero was read without
+// end; a device as the case file itself too.
+TEST(Refusals, DevicesAreNotRead) {
+    expect_refused({"table /dev/zero",
+                    example_text() + "\n[[loads]]\nposition = 0.5\namplitude = \"1 uN\"\nkind = \"table\"\n"
+                                     "table = \"/dev/zero\"\n",
+                    "loads[0].table", "not a regular file", "simulate"});
+    const auto r = run_vibroimpact({"simulate", "/dev/zero"});
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err, "vibroimpact: error: /dev/zero: cannot read file (not a regular file)\n");
+}
+
 TEST(Refusals, ElementsBeyondTheDocumentedMaxima) {
     const std::string good = example_text();
     // 100000 used to give "not positive definite" (exit 1) after the eigen solve.

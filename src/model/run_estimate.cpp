@@ -125,19 +125,20 @@ std::vector<CaseProblem> check_transient_run(const Case& c, bool history, double
                            " s); above " + short_number(kMaxHorizonRatio) +
                            " times, double precision no longer resolves event times (docs/case-files.md, Limits)"});
     }
-    const double history_bytes = history || cvode ? e.history_bytes : 0.0;
-    if (history_bytes + e.solver_bytes > memory_budget) {
-        const std::string budget = "this machine allows a run " + bytes_text(memory_budget);
-        if (history_bytes > e.solver_bytes) {
-            out.push_back({"solver.output_step", short_number(e.samples) + " samples over solver.horizon (" +
-                                                     short_number(c.solver.horizon) + " s), about " +
-                                                     bytes_text(history_bytes) + " of time history (" + budget +
-                                                     "); raise output_step or shorten horizon"});
-        } else {
-            out.push_back({"beam.elements", std::to_string(static_cast<long>(e.bending_dofs)) + " bending DOFs need about " +
-                                                bytes_text(e.solver_bytes) + " of dense matrices (" + budget +
-                                                "); use fewer elements"});
-        }
+    const bool kept = history || cvode;
+    const double history_bytes = kept ? e.history_bytes : 0.0;
+    const std::string budget = "this machine allows a run " + bytes_text(memory_budget);
+    const bool over_memory = history_bytes + e.solver_bytes > memory_budget;
+    if (kept && (e.samples > kMaxSamples || (over_memory && history_bytes > e.solver_bytes))) {
+        out.push_back({"solver.output_step", short_number(e.samples) + " samples over solver.horizon (" +
+                                                 short_number(c.solver.horizon) + " s), about " +
+                                                 bytes_text(history_bytes) + " of time history (at most " +
+                                                 short_number(kMaxSamples) + " samples; " + budget +
+                                                 "): raise output_step or shorten horizon"});
+    } else if (over_memory) {
+        out.push_back({"beam.elements", std::to_string(static_cast<long>(e.bending_dofs)) +
+                                            " bending DOFs need about " + bytes_text(e.solver_bytes) +
+                                            " of dense matrices (" + budget + "): use fewer elements"});
     }
     return out;
 }

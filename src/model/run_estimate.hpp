@@ -32,6 +32,9 @@ inline constexpr double kMaxContactRatio = 1e9;
 // Every physical value (SI) and every derived scale must lie within [1/kMagnitudeLimit, kMagnitudeLimit]
 // in magnitude (or be zero where zero is allowed): products of a few of them stay inside double's range.
 inline constexpr double kMagnitudeLimit = 1e100;
+// Most samples of a time history: 1.5e6 samples took 17 s and 1 GB (most of it writing a 311 MB
+// CSV), more than any plot or spectrum of one run needs; a longer history costs minutes.
+inline constexpr double kMaxSamples = 1e6;
 // Bytes per value of the sampled history: the double, its row in the CSV table and its text.
 inline constexpr double kHistoryBytesPerValue = 60.0;
 // Bytes per n^2 of a transient: dense M, K, modes, state decompositions (measured: 0.8 GB at n = 1000,
@@ -62,9 +65,9 @@ RunEstimate estimate_run(const Case& c);
 double memory_budget_bytes();
 
 // Problems of a transient of c that this machine or double precision cannot carry out: too many
-// elements for the method, more memory than `memory_budget` bytes (history only when kept: the
-// exact solver keeps none when `history` is false, CVODE always does), a horizon beyond
-// kMaxHorizonRatio time scales. Empty when the transient may run.
+// elements for the method, a horizon beyond kMaxHorizonRatio time scales, more than kMaxSamples
+// samples or more memory than `memory_budget` bytes (the history counts only when kept: the exact
+// solver keeps none when `history` is false, CVODE always does). Empty when the transient may run.
 std::vector<CaseProblem> check_transient_run(const Case& c, bool history, double memory_budget);
 
 // A byte count as text with its unit, e.g. "12 TB".

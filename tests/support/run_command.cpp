@@ -5,7 +5,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
+#include <thread>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -66,7 +68,47 @@ CommandResult reap(pid_t pid, const std::string& dir) {
     return r;
 }
 
+// Waits for pid until limit_seconds have passed, then kills it; polls every 2 ms (the loop ends at the
+// deadline whatever the child does).
+CommandResult reap_within(pid_t pid, const std::string& dir, double limit_seconds) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    const auto deadline = start + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(limit_seconds));
+    int status = 0;
+    bool done = false;
+    bool killed = false;
+    while (!done) {
+        const pid_t r = waitpid(pid, &status, WNOHANG);
+        if (r == pid || r < 0) {
+            done = true;
+        } else if (Clock::now() >= deadline) {
+            kill(pid, SIGKILL);
+            waitpid(pid, &status, 0);
+            killed = true;
+            done = true;
+        } else {
+            std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        }
+    }
+    CommandResult res;
+    res.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+    res.out = read_text(dir + "/stdout");
+    res.err = read_text(dir + "/stderr");
+    res.timed_out = killed;
+    res.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    return res;
+}
+
 }  // namespace
+
+CommandResult run_vibroimpact_limited(const std::vector<std::string>& args, double limit_seconds) {
+    std::vector<std::string> argv{VI_EXE};
+    argv.insert(argv.end(), args.begin(), args.end());
+    const std::string dir = make_temp_dir();
+    const CommandResult r = reap_within(spawn(argv, {}, dir), dir, limit_seconds);
+    std::filesystem::remove_all(dir);
+    return r;
+}
 
 CommandResult run_program(const std::vector<std::string>& argv, const std::vector<std::string>& env) {
     const std::string dir = make_temp_dir();

@@ -13,10 +13,16 @@ struct CommandResult {
     int exit_code = -1;
     std::string out;  // standard output
     std::string err;  // standard error
+    bool timed_out = false;  // killed (SIGKILL) at its time limit; exit_code is then 128 + 9
+    double seconds = 0.0;    // wall-clock time until it ended or was killed [s]
 };
 
 // Runs the built vibroimpact executable with args (no shell involved) and waits for it.
 CommandResult run_vibroimpact(const std::vector<std::string>& args);
+
+// Runs the built vibroimpact executable with args, killing it (SIGKILL) when it has not ended after
+// limit_seconds of wall-clock time: a hang is reported as timed_out instead of hanging the test.
+CommandResult run_vibroimpact_limited(const std::vector<std::string>& args, double limit_seconds);
 
 // Runs argv[0] (searched on PATH when it has no slash) with the rest of argv and waits for it;
 // env holds extra "NAME=value" entries for the child's environment.
