@@ -8,7 +8,8 @@
 //
 // Deterministic: seed and count are fixed (printed). Longer runs: VI_FUZZ_MUTANTS=N (count),
 // VI_FUZZ_SECONDS=S (run until S seconds have passed instead, at most 10^7 mutants), VI_FUZZ_SEED=N
-// (another sequence), VI_FUZZ_ONLY=I (replay mutant I alone).
+// (another sequence), VI_FUZZ_ONLY=I (replay mutant I alone, and save it), VI_FUZZ_VERBOSE=1 (one line per
+// mutant: its exit code and message, to review the messages).
 
 #include <gtest/gtest.h>
 
@@ -38,7 +39,7 @@ constexpr long kMaxMutants = 10000000;
 // A run that has not ended by the limit is a hang, a defect. The sanitizers slow a run 3 to 10 times.
 #if VI_SANITIZE_BUILD
 constexpr double kLimitSeconds = 60.0;
-constexpr long kDefaultMutants = 200;  // about 3 minutes under AddressSanitizer + UBSan
+constexpr long kDefaultMutants = 1200;  // about 3 minutes under AddressSanitizer + UBSan
 #else
 constexpr double kLimitSeconds = 20.0;
 constexpr long kDefaultMutants = 3000;  // about 1.5 minutes in Release
@@ -127,6 +128,7 @@ TEST(FuzzCli, EveryMutantEndsInTimeWithExitZeroOneOrTwo) {
     const long seconds = env_number("VI_FUZZ_SECONDS", 0);
     const long mutants = seconds > 0 ? kMaxMutants : std::min(env_number("VI_FUZZ_MUTANTS", kDefaultMutants), kMaxMutants);
     const long only = env_number("VI_FUZZ_ONLY", -1);
+    const bool verbose = env_number("VI_FUZZ_VERBOSE", 0) > 0;
     std::printf("fuzz: seed %llu, %s\n", static_cast<unsigned long long>(seed),
                 seconds > 0 ? ("for " + std::to_string(seconds) + " s").c_str()
                             : (std::to_string(mutants) + " mutants").c_str());
@@ -151,9 +153,15 @@ TEST(FuzzCli, EveryMutantEndsInTimeWithExitZeroOneOrTwo) {
         const std::string path = dir + "/case.toml";
         const std::string out = dir + "/out";
         test::write_text(path, m.text);
+        if (only >= 0) std::printf("fuzz: mutant %ld saved as %s\n", i, save_finding(m, seed, i).c_str());
         const CommandResult r = test::run_vibroimpact_limited({command, path, "--out", out}, kLimitSeconds);
         ++tried;
         slowest = std::max(slowest, r.seconds);
+        if (verbose) {
+            const std::vector<std::string> err = lines_of(r.err);
+            std::printf("fuzz: mutant %ld %s exit %d: %s\n", i, command.c_str(), r.exit_code,
+                        err.empty() ? "" : err.back().substr(0, 200).c_str());
+        }
         std::string reason = defect(r, command, out);
         for (const KnownFinding& k : kKnownFindings) {
             if (!reason.empty() && k.matches(m, r)) {

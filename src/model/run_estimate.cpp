@@ -76,14 +76,24 @@ RunEstimate estimate_run(const Case& c) {
     // The slowest motions fix nothing; the shortest period to resolve is mode 1's, a contact's with
     // mode 1's smallest effective mass (rho A l / 4, at a free end), or a harmonic load's.
     double tau = e.omega1 > 0.0 ? 2.0 * std::numbers::pi / e.omega1 : 0.0;
-    for (const Support& s : c.supports) {
-        if (s.stiffness > 0.0) tau = std::min(tau, 2.0 * std::numbers::pi * std::sqrt(rho_a * l / 4.0 / s.stiffness));
-    }
-    for (const PointLoad& p : c.loads) {
-        if (p.time.kind == TimeFunction::Kind::harmonic && p.time.frequency_hz > 0.0) {
-            tau = std::min(tau, 1.0 / p.time.frequency_hz);
+    std::string source = "the first free period";
+    for (std::size_t k = 0; k < c.supports.size(); ++k) {
+        const double kc = c.supports[k].stiffness;
+        if (!(kc > 0.0)) continue;
+        const double period = 2.0 * std::numbers::pi * std::sqrt(rho_a * l / 4.0 / kc);
+        if (period < tau) {
+            tau = period;
+            source = "the contact period of supports[" + std::to_string(k) + "]";
         }
     }
+    for (std::size_t k = 0; k < c.loads.size(); ++k) {
+        const TimeFunction& g = c.loads[k].time;
+        if (g.kind == TimeFunction::Kind::harmonic && g.frequency_hz > 0.0 && 1.0 / g.frequency_hz < tau) {
+            tau = 1.0 / g.frequency_hz;
+            source = "the period of loads[" + std::to_string(k) + "]";
+        }
+    }
+    e.time_scale_source = source;
     e.shortest_time_scale = tau;
 
     const SolverSettings& s = c.solver;
@@ -121,8 +131,8 @@ std::vector<CaseProblem> check_transient_run(const Case& c, bool history, double
     if (tau > 0.0 && c.solver.horizon > kMaxHorizonRatio * tau) {
         out.push_back({"solver.horizon",
                        short_number(c.solver.horizon) + " s is " + short_number(c.solver.horizon / tau) +
-                           " times the shortest time scale to resolve (" + short_number(tau) +
-                           " s); above " + short_number(kMaxHorizonRatio) +
+                           " times the shortest time scale to resolve (" + e.time_scale_source + ", " +
+                           short_number(tau) + " s); above " + short_number(kMaxHorizonRatio) +
                            " times, double precision no longer resolves event times (docs/case-files.md, Limits)"});
     }
     const bool kept = history || cvode;

@@ -52,6 +52,7 @@ struct RunEstimate {
     double omega_top = 0.0;            // bound of the mesh's highest bending frequency [rad/s]
     double bending_stiffness = 0.0;    // EI / l^3 [N/m]
     double shortest_time_scale = 0.0;  // the shortest period the solvers must resolve [s]
+    std::string time_scale_source;     // what sets it, e.g. "the first free period", "supports[0]'s contact"
     double samples = 0.0;              // time-history samples over the horizon
     double history_bytes = 0.0;        // memory of that history [bytes]
     double solver_bytes = 0.0;         // memory of the transient's dense matrices [bytes]
