@@ -39,7 +39,7 @@ constexpr long kMaxMutants = 10000000;
 // A run that has not ended by the limit is a hang, a defect. The sanitizers slow a run 3 to 10 times.
 #if VI_SANITIZE_BUILD
 constexpr double kLimitSeconds = 60.0;
-constexpr long kDefaultMutants = 1200;  // about 3 minutes under AddressSanitizer + UBSan
+constexpr long kDefaultMutants = 800;  // 2 to 4 minutes under AddressSanitizer + UBSan
 #else
 constexpr double kLimitSeconds = 20.0;
 constexpr long kDefaultMutants = 3000;  // about 1.5 minutes in Release
