@@ -15,7 +15,8 @@ namespace vi {
 // m = 2000 the first frequency has lost 3e-4 to it, at 5000 2 %, at 10000 16 %.
 inline constexpr int kMaxElements = 2000;
 // Most elements of a transient with the exact solver: it decomposes dense n x n systems (n ~ 2m),
-// O(n^3) time; m = 400 with two supports took 28 s and 1 GB, m = 500 fails (defective eigenvalues).
+// O(n^3) time; m = 400 with two supports took 28 s and 1 GB, m = 500 with two ended "not
+// diagonalisable" after 67 s, m = 1000 after 9 minutes and 4.3 GB (docs/case-files.md, Limits).
 inline constexpr int kMaxExactElements = 400;
 // Most elements of a transient with CVODE (dense Jacobian, rtol 1e-10): m = 50 takes about 2.5
 // minutes on the paper's transient, m = 100 more than 10.
