@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "io/case_reader.hpp"
 #include "io/output_files.hpp"
+#include "model/input_error.hpp"
 #include "modal/modal_analysis.hpp"
 #include "report/modal_output.hpp"
 #include "support_model_option.hpp"
@@ -31,7 +32,12 @@ CommandBody add_modes_command(CLI::App& app) {
 
     return [opt]() {
         const Case c = read_case_file(opt->case_path);
-        const ModalStudy study = modal_study(c, opt->count, parse_support_model(opt->support_model));
+        ModalStudy study;
+        try {
+            study = modal_study(c, opt->count, parse_support_model(opt->support_model));
+        } catch (const InputError& e) {
+            throw locate_in_case(c, e);
+        }
         if (!opt->out_dir.empty()) write_output_files(opt->out_dir, modal_study_files(study));
         if (opt->json) {
             std::printf("%s\n", modal_study_json(study).dump(2).c_str());

@@ -48,7 +48,13 @@ CommandBody add_support_scan_command(CLI::App& app) {
         }
         const Case c = read_case_file(opt->case_path);
         if (c.supports.empty()) throw InputError(opt->case_path + ": supports: the case has no support to move");
-        const auto points = support_scan(c, positions, opt->count, parse_support_model(opt->support_model));
+        std::vector<SupportScanPoint> points;
+        try {
+            points = support_scan(c, positions, opt->count, parse_support_model(opt->support_model));
+        } catch (const InputError& e) {
+            // The case was checked as read: what fails now is a position of the scan.
+            throw InputError("--positions: " + std::string(e.what()));
+        }
         // A coarse mesh may have fewer bending modes than asked for: report what exists.
         std::size_t count = static_cast<std::size_t>(opt->count);
         for (const auto& pt : points) count = std::min(count, pt.study.ratios.size());

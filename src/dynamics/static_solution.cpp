@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "model/input_error.hpp"
 #include "model/run_control.hpp"
 
 namespace vi {
@@ -176,7 +177,11 @@ StaticLift solve_static_lift(const SparseMatrix& K, const ForceSet& forces, cons
         const Eigen::VectorXd u = solver.solve(shape);
         const Eigen::VectorXd w = solver.solve(-r);
         const double compliance = shape.dot(u);
-        if (!(compliance > 0.0)) throw std::runtime_error("static step: the loaded point does not move");
+        // A point so near a clamped or pinned end that its compliance underflows (x/l = 1e-300).
+        if (!(compliance > 0.0)) {
+            throw InputError("initial.position: the point does not move under a static force (too close to a "
+                             "clamped or pinned end)");
+        }
         const double dP = (target - shape.dot(s.q) - shape.dot(w)) / compliance;
         s.q += w + dP * u;
         out.force += dP;

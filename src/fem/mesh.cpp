@@ -2,9 +2,48 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
+#include <string>
+
+#include "model/input_error.hpp"
 
 namespace vi {
+namespace {
+
+std::string number(double v, int digits = 2) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    return buf;
+}
+
+// A node placed for a support (or two supports close together) can make an element so short that
+// its stiffness EI/L^3 swamps the rest of K; refused on the latest support at either of its nodes.
+void check_shortest_element(const Mesh& mesh, const Beam& beam) {
+    const double l = beam.length, h = l / beam.elements;
+    int shortest = 0;
+    for (int e = 1; e < mesh.element_count(); ++e) {
+        if (mesh.element_length(e) < mesh.element_length(shortest)) shortest = e;
+    }
+    const double len = mesh.element_length(shortest);
+    const double condition = 5.0 * (l / len) * (l / len) * (l / len) * (l / h);
+    if (condition <= kMaxMeshCondition) return;
+    int support = -1;
+    for (std::size_t k = 0; k < mesh.support_nodes.size(); ++k) {
+        const int node = mesh.support_nodes[k];
+        if (node == shortest || node == shortest + 1) support = static_cast<int>(k);
+    }
+    const std::string key = support < 0 ? "beam.elements" : "supports[" + std::to_string(support) + "].position";
+    const double least = std::cbrt(5.0 * (l / h) / kMaxMeshCondition);
+    throw InputError(key + ": its node makes an element of " + number(len / l) + " l between x/l = " +
+                     number(mesh.x[static_cast<std::size_t>(shortest)] / l, 9) + " and " +
+                     number(mesh.x[static_cast<std::size_t>(shortest) + 1] / l, 9) +
+                     ", too short for double precision (stiffness condition about " + number(condition) +
+                     ", at most " + number(kMaxMeshCondition) + "): keep supports at least " + number(least) +
+                     " l from an end and from each other, or at the same place");
+}
+
+}  // namespace
 
 Mesh build_mesh(const Beam& beam, const std::vector<Support>& supports) {
     if (beam.elements < 1) throw std::invalid_argument("build_mesh: at least one element is needed");
@@ -47,6 +86,7 @@ Mesh build_mesh(const Beam& beam, const std::vector<Support>& supports) {
         auto it = std::lower_bound(mesh.x.begin(), mesh.x.end(), x0 - merge);
         mesh.support_nodes.push_back(static_cast<int>(it - mesh.x.begin()));
     }
+    check_shortest_element(mesh, beam);
     return mesh;
 }
 

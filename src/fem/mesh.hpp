@@ -24,7 +24,13 @@ inline constexpr double kNodeMergeTolerance = 1e-9;
 // (elements stay within 0.9..1.1 h there); farther away it gets a node of its own, inserted.
 inline constexpr double kNodeMoveFraction = 0.1;
 
-// Builds the mesh of m uniform elements and puts a node exactly at every support position.
+// Largest estimated condition of the bending stiffness, 5 l^4 / (L_min^3 h) (h = l/m, L_min the shortest
+// element; 5 m^4 for a uniform mesh, docs/validation.md §1): beyond it K is lost to roundoff (a
+// support 1e-5 l from the free end of m = 50 gives 2.5e17, and "not positive definite").
+inline constexpr double kMaxMeshCondition = 1e15;
+
+// Builds the mesh of m uniform elements and puts a node exactly at every support position. Throws
+// InputError on the support whose node makes an element too short for kMaxMeshCondition.
 Mesh build_mesh(const Beam& beam, const std::vector<Support>& supports);
 
 // Index of the element holding coordinate x [m] and the local coordinate xi in [0, 1] there.

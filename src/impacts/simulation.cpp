@@ -6,6 +6,7 @@
 
 #include "dynamics/cvode_solver.hpp"
 #include "model/input_error.hpp"
+#include "model/run_estimate.hpp"
 
 namespace vi {
 
@@ -26,6 +27,9 @@ bool use_exact(const Case& c, const TransientProblem& p) {
 
 SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
     if (!(c.solver.horizon > 0.0)) throw InputError("solver.horizon: required for a transient (e.g. \"200 us\")");
+    // What this machine or double precision cannot do is refused before any work.
+    const auto limits = check_transient_run(c, o.history, memory_budget_bytes());
+    if (!limits.empty()) throw InputError(limits.front().key + ": " + limits.front().message);
     SimulationRun run;
     run.built = build_transient_problem(c);
     const TransientProblem& p = run.built.problem;

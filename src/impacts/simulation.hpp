@@ -22,7 +22,8 @@ struct SimulationOptions {
 };
 
 // Runs the case's transient. Throws InputError when the case cannot run (no horizon, a horizon too
-// short to see the first impact) and std::runtime_error on numerical trouble.
+// short to see the first impact, a limit of check_transient_run, checked before any work) and
+// std::runtime_error on numerical trouble.
 SimulationRun run_simulation(const Case& c, const SimulationOptions& o = {});
 
 }  // namespace vi

@@ -1,8 +1,12 @@
 #include "model/case_checks.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <string>
+
+#include "model/magnitude_checks.hpp"
+#include "model/run_estimate.hpp"
 
 namespace vi {
 namespace {
@@ -167,7 +171,11 @@ std::vector<CaseProblem> check_case(const Case& c) {
     require_positive(out, "beam.width", c.beam.width);
     require_positive(out, "beam.thickness", c.beam.thickness);
     if (c.beam.elements < 1) out.push_back({"beam.elements", "must be at least 1"});
-    if (c.beam.elements > 100000) out.push_back({"beam.elements", "must be at most 100000"});
+    if (c.beam.elements > kMaxElements) {
+        out.push_back({"beam.elements", "must be at most " + std::to_string(kMaxElements) +
+                                            ": the roundoff of the stiffness matrix grows like 5 m^4, so finer meshes "
+                                            "only lose digits (docs/case-files.md, Limits)"});
+    }
     if (!bending_is_restrained(c.beam.left, c.beam.right)) {
         out.push_back({"beam.right",
                        "the end conditions leave the beam free to move as a rigid body "
@@ -183,7 +191,15 @@ std::vector<CaseProblem> check_case(const Case& c) {
         out.push_back({"material.poisson_ratio", "must lie in (-1, 0.5)"});
     }
 
-    for (std::size_t i = 0; i < c.supports.size(); ++i) {
+    // Checked before the pairwise checks below, which are quadratic in the count.
+    const std::size_t supports = std::min(c.supports.size(), kMaxSupports);
+    if (c.supports.size() > kMaxSupports) {
+        out.push_back({"supports[" + std::to_string(kMaxSupports) + "]",
+                       "a case may have at most " + std::to_string(kMaxSupports) + " supports (it has " +
+                           std::to_string(c.supports.size()) + "): every set of closed contacts is a dense eigen "
+                           "problem (docs/case-files.md, Limits)"});
+    }
+    for (std::size_t i = 0; i < supports; ++i) {
         const Support& s = c.supports[i];
         if (!std::isfinite(s.position)) {
             out.push_back({support_key(i, "position"), "must be a finite number"});
@@ -204,7 +220,7 @@ std::vector<CaseProblem> check_case(const Case& c) {
         }
     }
 
-    check_opposite_supports(out, c.supports);
+    if (c.supports.size() <= kMaxSupports) check_opposite_supports(out, c.supports);
 
     const RayleighDamping& d = c.damping;
     if (d.from_ratios) {
@@ -219,6 +235,7 @@ std::vector<CaseProblem> check_case(const Case& c) {
     check_initial(out, c);
     for (std::size_t k = 0; k < c.loads.size(); ++k) check_load(out, c, k);
     check_solver(out, c.solver);
+    if (c.supports.size() <= kMaxSupports) check_magnitudes(out, c);
     return out;
 }
 

@@ -1,0 +1,166 @@
+#include "model/magnitude_checks.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <initializer_list>
+#include <string>
+#include <utility>
+
+#include "model/run_estimate.hpp"
+
+// Why a window and not just "finite": the solvers form products of a few of these values (EI = E w t^3
+// / 12, omega^2, energies 1/2 k q^2, the state matrix's omega^2 next to 1). A value of 1e-320 is
+// subnormal and has lost its digits; 1e308 overflows at the first product. Nothing physical in SI
+// units comes near 1e+-100, so the window refuses only values that cannot be computed with.
+
+namespace vi {
+namespace {
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", v);
+    return buf;
+}
+
+const std::string kWindow = "1e-100 to 1e100";
+
+bool in_window(double v) { return std::abs(v) >= 1.0 / kMagnitudeLimit && std::abs(v) <= kMagnitudeLimit; }
+
+// A value as given: zero is left to the key's own checks (where zero is allowed it means "none").
+void value(std::vector<CaseProblem>& out, const std::string& key, double v) {
+    if (!std::isfinite(v) || v == 0.0 || in_window(v)) return;
+    out.push_back({key, number(v) + " is outside the magnitudes double precision computes with here (" + kWindow +
+                            " in SI units" + (std::abs(v) < 2.2250738585072014e-308 ? ", and subnormal" : "") +
+                            "; docs/case-files.md, Limits)"});
+}
+
+// A derived scale: reported on the contributing key whose value lies farthest from 1 (in decades),
+// the one most likely written in the wrong unit.
+void derived(std::vector<CaseProblem>& out, const char* what, double v,
+             std::initializer_list<std::pair<const char*, double>> from) {
+    if (std::isfinite(v) && in_window(v)) return;
+    const char* key = from.begin()->first;
+    double worst = -1.0;
+    for (const auto& [k, x] : from) {
+        const double decades = std::abs(std::log10(std::abs(x)));
+        if (decades > worst) {
+            worst = decades;
+            key = k;
+        }
+    }
+    out.push_back({key, "gives " + std::string(what) + " = " + number(v) + ", outside " + kWindow +
+                            " (SI): the problem cannot be computed in double precision (docs/case-files.md, Limits)"});
+}
+
+bool usable(double v) { return std::isfinite(v) && v > 0.0 && in_window(v); }
+
+void check_values(std::vector<CaseProblem>& out, const Case& c) {
+    value(out, "beam.length", c.beam.length);
+    value(out, "beam.width", c.beam.width);
+    value(out, "beam.thickness", c.beam.thickness);
+    value(out, "material.youngs_modulus", c.material.youngs_modulus);
+    value(out, "material.density", c.material.density);
+    for (std::size_t i = 0; i < c.supports.size(); ++i) {
+        const Support& s = c.supports[i];
+        const std::string at = "supports[" + std::to_string(i) + "].";
+        value(out, at + "position", s.position);
+        value(out, at + (s.surface_key.empty() ? "gap" : s.surface_key), s.surface);
+        value(out, at + "stiffness", s.stiffness);
+        value(out, at + "damping", s.damping);
+        if (s.damping_ratio) value(out, at + "damping_ratio", *s.damping_ratio);
+    }
+    const RayleighDamping& d = c.damping;
+    if (d.from_ratios) {
+        value(out, "damping.ratios", d.ratio1);
+        value(out, "damping.ratios", d.ratio2);
+    } else {
+        value(out, "damping.alpha", d.alpha);
+        value(out, "damping.beta", d.beta);
+    }
+    const InitialState& in = c.initial;
+    value(out, "initial.position", in.position);
+    if (in.kind == InitialState::Kind::displacement) value(out, "initial.displacement", in.displacement);
+    if (in.kind == InitialState::Kind::force) value(out, "initial.force", in.force);
+    if (in.velocity_kind != InitialState::Velocity::none) value(out, "initial.velocity", in.velocity);
+    for (std::size_t k = 0; k < c.loads.size(); ++k) {
+        const PointLoad& p = c.loads[k];
+        const std::string at = "loads[" + std::to_string(k) + "].";
+        value(out, at + "position", p.position);
+        value(out, at + "amplitude", p.amplitude);
+        const TimeFunction& g = p.time;
+        if (g.kind == TimeFunction::Kind::step) value(out, at + "t_on", g.t_on);
+        if (g.kind == TimeFunction::Kind::harmonic) {
+            value(out, at + "frequency", g.frequency_hz);
+            value(out, at + "phase", g.phase);
+            value(out, at + "offset", g.offset);
+        }
+        for (std::size_t r = 0; r < g.times.size() && r < g.values.size(); ++r) {
+            value(out, at + "table", g.times[r]);
+            value(out, at + "table", g.values[r]);
+        }
+    }
+    const SolverSettings& s = c.solver;
+    value(out, "solver.horizon", s.horizon);
+    value(out, "solver.output_step", s.output_step);
+    value(out, "solver.group_gap", s.group_gap);
+    value(out, "solver.settle_tolerance", s.settle_tolerance);
+    value(out, "solver.rtol", s.rtol);
+}
+
+// The beam's derived scales and the supports against the beam; only once its own values are usable.
+void check_scales(std::vector<CaseProblem>& out, const Case& c) {
+    const Beam& b = c.beam;
+    const double l = b.length, w = b.width, t = b.thickness, e = c.material.effective_modulus();
+    const double rho = c.material.density;
+    if (!(usable(l) && usable(w) && usable(t) && usable(e) && usable(rho)) || b.elements < 1) return;
+    const std::pair<const char*, double> L{"beam.length", l}, W{"beam.width", w}, T{"beam.thickness", t},
+        E{"material.youngs_modulus", e}, R{"material.density", rho};
+    const RunEstimate est = estimate_run(c);
+    const std::size_t before = out.size();
+    derived(out, "the section area w t [m^2]", b.area(), {W, T});
+    derived(out, "the second moment w t^3/12 [m^4]", b.second_moment(), {T, W});
+    derived(out, "the bending stiffness EI [N m^2]", e * b.second_moment(), {E, T, W});
+    derived(out, "the mass per length rho A [kg/m]", rho * b.area(), {R, W, T});
+    derived(out, "the beam's mass rho A l [kg]", rho * b.area() * l, {R, W, T, L});
+    derived(out, "the stiffness scale EI/l^3 [N/m]", est.bending_stiffness, {E, W, T, L});
+    if (est.omega1 > 0.0) derived(out, "omega_1^2 [1/s^2]", est.omega1 * est.omega1, {E, R, T, L});
+    derived(out, "the mesh's highest omega^2 [1/s^2]", est.omega_top * est.omega_top, {E, R, T, L});
+    if (out.size() != before) return;
+
+    const double k_beam = est.bending_stiffness;
+    const double rho_a_l = rho * b.area() * l;
+    for (std::size_t i = 0; i < c.supports.size(); ++i) {
+        const Support& s = c.supports[i];
+        const std::string at = "supports[" + std::to_string(i) + "].";
+        if (!usable(s.stiffness)) continue;
+        const double stiff = s.stiffness / k_beam;
+        if (stiff > kMaxContactRatio) {
+            out.push_back({at + "stiffness", number(s.stiffness) + " N/m is " + number(stiff) +
+                                                 " times the beam's EI/l^3 = " + number(k_beam) +
+                                                 " N/m; above 1e9 times the contact force is lost to roundoff "
+                                                 "(docs/case-files.md, Limits)"});
+            continue;
+        }
+        // The damper's force at omega_1 against the same bound; a ratio with mode 1's smallest
+        // effective mass (rho A l / 4) in place of the one at the support.
+        const bool ratio = s.damping_ratio.has_value();
+        const double cc = ratio ? 2.0 * *s.damping_ratio * std::sqrt(s.stiffness * rho_a_l / 4.0) : s.damping;
+        if (!std::isfinite(cc) || cc < 0.0 || (ratio && !in_window(*s.damping_ratio) && *s.damping_ratio != 0.0)) continue;
+        const double damp = cc * est.omega1 / k_beam;
+        if (damp > kMaxContactRatio) {
+            out.push_back({at + (ratio ? "damping_ratio" : "damping"),
+                           "gives a damper force at omega_1 " + number(damp) + " times the beam's EI/l^3 = " +
+                               number(k_beam) + " N/m; above 1e9 times the contact force is lost to roundoff "
+                               "(docs/case-files.md, Limits)"});
+        }
+    }
+}
+
+}  // namespace
+
+void check_magnitudes(std::vector<CaseProblem>& out, const Case& c) {
+    check_values(out, c);
+    check_scales(out, c);
+}
+
+}  // namespace vi

@@ -1,0 +1,18 @@
+#pragma once
+// Checks that a case's numbers leave a problem double precision can compute: every value and derived
+// scale of a sane magnitude, contacts not too stiff for the beam (docs/case-files.md, "Limits").
+
+#include <vector>
+
+#include "model/case.hpp"
+#include "model/case_checks.hpp"
+
+namespace vi {
+
+// Appends the magnitude problems of c to out: a nonzero value (SI) or a derived scale of the beam
+// (A, I, EI, rho A, its mass, EI/l^3, omega_1^2, the mesh's highest omega^2) outside
+// [1/kMagnitudeLimit, kMagnitudeLimit]; a support stiffer than kMaxContactRatio EI/l^3, or whose damper
+// at omega_1 is. Values that are not finite or have the wrong sign are left to check_case's own checks.
+void check_magnitudes(std::vector<CaseProblem>& out, const Case& c);
+
+}  // namespace vi
