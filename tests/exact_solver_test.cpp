@@ -5,6 +5,7 @@
 #include <limits>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <stdexcept>
 
@@ -152,6 +153,36 @@ TEST(ExactSolver, FineMeshWithOverdampedHighModes) {
         return e.kinetic + e.strain + e.contact_spring + e.rayleigh_dissipated + e.contact_dissipated - e.external_work;
     };
     EXPECT_LT(std::abs(total(r.final_energy) - total(r.initial_energy)) / total(r.initial_energy), 1e-8);
+}
+
+}  // namespace
+}  // namespace vi
+
+namespace vi {
+namespace {
+
+// The cache of decomposed contact states is bounded: with room for none, every state met again is
+// decomposed again, and the transient is the same to the last bit.
+TEST(ExactSolver, StateCacheBoundEvictsWithoutChangingTheResult) {
+    PiecewiseLinearProblem p = test::cantilever_drop(10, 1000.0, 2e-7, 1e-6, 0.0, 0.0, 30e-6);
+    ContactElement second = p.contacts[0];
+    second.dof = p.contacts[0].dof - 2;  // the next node inwards
+    second.surface = -0.3e-6;
+    p.contacts.push_back(second);
+    p.active0 = {false, false};
+    const TransientResult kept = solve_exact(p);
+    ExactOptions tight;
+    tight.state_cache_bytes = 1;
+    const TransientResult evicted = solve_exact(p, tight);
+    ASSERT_GE(kept.episodes.size(), 4u);
+    EXPECT_GT(evicted.stats.decompositions, kept.stats.decompositions);
+    ASSERT_EQ(evicted.episodes.size(), kept.episodes.size());
+    for (std::size_t e = 0; e < kept.episodes.size(); ++e) {
+        EXPECT_EQ(evicted.episodes[e].t_on, kept.episodes[e].t_on);
+        EXPECT_EQ(evicted.episodes[e].t_off, kept.episodes[e].t_off);
+    }
+    EXPECT_EQ(evicted.history.tip_v, kept.history.tip_v);
+    std::printf("states decomposed: %d kept, %d with no room\n", kept.stats.decompositions, evicted.stats.decompositions);
 }
 
 }  // namespace

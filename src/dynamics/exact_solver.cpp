@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 #include <limits>
+#include <sstream>
 #include <string>
 
 #include "dynamics/event_search.hpp"
@@ -19,6 +20,20 @@ namespace vi {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+// The motion counts as at rest below this fraction of the largest motion energy seen (an amplitude
+// 1e-15 of the largest: the roundoff of the state itself).
+constexpr double kRestEnergy = 1e-30;
+// A closed contact rests firmly when its equilibrium penetration exceeds this fraction of the
+// largest penetration or gap it has had: far above roundoff (1e-16), far below any prestress.
+constexpr double kFirmPenetration = 1e-9;
+// The constant part of a signal in a piece with constant forcing: its value at equilibrium.
+double constant_part(const ExpSignal& f) {
+    double v = 0.0;
+    for (const ExpTerm& term : f.terms) {
+        if (term.s == cd(0.0) && term.power == 0) v += term.coef.real();
+    }
+    return v;
+}
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Largest value of f over [0, tau_end] and where, to rel_tol of the maximum itself: 1e-9 for y_max
@@ -92,6 +107,22 @@ std::optional<Tangency> resolve_tangency(const ExpSignal& F, const ExpSignal& d,
     return std::nullopt;
 }
 
+// What to change when contact states repeat at one instant (see the caller).
+std::string endless_switching_message(const PiecewiseLinearProblem& p, int only, int who, double t) {
+    const std::string at = " switches without end at t = " + std::to_string(t * 1e6) + " us (zero-length contact states repeat)";
+    if (only >= 0) {
+        const ContactElement& ce = p.contacts[static_cast<std::size_t>(only)];
+        const std::string k = "supports[" + std::to_string(only) + "]";
+        std::ostringstream msg;
+        msg << "transient: " << k << at << ": its damper (Cc = " << ce.damping << " N s/m, Cc/Kc = " << ce.damping / ce.stiffness * 1e6
+            << " us) stops the contact point like a plastic stop, and the sign of its force at the opening is roundoff; lower "
+            << k << ".damping_ratio (or .damping) or use fewer beam.elements";
+        return msg.str();
+    }
+    return "transient: " + (who >= 0 ? "supports[" + std::to_string(who) + "]" : std::string("a support")) + at +
+           "; give the supports some damping (damping_ratio) or move them apart";
+}
+
 }  // namespace
 
 TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions& o) {
@@ -102,7 +133,7 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions&
     res.t_end = p.t_end;
     // Decomposition time: the base modes here, each contact state inside the model (on first use).
     const auto t_base = Clock::now();
-    ExactModel model(p, o.energy);
+    ExactModel model(p, o.energy, o.state_cache_bytes);
     const double base_s = seconds_since(t_base);
 
     const int nc = static_cast<int>(p.contacts.size());
@@ -140,9 +171,12 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions&
     long next_sample = 0;
     EnergyLedger ledger;
     int zero_length_run = 0;
+    int zero_length_support = -1;  // the one support switching in that run, or -2 for several
     UnprovenSteps unproven;
     double t = 0.0;
     long pieces = 0;
+    double largest_motion = 0.0;
+    std::vector<double> penetration_scale(static_cast<std::size_t>(nc), 0.0);
     int last_switch = -1;       // the contact that switched last, and when
     double last_switch_t = -1.0;
 
@@ -168,6 +202,37 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions&
         const PieceSolution& s = model.piece(active, x, t, piece_end);
         res.stats.propagation_s += seconds_since(t_piece) - (model.decomposition_seconds() - dec_before);
         const double span = piece_end - t;
+        // At rest: with nothing left to change the forcing, a motion whose energy about this piece's
+        // equilibrium is below roundoff of the largest motion seen (amplitude 1e-15) has nothing left
+        // to do but decay. Searching on would only chase contact switches at roundoff (a zero-gap
+        // support, where the equilibrium lies on the switching surface, after a few thousand periods);
+        // the rest of the horizon is this piece, sampled, and the summary says from when.
+        // A closed contact whose equilibrium force is at roundoff (the equilibrium on its switching
+        // surface) is not resting on it: the roundoff switch that opens it comes next, and the rest
+        // is declared in the open state, so that a beam merely touching a zero-gap support at rest
+        // does not count as lasting contact.
+        bool firm = true;
+        for (int c = 0; c < nc; ++c) {
+            const ExpSignal& d = s.penetration(c);
+            auto& scale = penetration_scale[static_cast<std::size_t>(c)];
+            scale = std::max(scale, d.bound(0.0, 0.0, 0));
+            if (active[static_cast<std::size_t>(c)] && constant_part(d) <= kFirmPenetration * scale) firm = false;
+        }
+        if (const double motion = s.motion_energy(); motion >= 0.0) {
+            largest_motion = std::max(largest_motion, motion);
+            if (firm && piece_end == p.t_end && motion <= kRestEnergy * largest_motion) {
+                while (next_sample < n_samples) {
+                    const double ts = std::min(next_sample * dt_out, p.t_end);
+                    s.sample(ts - t, ts, active, res.history, o.energy, ledger);
+                    if ((++next_sample & 1023) == 0) check_run();
+                }
+                if (o.energy) s.accumulate_dissipation(span, ledger);
+                x = s.state_at(span);
+                res.stats.at_rest_from = t;
+                t = p.t_end;
+                break;
+            }
+        }
         // Roots to a few ulps of the absolute time (and of the piece's own clock): far below the 1e-10
         // relative time tolerance required, whatever the first free period (a single mass on a weak
         // spring has one of minutes).
@@ -244,16 +309,14 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions&
         t += tau_e;
         if (tau_e <= cs.t_tol) {
             // Only a contact set that keeps switching at one instant, with every tangency resolved,
-            // comes here 50 times: two contacts whose states decide each other, a truly ill-posed case.
-            if (++zero_length_run > 50) {
-                throw std::runtime_error(
-                    "transient: " + (who >= 0 ? "supports[" + std::to_string(who) + "]" : std::string("a support")) +
-                    " switches without end at t = " +
-                    std::to_string(t * 1e6) +
-                    " us (zero-length contact states repeat); give the support some damping "
-                    "(damping_ratio) or move it away from the other supports");
-            }
+            // comes here 50 times: two contacts whose states decide each other, or one whose damper
+            // is so strong for the mesh (a plastic stop: Cc far above the nearest element's critical
+            // damping) that the sign of its force at the opening is roundoff. Both are ill-posed.
+            if (who >= 0) zero_length_support = zero_length_run == 0 || zero_length_support == who ? who : -2;
+            if (++zero_length_run > 50) throw std::runtime_error(endless_switching_message(p, zero_length_support, who, t));
         } else {
+            zero_length_run = 0;
+            zero_length_support = -1;
             zero_length_run = 0;
         }
         if (who >= 0) {

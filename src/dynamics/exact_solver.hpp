@@ -2,6 +2,8 @@
 // Exact event-driven solver: within each contact state the response is a sum of modal exponentials
 // (decomposed once per state and reused); only the switching instants are found by root finding.
 
+#include <cstddef>
+
 #include "dynamics/piecewise_linear_problem.hpp"
 #include "dynamics/transient_problem.hpp"
 #include "dynamics/transient_result.hpp"
@@ -14,6 +16,10 @@ struct ExactOptions {
     double h_min_periods = 1e-9;  // smallest search step, in periods of the first free mode
     long max_events = 1000000;    // pieces (contact switches, load breakpoints) before WorkLimitReached
     long max_steps = 50000000;    // search evaluations before WorkLimitReached
+    // Memory for decomposed contact states kept for reuse [bytes]; the least recently used go first
+    // and are decomposed again when met again. 1 GiB: some 6 states with the energy ledger at
+    // m = 400 (each O(n^2) complex matrices, n ~ 2m), hundreds at the paper's m = 50.
+    std::size_t state_cache_bytes = std::size_t{1} << 30;
 };
 
 // Solves the problem from t = 0 to p.t_end. Throws std::runtime_error on numerical trouble (a state

@@ -1,5 +1,6 @@
 #include "dynamics/exact_state.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -37,7 +38,25 @@ void negate(ExpSignal& f) {
 
 // ---------------------------------------------------------------------------------------------
 
-ExactModel::ExactModel(const PiecewiseLinearProblem& p, bool energy) : p_(&p), energy_(energy), base_(base_modes(p)) {}
+namespace {
+
+template <class M>
+std::size_t matrix_bytes(const M& a) {
+    return static_cast<std::size_t>(a.size()) * sizeof(typename M::Scalar);
+}
+
+// The heap a decomposed state holds (its matrices; the small vectors are left out).
+std::size_t state_bytes(const StateData& sd) {
+    return matrix_bytes(sd.modes.vl) + matrix_bytes(sd.contact_v) + matrix_bytes(sd.contact_vel) +
+           matrix_bytes(sd.load_vel) + matrix_bytes(sd.full.R) + matrix_bytes(sd.full.L) +
+           matrix_bytes(sd.full_contact_vel) + matrix_bytes(sd.cauchy) + matrix_bytes(sd.rayleigh_w) +
+           matrix_bytes(sd.rayleigh_wc) + sizeof(double) * sd.rayleigh_tail.size() * (1 + sd.contact_tail.size());
+}
+
+}  // namespace
+
+ExactModel::ExactModel(const PiecewiseLinearProblem& p, bool energy, std::size_t cache_bytes)
+    : p_(&p), energy_(energy), base_(base_modes(p)), cache_limit_(cache_bytes) {}
 
 Eigen::VectorXd ExactModel::initial_state(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0) const {
     Eigen::VectorXd x(2 * base_.n);
@@ -48,7 +67,10 @@ Eigen::VectorXd ExactModel::initial_state(const Eigen::VectorXd& q0, const Eigen
 
 const StateData& ExactModel::state(const std::vector<bool>& active) {
     auto it = cache_.find(active);
-    if (it != cache_.end()) return *it->second;
+    if (it != cache_.end()) {
+        it->second.last_use = ++uses_;
+        return *it->second.data;
+    }
     const auto t0 = std::chrono::steady_clock::now();
     auto sd = std::make_unique<StateData>();
     // A new contact state of a fine mesh is seconds of linear algebra: the stop flag is watched
@@ -121,10 +143,21 @@ const StateData& ExactModel::state(const std::vector<bool>& active) {
             }
         }
     }
-    auto [pos, inserted] = cache_.emplace(active, std::move(sd));
+    const std::size_t bytes = state_bytes(*sd);
+    // Bounded memory: a long chatter over many supports meets new states for ever. The state in
+    // use by the caller's previous piece may go too: that piece is replaced before it is read again.
+    while (!cache_.empty() && cache_bytes_ + bytes > cache_limit_) {
+        auto lru = std::min_element(cache_.begin(), cache_.end(),
+                                    [](const auto& a, const auto& b) { return a.second.last_use < b.second.last_use; });
+        cache_bytes_ -= lru->second.bytes;
+        cache_.erase(lru);
+    }
+    cache_bytes_ += bytes;
+    ++decompositions_;
+    auto [pos, inserted] = cache_.emplace(active, Cached{std::move(sd), bytes, ++uses_});
     (void)inserted;
     decomposition_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return *pos->second;
+    return *pos->second.data;
 }
 
 const PieceSolution& ExactModel::piece(const std::vector<bool>& active, const Eigen::VectorXd& x0, double t0,
@@ -279,6 +312,14 @@ void PieceSolution::particular_solution(const Eigen::VectorXd& x0, double t0, do
     const StateModes& md = s_->modes;
     const Eigen::VectorXcd p0 = solve(md.lambda, [&](const Eigen::VectorXcd& F) { return md.coordinates(F); }, terms_);
     a_ = md.coordinates(x0) - p0;
+    bool constant_forcing = true;
+    for (const Raw& r : raw) constant_forcing = constant_forcing && r.s == cd(0.0) && r.power == 0;
+    if (constant_forcing) {
+        // x0 minus the equilibrium (the particular solution is that constant); in [eta; eta'].
+        const Eigen::VectorXd xh = x0 - md.state(p0);
+        const int nb = b.n;
+        motion_energy_ = 0.5 * xh.tail(nb).squaredNorm() + 0.5 * xh.head(nb).cwiseProduct(b.omega).squaredNorm();
+    }
     if (energy) {
         const FullModes& full = s_->full;
         const Eigen::VectorXcd pf = solve(full.lambda, [&](const Eigen::VectorXcd& F) { return Eigen::VectorXcd(full.L * F); }, terms_full_);

@@ -52,6 +52,9 @@ public:
     [[nodiscard]] const ExpSignal& tip_displacement() const { return tip_v_; }
     [[nodiscard]] const ExpSignal& contact_displacement(int c) const { return v_[static_cast<std::size_t>(c)]; }
     [[nodiscard]] Eigen::VectorXd state_at(double tau) const;
+    // With a constant forcing (no load ramps or harmonics in the piece), the mechanical energy of the
+    // motion about the piece's own equilibrium at its start [J]: what is left to move; -1 otherwise.
+    [[nodiscard]] double motion_energy() const { return motion_energy_; }
     // Energy terms at tau, with `start` the ledger's integrals at the start of the piece.
     [[nodiscard]] EnergyLedger energy_at(double tau, const EnergyLedger& start) const;
     // Adds the dissipated energies and external work of [0, tau] to the ledger.
@@ -86,6 +89,7 @@ private:
     const StateData* s_;
     std::vector<bool> active_;
     Eigen::VectorXcd a_;          // homogeneous amplitudes of the representatives
+    double motion_energy_ = -1.0;
     std::vector<Term> terms_;     // particular terms of the representatives
     Eigen::VectorXcd a_full_;     // the same over all 2n modes (energy ledger only)
     std::vector<Term> terms_full_;
@@ -119,13 +123,16 @@ private:
 // The model shared by all pieces: base modes and a cache of decomposed contact states.
 class ExactModel {
 public:
-    ExactModel(const PiecewiseLinearProblem& p, bool energy);
+    // Decomposed states are kept for reuse up to cache_bytes (ExactOptions::state_cache_bytes).
+    ExactModel(const PiecewiseLinearProblem& p, bool energy, std::size_t cache_bytes);
     [[nodiscard]] const BaseModes& base() const { return base_; }
     // x = [Phi^T M q0; Phi^T M v0].
     [[nodiscard]] Eigen::VectorXd initial_state(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0) const;
     // Builds the piece (decomposing its state on first use); valid until the next call.
     const PieceSolution& piece(const std::vector<bool>& active, const Eigen::VectorXd& x0, double t0, double t1);
-    [[nodiscard]] int decompositions() const { return static_cast<int>(cache_.size()); }
+    // Contact states decomposed so far (a state evicted and decomposed again counts twice).
+    [[nodiscard]] int decompositions() const { return decompositions_; }
+
     // Wall time spent decomposing states and deriving their per-state data [s].
     [[nodiscard]] double decomposition_seconds() const { return decomposition_s_; }
 
@@ -134,9 +141,18 @@ private:
     const PiecewiseLinearProblem* p_;
     bool energy_;
     BaseModes base_;
-    std::map<std::vector<bool>, std::unique_ptr<StateData>> cache_;
+    struct Cached {
+        std::unique_ptr<StateData> data;
+        std::size_t bytes = 0;
+        long last_use = 0;
+    };
+    std::map<std::vector<bool>, Cached> cache_;
+    std::size_t cache_limit_;
+    std::size_t cache_bytes_ = 0;
+    long uses_ = 0;
     std::unique_ptr<PieceSolution> piece_;
     double decomposition_s_ = 0.0;
+    int decompositions_ = 0;
 };
 
 // f' as a signal of the same piece.

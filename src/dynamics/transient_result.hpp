@@ -55,6 +55,9 @@ struct SolverStats {
     // Exact solver: contacts found on a tangency (F at roundoff, switching back at once) whose state
     // was decided by the sign of F just ahead (docs/model.md §12); each also counts as unproven.
     int tangencies = 0;
+    // Exact solver: when the motion fell below roundoff of its largest energy with nothing left to
+    // change the forcing, so that the rest of the horizon was one piece at rest [s]; -1 if never.
+    double at_rest_from = -1.0;
     // CVODE: the basis it integrated in (every bending mode, or a reduced-order model's modes plus
     // static corrections), and how far that basis is from the initial displacement (0 when full).
     int basis_vectors = 0;

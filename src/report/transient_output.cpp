@@ -129,6 +129,7 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
         j["solver"]["unproven_steps"] = r.stats.unproven_steps;
         j["solver"]["unproven_excess"] = r.stats.unproven_excess;
         j["solver"]["tangencies"] = r.stats.tangencies;
+        if (r.stats.at_rest_from >= 0.0) j["solver"]["at_rest_from_s"] = r.stats.at_rest_from;
     } else {
         j["solver"]["basis_vectors"] = r.stats.basis_vectors;
         j["solver"]["basis_modes"] = r.stats.basis_modes;
