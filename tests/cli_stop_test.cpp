@@ -28,14 +28,7 @@ using test::CommandResult;
 using test::read_text;
 using test::write_text;
 
-// How soon after the signal a stopped command must have ended [s]: the requirement is 1 s, the bound
-// generous for a shared machine (the figure is printed). Under the sanitizers everything runs several
-// times slower, and the bound only catches a stop that does not work at all.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
-constexpr double kStopBound = 15.0;
-#else
-constexpr double kStopBound = 3.0;
-#endif
+using test::kStopBound;
 
 std::string replaced(std::string text, const std::vector<std::pair<std::string, std::string>>& edits) {
     for (const auto& [from, to] : edits) {

@@ -36,15 +36,7 @@ using test::CommandResult;
 using test::read_text;
 using test::write_text;
 
-// How soon after the signal a stopped command must have ended [s]. The requirement is 1 s; the
-// bound is generous because the machine may be shared (the measured figure is printed). Under the
-// sanitizers everything runs several times slower, so there the bound only catches a stop that
-// does not work at all.
-#if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_UNDEFINED__)
-constexpr double kStopBound = 15.0;
-#else
-constexpr double kStopBound = 3.0;
-#endif
+using test::kStopBound;
 
 // Grid index of the slow point (the last: under MPI, rank 1 takes it after its fast points).
 constexpr std::size_t kSlow = 5;
