@@ -40,6 +40,7 @@ int main(int argc, char** argv) {
     add(add_validate_command);
     add(add_sweep_command);
     add(add_paper_command);
+    add(add_pullin_command);
 
     try {
         app.parse(argc, argv);

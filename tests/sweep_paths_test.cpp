@@ -27,6 +27,8 @@ Case full_case() {
                              "velocity = \"0.1 m/s\"\nvelocity_mode = 2\n"
                              "[[loads]]\nposition = 0.8\namplitude = \"1 uN\"\nkind = \"harmonic\"\nfrequency = \"100 kHz\"\n"
                              "[[loads]]\nposition = 0.6\namplitude = \"2 uN\"\nkind = \"step\"\nt_on = \"1 us\"\n"
+                             "[[electrodes]]\nfrom = 0.1\nto = 0.5\ngap = \"2 um\"\nvoltage = \"5 V\"\nwaveform = \"sine\"\nfrequency = \"1 kHz\"\n"
+                             "[[electrodes]]\nfrom = 0.2\nto = 0.9\ngap = \"2 um\"\ndielectric_thickness = \"0.1 um\"\nvoltage = \"5 V\"\nwaveform = \"step\"\nt_on = \"1 us\"\n"
                              "[solver]\nhorizon = \"50 us\"\n";
     return read_case_text(text, "full.toml");
 }
@@ -69,6 +71,7 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
                                                 text.find("offset") != std::string::npos)) {
             text[6] = '0';  // the harmonic load is loads[0]
         }
+        if (text == "electrodes[1].frequency") text[11] = '0';  // the sine electrode is electrodes[0]
         SCOPED_TRACE(text);
         const CasePath p = resolve_case_path(text, base);
         EXPECT_EQ(p.text(), text);
@@ -79,7 +82,7 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
         EXPECT_FALSE(case_path_unit(p).empty());
         ++checked;
     }
-    EXPECT_EQ(checked, 38);
+    EXPECT_EQ(checked, 46);
 }
 
 TEST(SweepCasePaths, ValuesLandWhereTheCaseFileWouldPutThem) {

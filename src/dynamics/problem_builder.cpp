@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "dynamics/electrode_elements.hpp"
 #include "dynamics/initial_state.hpp"
 #include "forces/kelvin_voigt_contact.hpp"
 #include "forces/point_load_element.hpp"
@@ -21,13 +22,6 @@ namespace vi {
 namespace {
 
 using Index = Eigen::Index;
-
-// Position of each reduced DOF inside s.bending (-1 for axial DOFs).
-std::vector<int> bending_positions(const System& s) {
-    std::vector<int> pos(static_cast<std::size_t>(s.size()), -1);
-    for (std::size_t i = 0; i < s.bending.size(); ++i) pos[static_cast<std::size_t>(s.bending[i])] = static_cast<int>(i);
-    return pos;
-}
 
 // A reduced vector restricted to the bending DOFs.
 Eigen::VectorXd on_bending(const System& s, const Eigen::VectorXd& reduced) {
@@ -163,6 +157,12 @@ int watched_dof(const Case& c, const System& s, const std::vector<int>& pos) {
 
 }  // namespace
 
+std::vector<int> bending_positions(const System& s) {
+    std::vector<int> pos(static_cast<std::size_t>(s.size()), -1);
+    for (std::size_t i = 0; i < s.bending.size(); ++i) pos[static_cast<std::size_t>(s.bending[i])] = static_cast<int>(i);
+    return pos;
+}
+
 BuiltProblem build_transient_problem(const Case& c) {
     if (const std::vector<CaseProblem> problems = check_case(c); !problems.empty()) {
         throw InputError(problems.front().key + ": " + problems.front().message);
@@ -195,6 +195,7 @@ BuiltProblem build_transient_problem(const Case& c) {
     p.beta = b.rayleigh.beta;
     add_contacts(c, s, pos, modes.shapes.col(0), b);
     add_loads(c, s, b);
+    for (auto& pad : electrode_elements(c, s, pos, false)) p.forces.push_back(std::move(pad));
 
     // The static step: the time-dependent loads are not part of it (they act from t = 0 on).
     std::vector<bool> is_v(s.bending.size());

@@ -31,4 +31,7 @@ struct BuiltProblem {
 // exist), and std::runtime_error when a numerical step fails.
 BuiltProblem build_transient_problem(const Case& c);
 
+// Position of each reduced DOF of s among its bending DOFs (s.bending), -1 for axial DOFs.
+std::vector<int> bending_positions(const System& s);
+
 }  // namespace vi

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "model/input_error.hpp"
+#include "io/electrode_reader.hpp"
 #include "io/load_table.hpp"
 #include "io/text_file.hpp"
 #include "io/toml_fields.hpp"
@@ -38,10 +39,12 @@ using tomlio::only_with;
 using tomlio::Position;
 using tomlio::ReadLog;
 
-// A [[loads]] entry whose time function is a CSV table, read once the case text is clean.
+// A [[loads]] or [[electrodes]] entry whose time function is a CSV table, read once the case text
+// is clean.
 struct TableFile {
-    std::size_t load = 0;  // index into Case::loads
-    std::string file;      // as written in the case file
+    std::size_t load = 0;    // index into Case::loads (or Case::electrodes)
+    std::string file;        // as written in the case file
+    bool electrode = false;  // an electrode's voltage table (columns t_s,V_V)
 };
 
 // What reading found besides the Case itself.
@@ -257,7 +260,7 @@ void read_solver(const toml::table& t, Position at, Reading& r, SolverSettings& 
 
 Case read_root(const toml::table& root, const std::string& default_name, Reading& r) {
     FieldReader f(root, "", Position{}, r.log,
-                  {"name", "beam", "material", "damping", "supports", "initial", "loads", "solver"});
+                  {"name", "beam", "material", "damping", "supports", "initial", "loads", "electrodes", "solver"});
     Case c;
     c.name = default_name;
     if (auto v = f.string("name", false)) {
@@ -284,6 +287,15 @@ Case read_root(const toml::table& root, const std::string& default_name, Reading
                          return read_load(t, path, p, c.loads.size(), r);
                      });
     }
+    if (const auto* a = f.array("electrodes", false, "an array of tables ([[electrodes]])")) {
+        read_entries(*a, f.key_position("electrodes"), r, "electrodes", c.electrodes,
+                     [&](const toml::table& t, const std::string& path, Position p) {
+                         std::optional<std::string> table;
+                         Electrode e = read_electrode(t, path, p, r.log, r.value_problems, table);
+                         if (table) r.tables.push_back({c.electrodes.size(), *table, true});
+                         return e;
+                     });
+    }
     if (const auto* t = sub_table(f, "solver", false, at)) read_solver(*t, at, r, c.solver);
     f.finish();
     return c;
@@ -303,11 +315,15 @@ void read_load_tables(const std::string& source_name, Reading& r, Case& c) {
     const std::filesystem::path folder = std::filesystem::path(source_name).parent_path();
     for (const TableFile& t : r.tables) {
         const std::string file = (folder / t.file).string();
-        const std::string key = "loads[" + std::to_string(t.load) + "].table";
+        const std::string key = (t.electrode ? "electrodes[" : "loads[") + std::to_string(t.load) + "].table";
         std::string reason;
         const auto text = file_text(file, reason);
         if (!text) throw_problem(source_name, {r.log.where(key), key, "cannot read " + vi::quoted(file) + " (" + reason + ")"});
-        parse_load_table(*text, file, c.loads[t.load].time);
+        if (t.electrode) {
+            parse_time_table(*text, file, "V_V", c.electrodes[t.load].time);
+        } else {
+            parse_load_table(*text, file, c.loads[t.load].time);
+        }
     }
 }
 

@@ -21,15 +21,19 @@ std::string trimmed(std::string_view s) {
 }  // namespace
 
 void parse_load_table(const std::string& text, const std::string& file, TimeFunction& g) {
+    parse_time_table(text, file, "g", g);
+}
+
+void parse_time_table(const std::string& text, const std::string& file, const std::string& column, TimeFunction& g) {
     std::size_t line_no = 0;
     const auto fail = [&](const std::string& why) {
         throw InputError(one_line(file + ":" + std::to_string(std::max<std::size_t>(line_no, 1)) + ": " + why));
     };
-    const auto number = [&](const std::string& field, const char* column) {
+    const auto number = [&](const std::string& field, const std::string& name) {
         try {
             return parse_quantity(field, Dimension::dimensionless);
         } catch (const std::invalid_argument& e) {
-            fail(std::string(column) + ": " + e.what());
+            fail(name + ": " + e.what());
         }
         return 0.0;
     };
@@ -44,22 +48,22 @@ void parse_load_table(const std::string& text, const std::string& file, TimeFunc
         if (trimmed(line).empty()) continue;
         const std::size_t comma = line.find(',');
         if (comma == std::string_view::npos || line.find(',', comma + 1) != std::string_view::npos) {
-            fail("expected 2 comma-separated columns (t_s,g), got " + vi::quoted(line));
+            fail("expected 2 comma-separated columns (t_s," + column + "), got " + vi::quoted(line));
         }
         const std::string a = trimmed(line.substr(0, comma));
         const std::string b = trimmed(line.substr(comma + 1));
         if (!header) {
-            if (a != "t_s" || b != "g") fail("expected the header row \"t_s,g\", got " + vi::quoted(line));
+            if (a != "t_s" || b != column) fail("expected the header row \"t_s," + column + "\", got " + vi::quoted(line));
             header = true;
             continue;
         }
         const double t = number(a, "t_s");
-        const double v = number(b, "g");
+        const double v = number(b, column);
         if (!g.times.empty() && !(t > g.times.back())) fail("t_s: times must increase strictly down the table");
         g.times.push_back(t);
         g.values.push_back(v);
     }
-    if (!header) fail("empty table (expected the header row \"t_s,g\")");
+    if (!header) fail("empty table (expected the header row \"t_s," + column + "\")");
     if (g.times.empty()) fail("no rows below the header");
 }
 

@@ -12,4 +12,7 @@ namespace vi {
 // InputError("FILE:LINE: reason") at the first bad line.
 void parse_load_table(const std::string& text, const std::string& file, TimeFunction& g);
 
+// The same for a table whose second column is named `column` ("V_V" for a voltage in volts).
+void parse_time_table(const std::string& text, const std::string& file, const std::string& column, TimeFunction& g);
+
 }  // namespace vi

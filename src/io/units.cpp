@@ -57,6 +57,9 @@ constexpr UnitEntry kUnits[] = {
     {Dimension::frequency, "kHz", 1e3, true},
     {Dimension::frequency, "MHz", 1e6, true},
     {Dimension::mass_damping, "1/s", 1.0, true},
+    {Dimension::voltage, "V", 1.0, true},
+    {Dimension::voltage, "mV", 1e-3, true},
+    {Dimension::voltage, "kV", 1e3, true},
 };
 
 bool is_space(char ch) {
@@ -140,6 +143,7 @@ std::string_view dimension_name(Dimension d) {
         case Dimension::velocity: return "a velocity";
         case Dimension::frequency: return "a frequency";
         case Dimension::mass_damping: return "a mass-proportional damping rate";
+        case Dimension::voltage: return "a voltage";
     }
     return "a quantity";
 }

@@ -19,6 +19,7 @@ enum class Dimension {
     velocity,       // m/s
     frequency,      // Hz
     mass_damping,   // 1/s (Rayleigh alpha)
+    voltage,        // V
 };
 
 // Human-readable list of the units accepted for a dimension, e.g. "m, mm, um, nm".

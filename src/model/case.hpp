@@ -90,6 +90,26 @@ struct PointLoad {
     TimeFunction time;
 };
 
+// Fringing-field correction of an electrode's force (docs/electrostatics.md §2): none (the
+// parallel-plate force of the overlap alone) or the Meijs-Fokkema capacitance of a line over a
+// ground plane (stated for 0.3 <= w/g <= 30 and 0.3 <= t/g <= 30).
+enum class Fringing { none, meijs_fokkema };
+
+// A fixed electrode facing the span [from, to] (x/l) of the beam across an air gap, on one side,
+// with an optional dielectric layer on it; voltage V(t) = voltage g(t) between it and the beam.
+struct Electrode {
+    double from = 0.0;                     // x/l where the electrode starts
+    double to = 1.0;                       // x/l where it ends
+    Side side = Side::below;               // below pulls the beam down (-v), above pulls it up
+    double gap = 0.0;                      // beam to electrode at rest, dielectric included [m]
+    double dielectric_thickness = 0.0;     // t_d of the layer on the electrode, < gap [m]
+    double dielectric_permittivity = 1.0;  // eps_r of that layer [-]
+    double width = 0.0;                    // effective electrode width w_e [m]; 0 = the beam's width
+    Fringing fringing = Fringing::none;
+    double voltage = 0.0;                  // amplitude [V]
+    TimeFunction time;                     // g(t) (ramps and pulses are tables)
+};
+
 // Transient solver settings.
 struct SolverSettings {
     // automatic: the exact solver when every force element is piecewise linear, else CVODE.
@@ -128,6 +148,7 @@ struct Case {
     RayleighDamping damping;
     InitialState initial;
     std::vector<PointLoad> loads;
+    std::vector<Electrode> electrodes;
     SolverSettings solver;
 };
 

@@ -99,13 +99,8 @@ void check_initial(std::vector<CaseProblem>& out, const Case& c) {
     }
 }
 
-void check_load(std::vector<CaseProblem>& out, const Case& c, std::size_t k) {
-    const PointLoad& p = c.loads[k];
-    const std::string at = "loads[" + std::to_string(k) + "].";
-    require_beam_point(out, at + "position", p.position);
-    if (at_fixed_end(c, p.position)) out.push_back({at + "position", "a load at a clamped or pinned end does nothing"});
-    require_finite(out, at + "amplitude", p.amplitude);
-    const TimeFunction& g = p.time;
+// The keys of a time function g(t) under `at` ("loads[0]." or "electrodes[1].").
+void check_time_function(std::vector<CaseProblem>& out, const std::string& at, const TimeFunction& g) {
     switch (g.kind) {
         case TimeFunction::Kind::constant: break;
         case TimeFunction::Kind::step: require_non_negative(out, at + "t_on", g.t_on); break;
@@ -123,6 +118,39 @@ void check_load(std::vector<CaseProblem>& out, const Case& c, std::size_t k) {
             break;
         }
     }
+}
+
+void check_load(std::vector<CaseProblem>& out, const Case& c, std::size_t k) {
+    const PointLoad& p = c.loads[k];
+    const std::string at = "loads[" + std::to_string(k) + "].";
+    require_beam_point(out, at + "position", p.position);
+    if (at_fixed_end(c, p.position)) out.push_back({at + "position", "a load at a clamped or pinned end does nothing"});
+    require_finite(out, at + "amplitude", p.amplitude);
+    check_time_function(out, at, p.time);
+}
+
+// An electrode: a span of the beam of nonzero length, a gap with room for its dielectric.
+void check_electrode(std::vector<CaseProblem>& out, const Case& c, std::size_t k) {
+    const Electrode& e = c.electrodes[k];
+    const std::string at = "electrodes[" + std::to_string(k) + "].";
+    if (!std::isfinite(e.from) || e.from < 0.0 || e.from >= 1.0) out.push_back({at + "from", "must lie in [0, 1) (x/l)"});
+    if (!std::isfinite(e.to) || e.to <= 0.0 || e.to > 1.0) {
+        out.push_back({at + "to", "must lie in (0, 1] (x/l)"});
+    } else if (std::isfinite(e.from) && !(e.to > e.from)) {
+        out.push_back({at + "to", "must be greater than from (an electrode of zero or negative length)"});
+    }
+    require_positive(out, at + "gap", e.gap);
+    require_non_negative(out, at + "dielectric_thickness", e.dielectric_thickness);
+    if (std::isfinite(e.dielectric_thickness) && std::isfinite(e.gap) && e.gap > 0.0 && e.dielectric_thickness >= e.gap) {
+        out.push_back({at + "dielectric_thickness", "must be smaller than the gap (" + number_text(e.gap) +
+                                                        " m, electrode to beam, dielectric included)"});
+    }
+    if (!std::isfinite(e.dielectric_permittivity) || e.dielectric_permittivity < 1.0) {
+        out.push_back({at + "dielectric_permittivity", "must be at least 1 (relative permittivity)"});
+    }
+    if (!std::isfinite(e.width) || e.width < 0.0) out.push_back({at + "width", "must be positive"});
+    require_finite(out, at + "voltage", e.voltage);
+    check_time_function(out, at, e.time);
 }
 
 void check_solver(std::vector<CaseProblem>& out, const SolverSettings& s) {
@@ -234,6 +262,11 @@ std::vector<CaseProblem> check_case(const Case& c) {
     }
     check_initial(out, c);
     for (std::size_t k = 0; k < c.loads.size(); ++k) check_load(out, c, k);
+    if (c.electrodes.size() > kMaxElectrodes) {
+        out.push_back({"electrodes[" + std::to_string(kMaxElectrodes) + "]",
+                       "a case may have at most " + std::to_string(kMaxElectrodes) + " electrodes"});
+    }
+    for (std::size_t k = 0; k < std::min(c.electrodes.size(), kMaxElectrodes); ++k) check_electrode(out, c, k);
     check_solver(out, c.solver);
     if (c.supports.size() <= kMaxSupports) check_magnitudes(out, c);
     return out;

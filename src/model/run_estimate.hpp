@@ -24,6 +24,8 @@ inline constexpr int kMaxExactElements = 400;
 inline constexpr int kMaxCvodeElements = 400;
 // Most supports: every closed set of two or more is a dense 2n x 2n eigen problem (100 took 42 s, 2 GB).
 inline constexpr std::size_t kMaxSupports = 100;
+// At most this many electrodes: each one is a force element integrated over its span at every step.
+inline constexpr std::size_t kMaxElectrodes = 20;
 // Largest horizon, in the shortest time scale the solvers must resolve: event times carry a
 // rounding error of a few eps t, 1e-6 of that time scale at 1e9 of it.
 inline constexpr double kMaxHorizonRatio = 1e9;

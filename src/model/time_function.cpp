@@ -24,6 +24,24 @@ double TimeFunction::operator()(double t) const {
     return 0.0;
 }
 
+double TimeFunction::slope(double t) const {
+    switch (kind) {
+        case Kind::constant:
+        case Kind::step: return 0.0;
+        case Kind::harmonic: {
+            const double w = 2.0 * std::numbers::pi * frequency_hz;
+            return w * std::cos(w * t + phase);
+        }
+        case Kind::table: {
+            if (times.size() < 2 || t < times.front() || t >= times.back()) return 0.0;
+            const auto it = std::upper_bound(times.begin(), times.end(), t);
+            const std::size_t i = static_cast<std::size_t>(it - times.begin());
+            return (values[i] - values[i - 1]) / (times[i] - times[i - 1]);
+        }
+    }
+    return 0.0;
+}
+
 double TimeFunction::max_abs() const {
     switch (kind) {
         case Kind::constant:

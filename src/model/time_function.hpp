@@ -20,6 +20,8 @@ struct TimeFunction {
 
     // g(t).
     [[nodiscard]] double operator()(double t) const;
+    // dg/dt [1/s]; at a table knot the slope after it, and 0 across a step (a jump, not a slope).
+    [[nodiscard]] double slope(double t) const;
     // The largest |g(t)| over all t.
     [[nodiscard]] double max_abs() const;
     // Times in (t0, t1) where g or its slope jumps (step time, table knots), ascending.

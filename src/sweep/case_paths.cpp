@@ -55,6 +55,19 @@ const char* needs_harmonic(const Case& c, std::size_t i) {
     return c.loads[i].time.kind == FunctionKind::harmonic ? nullptr : "only for a load of kind \"harmonic\"";
 }
 
+const char* needs_not_table(const Case& c, std::size_t i) {
+    return c.electrodes[i].time.kind == FunctionKind::table ? "not for a table waveform (it gives volts itself)" : nullptr;
+}
+const char* needs_electrode_step(const Case& c, std::size_t i) {
+    return c.electrodes[i].time.kind == FunctionKind::step ? nullptr : "only for waveform = \"step\"";
+}
+const char* needs_electrode_sine(const Case& c, std::size_t i) {
+    return c.electrodes[i].time.kind == FunctionKind::harmonic ? nullptr : "only for waveform = \"sine\"";
+}
+const char* needs_dielectric(const Case& c, std::size_t i) {
+    return c.electrodes[i].dielectric_thickness > 0.0 ? nullptr : "only with a dielectric_thickness above 0";
+}
+
 // The number as an int; the caller has checked that it is whole and in range.
 int whole(double v) { return static_cast<int>(v); }
 
@@ -111,6 +124,19 @@ const FieldSpec kFields[] = {
      needs_harmonic},
     {"loads", "offset", "-", false, false, VI_GET(c.loads[i].time.offset), VI_SET(c.loads[i].time.offset = v),
      needs_harmonic},
+    {"electrodes", "from", "x/l", false, false, VI_GET(c.electrodes[i].from), VI_SET(c.electrodes[i].from = v), always},
+    {"electrodes", "to", "x/l", false, false, VI_GET(c.electrodes[i].to), VI_SET(c.electrodes[i].to = v), always},
+    {"electrodes", "gap", "m", false, false, VI_GET(c.electrodes[i].gap), VI_SET(c.electrodes[i].gap = v), always},
+    {"electrodes", "dielectric_thickness", "m", false, false, VI_GET(c.electrodes[i].dielectric_thickness),
+     VI_SET(c.electrodes[i].dielectric_thickness = v), always},
+    {"electrodes", "dielectric_permittivity", "-", false, false, VI_GET(c.electrodes[i].dielectric_permittivity),
+     VI_SET(c.electrodes[i].dielectric_permittivity = v), needs_dielectric},
+    {"electrodes", "voltage", "V", false, false, VI_GET(c.electrodes[i].voltage),
+     VI_SET(c.electrodes[i].voltage = v), needs_not_table},
+    {"electrodes", "t_on", "s", false, false, VI_GET(c.electrodes[i].time.t_on),
+     VI_SET(c.electrodes[i].time.t_on = v), needs_electrode_step},
+    {"electrodes", "frequency", "Hz", false, false, VI_GET(c.electrodes[i].time.frequency_hz),
+     VI_SET(c.electrodes[i].time.frequency_hz = v), needs_electrode_sine},
     {"solver", "horizon", "s", false, false, VI_GET(c.solver.horizon), VI_SET(c.solver.horizon = v), always},
     {"solver", "output_step", "s", false, false, VI_GET(c.solver.output_step), VI_SET(c.solver.output_step = v), always},
     {"solver", "group_gap", "s", false, false, VI_GET(c.solver.group_gap), VI_SET(c.solver.group_gap = v), always},
@@ -132,10 +158,10 @@ const FieldSpec kFields[] = {
 #undef VI_GET
 #undef VI_SET
 
-bool indexed_section(std::string_view s) { return s == "supports" || s == "loads"; }
+bool indexed_section(std::string_view s) { return s == "supports" || s == "loads" || s == "electrodes"; }
 
 std::size_t section_length(const Case& c, std::string_view s) {
-    return s == "supports" ? c.supports.size() : c.loads.size();
+    return s == "supports" ? c.supports.size() : s == "electrodes" ? c.electrodes.size() : c.loads.size();
 }
 
 const FieldSpec* find_field(const CasePath& p) {
@@ -251,7 +277,7 @@ CasePath resolve_case_path(std::string_view text, const Case& c) {
         const std::size_t n = section_length(c, p.section);
         if (*p.section_index >= n) {
             throw InputError(p.section + "[" + std::to_string(*p.section_index) + "]: index out of range (the case has " +
-                             plural(n, p.section == "supports" ? "support" : "load") + ")");
+                             plural(n, p.section == "supports" ? "support" : p.section == "electrodes" ? "electrode" : "load") + ")");
         }
     }
     if (f->indexed && !p.field_index) {

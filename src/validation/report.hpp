@@ -64,6 +64,7 @@ std::string section_energy(const ValidationOptions& o);
 std::string section_exact_vs_cvode(const ValidationOptions& o);
 std::string section_mesh(const ValidationOptions& o);
 std::string section_loads(const ValidationOptions& o);
+std::string section_electrostatics(const ValidationOptions& o);
 
 void report_progress(const ValidationOptions& o, const std::string& line);
 

@@ -1,0 +1,401 @@
+#include "dynamics/pullin.hpp"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <stdexcept>
+
+#include "dynamics/electrode_elements.hpp"
+#include "dynamics/problem_builder.hpp"
+#include "dynamics/static_solution.hpp"
+#include "modal/eigen_solver.hpp"
+#include "model/input_error.hpp"
+#include "model/run_control.hpp"
+
+// The unknowns are the bending DOFs q and lambda = V^2 (every electrode's force is V^2 times its
+// force at 1 V). Newton's method solves K q = F_contacts(q) + lambda F_e(q) together with
+// r . q = tau, r the mean travel over electrodes[0]: the bordered matrix stays regular at the fold,
+// where dlambda/dtau = 0, so stepping tau traces the branch through pull-in (docs/electrostatics.md §4).
+
+namespace vi {
+namespace {
+
+using Index = Eigen::Index;
+using Triplet = Eigen::Triplet<double>;
+using PadPtr = std::shared_ptr<const ElectrostaticPad>;
+
+using Model = PullinModel;
+
+struct State {
+    double tau = 0.0;
+    double lambda = 0.0;
+    Eigen::VectorXd q;
+    std::vector<int> modes;  // per contact
+};
+
+std::vector<double> gather(const ForceElement& e, const Eigen::VectorXd& q) {
+    std::vector<double> out;
+    out.reserve(e.dofs().size());
+    for (int d : e.dofs()) out.push_back(q[d]);
+    return out;
+}
+
+// Adds scale x the element's static force to f and -scale x its tangent to jt (the Jacobian of
+// K q - F). Returns false when the element cannot be evaluated there (the beam past an electrode).
+bool add_element(const ForceElement& e, int mode, const Eigen::VectorXd& q, double scale, Eigen::VectorXd& f,
+                 std::vector<Triplet>* jt) {
+    const std::size_t m = e.dofs().size();
+    const std::vector<double> qe = gather(e, q), ve(m, 0.0);
+    std::vector<double> fe(m, 0.0), dq(m * m, 0.0), dv(m * m, 0.0);
+    const ElementState s{0.0, qe.data(), ve.data(), nullptr};
+    try {
+        e.add_force(s, mode, fe.data());
+        if (jt) e.add_tangent(s, mode, dq.data(), dv.data());
+    } catch (const std::domain_error&) {
+        return false;
+    }
+    for (std::size_t i = 0; i < m; ++i) {
+        f[e.dofs()[i]] += scale * fe[i];
+        if (!jt) continue;
+        for (std::size_t j = 0; j < m; ++j) {
+            if (dq[i * m + j] != 0.0) jt->emplace_back(e.dofs()[i], e.dofs()[j], -scale * dq[i * m + j]);
+        }
+    }
+    return true;
+}
+
+int contact_mode_at(const ForceElement& e, const Eigen::VectorXd& q) {
+    const std::vector<double> qe = gather(e, q), ve(qe.size(), 0.0);
+    return e.static_mode(ElementState{0.0, qe.data(), ve.data(), nullptr});
+}
+
+// F_contacts + lambda F_e at the state and the tangent A = K - dF/dq; false where undefined.
+bool evaluate(const Model& m, const State& s, Eigen::VectorXd& force, SparseMatrix* tangent) {
+    const Index n = m.K.rows();
+    force = Eigen::VectorXd::Zero(n);
+    std::vector<Triplet> jt;
+    std::vector<Triplet>* pj = tangent ? &jt : nullptr;
+    for (std::size_t k = 0; k < m.contacts.size(); ++k) {
+        if (!add_element(*m.contacts[k], s.modes[k], s.q, 1.0, force, pj)) return false;
+    }
+    for (const PadPtr& p : m.pads) {
+        if (!add_element(*p, 0, s.q, s.lambda, force, pj)) return false;
+    }
+    if (tangent) {
+        SparseMatrix d(n, n);
+        d.setFromTriplets(jt.begin(), jt.end());
+        *tangent = m.K + d;
+    }
+    return true;
+}
+
+// The bordered matrix [A -F_e; r^T 0].
+SparseMatrix bordered(const Model& m, const State& s, const SparseMatrix& a) {
+    const Index n = a.rows();
+    Eigen::VectorXd fe = Eigen::VectorXd::Zero(n);
+    for (const PadPtr& p : m.pads) add_element(*p, 0, s.q, 1.0, fe, nullptr);
+    std::vector<Triplet> t;
+    t.reserve(static_cast<std::size_t>(a.nonZeros() + 2 * n));
+    for (Index k = 0; k < a.outerSize(); ++k) {
+        for (SparseMatrix::InnerIterator it(a, k); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
+    }
+    for (Index i = 0; i < n; ++i) {
+        if (fe[i] != 0.0) t.emplace_back(i, n, -fe[i]);
+        if (m.row[i] != 0.0) t.emplace_back(n, i, m.row[i]);
+    }
+    SparseMatrix j(n + 1, n + 1);
+    j.setFromTriplets(t.begin(), t.end());
+    return j;
+}
+
+// Newton's method at travel tau from the guess s (modes re-decided after every step unless fixed).
+// Returns false when it does not converge within the model's iteration bound.
+bool solve_at(const Model& m, double tau, State& s, bool fix_modes, int& iterations) {
+    s.tau = tau;
+    const Index n = m.K.rows();
+    const double q_scale = 1e-3 * m.air_gap;
+    for (int it = 0; it < m.max_iterations; ++it) {
+        check_run();
+        ++iterations;
+        Eigen::VectorXd force;
+        SparseMatrix a;
+        if (!evaluate(m, s, force, &a)) return false;
+        Eigen::VectorXd rhs(n + 1);
+        rhs.head(n) = -(m.K * s.q - force);
+        rhs[n] = -(m.row.dot(s.q) - tau);
+        Eigen::SparseLU<SparseMatrix> lu;
+        lu.compute(bordered(m, s, a));
+        if (lu.info() != Eigen::Success) return false;
+        const Eigen::VectorXd d = lu.solve(rhs);
+        if (!d.allFinite()) return false;
+        s.q += d.head(n);
+        s.lambda += d[n];
+        bool changed = false;
+        if (!fix_modes) {
+            for (std::size_t k = 0; k < m.contacts.size(); ++k) {
+                const int mode = contact_mode_at(*m.contacts[k], s.q);
+                changed = changed || mode != s.modes[k];
+                s.modes[k] = mode;
+            }
+        }
+        // Newton converges quadratically: once a step is 1e-9 of the state, the state it leads to is
+        // within roundoff (K's condition times eps is itself about 1e-9 at m = 50).
+        const double q_size = std::max(s.q.cwiseAbs().maxCoeff(), q_scale);
+        if (!changed && d.head(n).cwiseAbs().maxCoeff() <= 1e-9 * q_size &&
+            std::abs(d[n]) <= 1e-9 * std::abs(s.lambda) + 1e-300) {
+            return true;
+        }
+    }
+    return false;
+}
+
+// d lambda / d tau at a converged state: the bordered system with right-hand side (0, 1).
+double lambda_slope(const Model& m, const State& s) {
+    Eigen::VectorXd force;
+    SparseMatrix a;
+    if (!evaluate(m, s, force, &a)) return std::numeric_limits<double>::quiet_NaN();
+    Eigen::SparseLU<SparseMatrix> lu;
+    lu.compute(bordered(m, s, a));
+    if (lu.info() != Eigen::Success) return std::numeric_limits<double>::quiet_NaN();
+    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(a.rows() + 1);
+    rhs[a.rows()] = 1.0;
+    return lu.solve(rhs)[a.rows()];
+}
+
+bool is_stable(const Model& m, const State& s) {
+    Eigen::VectorXd force;
+    SparseMatrix a;
+    if (!evaluate(m, s, force, &a)) return false;
+    Eigen::SimplicialLDLT<SparseMatrix> ldlt(a);
+    if (ldlt.info() != Eigen::Success) return false;
+    return (ldlt.vectorD().array() > 0.0).all();
+}
+
+PullinPoint describe(const Model& m, const State& s) {
+    PullinPoint p;
+    p.travel = s.tau;
+    p.voltage = std::sqrt(std::max(s.lambda, 0.0));
+    for (const PadPtr& pad : m.pads) {
+        const std::vector<double> qe = gather(*pad, s.q);
+        p.capacitance += pad->capacitance(qe.data());
+    }
+    p.watched_travel = m.watched >= 0 ? m.sign * s.q[m.watched] : 0.0;
+    for (std::size_t k = 0; k < m.contacts.size(); ++k) {
+        if (s.modes[k] != m.contacts[k]->contact_mode()) continue;
+        p.contact = true;
+        const std::vector<double> qe = gather(*m.contacts[k], s.q), ve(qe.size(), 0.0);
+        p.contact_force += m.contacts[k]->contact_reading(ElementState{0.0, qe.data(), ve.data(), nullptr}).force;
+    }
+    p.stable = is_stable(m, s);
+    return p;
+}
+
+bool any_closed(const Model& m, const State& s) {
+    for (std::size_t k = 0; k < m.contacts.size(); ++k) {
+        if (s.modes[k] == m.contacts[k]->contact_mode()) return true;
+    }
+    return false;
+}
+
+// The largest penetration of any support at the state (whatever its mode) [m].
+double deepest(const Model& m, const State& s) {
+    double d = -std::numeric_limits<double>::infinity();
+    for (const ForceElementPtr& c : m.contacts) {
+        const std::vector<double> qe = gather(*c, s.q), ve(qe.size(), 0.0);
+        d = std::max(d, c->contact_reading(ElementState{0.0, qe.data(), ve.data(), nullptr}).penetration);
+    }
+    return d;
+}
+
+std::string text(const char* format, double a, double b = 0.0) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, format, a, b);
+    return buf;
+}
+
+// Bisection between a (predicate false) and b (true) on the travel; each trial starts from the
+// nearer end's state. Returns the state at the boundary (within roundoff of the travel).
+template <class Predicate>
+State bisect(const Model& m, State a, State b, bool fix_modes, int& iterations, Predicate holds) {
+    for (int it = 0; it < 80 && std::abs(b.tau - a.tau) > 4e-16 * std::abs(b.tau); ++it) {
+        State mid = a;
+        if (!solve_at(m, 0.5 * (a.tau + b.tau), mid, fix_modes, iterations)) break;
+        (holds(mid) ? b : a) = mid;
+    }
+    return b;
+}
+
+void add_frequencies(const Model& m, const std::vector<State>& open, double top, const PullinOptions& o,
+                     PullinResult& r) {
+    if (open.empty() || o.frequency_points < 2) return;
+    for (int i = 0; i < o.frequency_points; ++i) {
+        const double target = top * i / (o.frequency_points - 1);
+        const State* best = &open.front();
+        for (const State& s : open) {
+            if (std::abs(std::sqrt(std::max(s.lambda, 0.0)) - target) <
+                std::abs(std::sqrt(std::max(best->lambda, 0.0)) - target)) {
+                best = &s;
+            }
+        }
+        Eigen::VectorXd force;
+        SparseMatrix a;
+        if (!evaluate(m, *best, force, &a)) continue;
+        PullinFrequencies f;
+        f.voltage = std::sqrt(std::max(best->lambda, 0.0));
+        try {
+            const ModeSet modes = lowest_modes(a, m.M, o.frequency_count);
+            for (Index k = 0; k < modes.omega.size(); ++k) f.frequency_hz.push_back(modes.omega[k] / (2.0 * std::numbers::pi));
+        } catch (const std::runtime_error&) {
+            continue;  // at the fold itself the tangent is singular: no frequencies there
+        }
+        if (r.frequencies.empty() || r.frequencies.back().voltage != f.voltage) r.frequencies.push_back(std::move(f));
+    }
+}
+
+}  // namespace
+
+PullinModel pullin_model(const Case& c) {
+    if (c.electrodes.empty()) throw InputError("electrodes: the case has no [[electrodes]] (pull-in needs one)");
+    BuiltProblem b = build_transient_problem(c);
+    Model m;
+    m.K = b.problem.K;
+    m.M = b.problem.M;
+    for (const ForceElementPtr& e : b.problem.forces) {
+        if (e->is_contact()) m.contacts.push_back(e);
+    }
+    m.pads = electrode_elements(c, b.system, bending_positions(b.system), true);
+    const ElectrostaticPad& first = *m.pads.front();
+    if (first.dofs().empty()) throw InputError("electrodes[0]: it faces no part of the beam that can move");
+    m.row = Eigen::VectorXd::Zero(m.K.rows());
+    const std::vector<double> r0 = first.mean_travel_row();
+    for (std::size_t i = 0; i < r0.size(); ++i) m.row[first.dofs()[i]] += r0[i];
+    m.watched = b.problem.tip_dof;
+    m.sign = first.geometry().sign;
+    m.air_gap = first.geometry().gap - first.geometry().dielectric_thickness;
+    m.max_iterations = c.solver.max_static_iterations;
+    if (m.watched >= 0) {
+        const int reduced = b.system.bending[static_cast<std::size_t>(m.watched)];
+        const int global = b.system.free_dofs[static_cast<std::size_t>(reduced)];
+        m.watched_x = b.system.mesh.x[static_cast<std::size_t>(global / 3)] / b.system.length;
+    }
+    return m;
+}
+
+PullinResult trace_pullin(const Case& c, const PullinOptions& o) { return trace_pullin(pullin_model(c), o); }
+
+PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
+    PullinResult r;
+    r.watched_x = m.watched_x;
+    const Index n = m.K.rows();
+
+    State s;
+    s.q = Eigen::VectorXd::Zero(n);
+    s.modes.assign(m.contacts.size(), 0);
+    {
+        const StaticState rest = solve_static(m.K, m.contacts, Eigen::VectorXd::Zero(n), {}, m.max_iterations);
+        s.q = rest.q;
+        s.modes = rest.modes;
+        s.tau = m.row.dot(s.q);
+    }
+    std::vector<State> open;  // the open branch, for frequencies and the fold
+    open.push_back(s);
+    r.branch.push_back(describe(m, s));
+
+    const double full = o.steps > 0 ? m.air_gap / o.steps : m.air_gap / 200;
+    double step = full;
+    State previous = s;
+    const long max_points = 8L * std::max(o.steps, 1) + 200;
+    double lambda_limit = std::numeric_limits<double>::infinity();
+    for (long k = 0; k < max_points; ++k) {
+        const double tau = s.tau + step;
+        if (tau >= m.air_gap) {
+            r.end = "the mean travel reached the air gap of electrodes[0]";
+            break;
+        }
+        // Secant predictor along the branch.
+        State trial = s;
+        if (k > 0 && s.tau != previous.tau) {
+            const double ratio = step / (s.tau - previous.tau);
+            trial.q = s.q + ratio * (s.q - previous.q);
+            trial.lambda = s.lambda + ratio * (s.lambda - previous.lambda);
+        }
+        if (!solve_at(m, tau, trial, false, r.newton_iterations)) {
+            step *= 0.5;
+            if (step < full * 1e-9) {
+                r.end = text("continuation lost at V = %.6g V (mean travel %.4g um): no equilibrium found by the smallest step",
+                             std::sqrt(std::max(s.lambda, 0.0)), s.tau * 1e6);
+                break;
+            }
+            continue;
+        }
+        previous = s;
+        s = trial;
+        step = std::min(full, 2.0 * step);
+
+        const bool closed = any_closed(m, s);
+        if (closed && !r.touchdown) {
+            // The last open state and this closed one bracket the touch-down: where the open
+            // branch's deepest penetration crosses zero.
+            State a = previous, b = s;
+            b.modes = a.modes;
+            if (!solve_at(m, b.tau, b, true, r.newton_iterations)) b = s;
+            const State td = bisect(m, a, b, true, r.newton_iterations, [&](const State& x) { return deepest(m, x) > 0.0; });
+            r.touchdown = describe(m, td);
+            r.touchdown->contact = true;
+            // Held at touch-down when the closed branch starts stable there.
+            r.touchdown->stable = is_stable(m, s);
+            if (r.touchdown->stable) r.release_voltage = r.touchdown->voltage;
+            const double ref = r.pullin ? r.pullin->voltage : r.touchdown->voltage;
+            lambda_limit = 16.0 * ref * ref;
+        }
+        if (!closed && !r.touchdown) {
+            open.push_back(s);
+            if (!r.pullin && open.size() >= 3 && s.lambda < previous.lambda) {
+                // The fold lies between the last two points of rising lambda and this one.
+                const State& a = open[open.size() - 3];
+                const State fold = bisect(m, a, s, false, r.newton_iterations,
+                                          [&](const State& x) { return lambda_slope(m, x) < 0.0; });
+                r.pullin = describe(m, fold);
+                open.insert(open.end() - 1, fold);
+            }
+        }
+        if (closed && r.touchdown && !r.collapse && s.lambda < previous.lambda && any_closed(m, previous)) {
+            const State fold = bisect(m, previous, s, false, r.newton_iterations,
+                                      [&](const State& x) { return lambda_slope(m, x) < 0.0; });
+            r.collapse = describe(m, fold);
+        }
+        PullinPoint p = describe(m, s);
+        // Release: the lowest voltage at which a closed support still holds the beam stably.
+        if (p.contact && p.stable) r.release_voltage = std::min(r.release_voltage.value_or(p.voltage), p.voltage);
+        r.branch.push_back(p);
+
+        for (const PadPtr& pad : m.pads) {
+            const std::vector<double> qe = gather(*pad, s.q);
+            const ElectrostaticPad::Narrowest narrow = pad->narrowest(qe.data());
+            if (narrow.air_gap <= 5e-3 * (pad->geometry().gap - pad->geometry().dielectric_thickness)) {
+                r.end = "the beam collapses onto " + pad->name() +
+                        text(" (it touches it at x = %.4g um, V = %.6g V on the unstable branch)", narrow.x * 1e6, p.voltage);
+            }
+        }
+        if (!r.end.empty()) break;
+        if (s.lambda > lambda_limit) {
+            r.end = "the voltage passed 4 times the pull-in (or touch-down) voltage on the closed branch";
+            break;
+        }
+    }
+    if (r.end.empty()) r.end = "more than " + std::to_string(max_points) + " continuation points (raise --steps)";
+    std::vector<State> stable_open;
+    for (const State& x : open) {
+        if (!r.pullin || x.tau <= r.pullin->travel) stable_open.push_back(x);
+    }
+    const double top = r.pullin ? r.pullin->voltage : r.touchdown ? r.touchdown->voltage : r.branch.back().voltage;
+    add_frequencies(m, stable_open, top, o, r);
+    return r;
+}
+
+}  // namespace vi

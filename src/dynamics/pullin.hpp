@@ -1,0 +1,78 @@
+#pragma once
+// Static pull-in of a beam under its electrodes: the equilibrium branch traced against the mean
+// travel over the first electrode (displacement control, so the unstable branch is followed, not
+// jumped), with pull-in, touch-down on a support, release and the frequencies under bias
+// (docs/electrostatics.md §4).
+
+#include <Eigen/Dense>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "fem/system.hpp"
+#include "forces/electrostatic_pad.hpp"
+#include "forces/force_set.hpp"
+#include "model/case.hpp"
+
+namespace vi {
+
+struct PullinOptions {
+    int steps = 200;          // continuation steps over the electrode's air gap
+    int frequency_points = 16; // voltages (0 .. V_PI) at which the lowest modes are computed
+    int frequency_count = 3;   // modes per voltage
+};
+
+// One equilibrium: all electrodes at `voltage`.
+struct PullinPoint {
+    double travel = 0.0;         // mean travel toward electrodes[0] over its span [m]
+    double voltage = 0.0;        // [V]
+    double capacitance = 0.0;    // sum over the electrodes [F]
+    double watched_travel = 0.0; // travel toward electrodes[0] of the watched point (free end or mid-span) [m]
+    double contact_force = 0.0;  // sum of the closed supports' forces [N]
+    bool contact = false;        // some support closed
+    bool stable = false;         // the tangent stiffness is positive definite
+};
+
+struct PullinFrequencies {
+    double voltage = 0.0;             // [V]
+    std::vector<double> frequency_hz; // lowest bending modes about that equilibrium (supports closed as springs)
+};
+
+struct PullinResult {
+    std::vector<PullinPoint> branch;            // in order of travel
+    std::optional<PullinPoint> pullin;          // the fold of the open branch, if one comes before contact
+    std::optional<PullinPoint> touchdown;       // where a support first closes
+    std::optional<double> release_voltage;      // lowest voltage holding a closed support [V]
+    std::optional<PullinPoint> collapse;        // the fold of the closed branch (onto the electrode)
+    std::vector<PullinFrequencies> frequencies; // along the open branch, 0 .. its largest stable voltage
+    std::string end;                            // why the branch ends
+    double watched_x = 0.0;                     // x/l of the watched point
+    int newton_iterations = 0;
+};
+
+// What the continuation works on: the beam's stiffness and mass over its bending DOFs, the contact
+// elements, the electrodes at 1 V, and r with r . q the mean travel toward electrodes[0] [m].
+struct PullinModel {
+    SparseMatrix K, M;                                       // [N/m], [kg]
+    std::vector<ForceElementPtr> contacts;                   // contact elements (their static modes)
+    std::vector<std::shared_ptr<const ElectrostaticPad>> pads;  // every electrode at 1 V
+    Eigen::VectorXd row;                                     // r [-]
+    int watched = -1;                                        // DOF of the watched point's v, or -1
+    double watched_x = 0.0;                                  // its x/l
+    double sign = -1.0;                                      // electrodes[0]'s pull direction in v
+    double air_gap = 0.0;                                    // electrodes[0]'s air gap [m]
+    int max_iterations = 200;                                // Newton iterations per point
+};
+
+// The model of a case: InputError when it has no electrode or its first faces nothing that moves.
+PullinModel pullin_model(const Case& c);
+
+// Traces m's equilibria from its rest state (the supports' static state at 0 V).
+PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o = {});
+
+// Traces c's equilibria. Throws InputError when c has no electrode, WorkLimitReached when a
+// step takes more than solver.max_static_iterations Newton iterations even at the smallest
+// step, std::runtime_error when the tangent is singular, StopRequested from check_run().
+PullinResult trace_pullin(const Case& c, const PullinOptions& o = {});
+
+}  // namespace vi

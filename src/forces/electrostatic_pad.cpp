@@ -1,0 +1,151 @@
+#include "forces/electrostatic_pad.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+namespace vi {
+
+LineCapacitance line_capacitance(const PadGeometry& g, double gap) {
+    const double w = g.width;
+    LineCapacitance out;
+    out.c = kEpsilon0 * w / gap;
+    out.dc = -kEpsilon0 * w / (gap * gap);
+    out.d2c = 2.0 * kEpsilon0 * w / (gap * gap * gap);
+    if (g.fringing == Fringing::meijs_fokkema) {
+        // eps0 (0.77 + 1.06 (w/g)^(1/4) + 1.06 (t/g)^(1/2)) and its derivatives in g.
+        const double a = 1.06 * std::pow(w, 0.25), b = 1.06 * std::sqrt(g.beam_thickness);
+        out.c += kEpsilon0 * (0.77 + a * std::pow(gap, -0.25) + b * std::pow(gap, -0.5));
+        out.dc += kEpsilon0 * (-0.25 * a * std::pow(gap, -1.25) - 0.5 * b * std::pow(gap, -1.5));
+        out.d2c += kEpsilon0 * (0.3125 * a * std::pow(gap, -2.25) + 0.75 * b * std::pow(gap, -2.5));
+    }
+    return out;
+}
+
+ElectrostaticPad::ElectrostaticPad(std::string name, std::vector<int> dofs, std::vector<PadPoint> points,
+                                   PadGeometry geometry, double voltage, TimeFunction time)
+    : name_(std::move(name)), dofs_(std::move(dofs)), points_(std::move(points)), geometry_(geometry),
+      voltage_(voltage), time_(std::move(time)) {
+    const PadGeometry& g = geometry_;
+    if (points_.empty() || std::abs(g.sign) != 1.0 || !(g.gap > 0.0) || !(g.dielectric_thickness >= 0.0) ||
+        !(g.dielectric_thickness < g.gap) || !(g.dielectric_permittivity >= 1.0) || !(g.width > 0.0) ||
+        !std::isfinite(voltage_)) {
+        throw std::invalid_argument(name_ + ": inconsistent electrostatic pad data");
+    }
+    for (const PadPoint& p : points_) {
+        for (int l : p.local) {
+            if (l >= static_cast<int>(dofs_.size())) throw std::invalid_argument(name_ + ": DOF index out of range");
+        }
+    }
+}
+
+double ElectrostaticPad::electrical_gap(const PadPoint& p, const double* q) const {
+    double v = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        if (p.local[i] >= 0) v += p.shape[i] * q[p.local[i]];
+    }
+    const PadGeometry& g = geometry_;
+    return (g.gap - g.dielectric_thickness) - g.sign * v + g.dielectric_thickness / g.dielectric_permittivity;
+}
+
+void ElectrostaticPad::require_open(const PadPoint& p, double ge) const {
+    const PadGeometry& g = geometry_;
+    const double air = ge - g.dielectric_thickness / g.dielectric_permittivity;
+    if (ge > 0.0 && air > -1e-3 * g.gap) return;
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "the beam reaches the electrode%s at x = %.4g um (air gap %.3g um)",
+                  g.dielectric_thickness > 0.0 ? "'s dielectric" : "", p.x * 1e6, air * 1e6);
+    throw std::domain_error(name_ + ": " + buf + "; the electrode face is not a contact: add a support that stops the "
+                                             "beam before it, or see docs/electrostatics.md");
+}
+
+void ElectrostaticPad::add_force(const ElementState& s, int, double* f) const {
+    const double v = voltage(s.t);
+    if (v == 0.0) return;
+    // f_i = dW*/dq_i, W* = V^2/2 int c(g_e) dx, dg_e/dq_i = -sign N_i.
+    const double half_v2 = 0.5 * v * v;
+    for (const PadPoint& p : points_) {
+        const double ge = electrical_gap(p, s.q);
+        require_open(p, ge);
+        const double load = -half_v2 * line_capacitance(geometry_, ge).dc * geometry_.sign * p.weight;
+        for (int i = 0; i < 4; ++i) {
+            if (p.local[i] >= 0) f[p.local[i]] += load * p.shape[i];
+        }
+    }
+}
+
+void ElectrostaticPad::add_tangent(const ElementState& s, int, double* dfdq, double*) const {
+    const double v = voltage(s.t);
+    if (v == 0.0) return;
+    const std::size_t n = dofs_.size();
+    const double half_v2 = 0.5 * v * v;
+    for (const PadPoint& p : points_) {
+        const double ge = electrical_gap(p, s.q);
+        require_open(p, ge);
+        // d f_i / d q_j = V^2/2 c''(g_e) N_i N_j (sign^2 = 1): a negative stiffness.
+        const double k = half_v2 * line_capacitance(geometry_, ge).d2c * p.weight;
+        for (int i = 0; i < 4; ++i) {
+            if (p.local[i] < 0) continue;
+            for (int j = 0; j < 4; ++j) {
+                if (p.local[j] < 0) continue;
+                dfdq[static_cast<std::size_t>(p.local[i]) * n + static_cast<std::size_t>(p.local[j])] +=
+                    k * p.shape[i] * p.shape[j];
+            }
+        }
+    }
+}
+
+double ElectrostaticPad::capacitance(const double* q) const {
+    double c = 0.0;
+    for (const PadPoint& p : points_) {
+        const double ge = electrical_gap(p, q);
+        require_open(p, ge);
+        c += line_capacitance(geometry_, ge).c * p.weight;
+    }
+    return c;
+}
+
+double ElectrostaticPad::stored_energy(const ElementState& s, int) const {
+    const double v = voltage(s.t);
+    return v == 0.0 ? 0.0 : -0.5 * v * v * capacitance(s.q);
+}
+
+double ElectrostaticPad::input_power(const ElementState& s, int) const {
+    const double v = voltage(s.t);
+    const double rate = voltage_ * time_.slope(s.t);
+    return v == 0.0 || rate == 0.0 ? 0.0 : -capacitance(s.q) * v * rate;
+}
+
+double ElectrostaticPad::force_scale() const {
+    const double v = voltage_ * time_.max_abs();
+    double f = 0.0;
+    const PadGeometry& g = geometry_;
+    const double ge = g.gap - g.dielectric_thickness + g.dielectric_thickness / g.dielectric_permittivity;
+    for (const PadPoint& p : points_) f += -0.5 * v * v * line_capacitance(g, ge).dc * p.weight;
+    return f;
+}
+
+ElectrostaticPad::Narrowest ElectrostaticPad::narrowest(const double* q) const {
+    Narrowest out{std::numeric_limits<double>::infinity(), 0.0};
+    const PadGeometry& g = geometry_;
+    for (const PadPoint& p : points_) {
+        const double air = electrical_gap(p, q) - g.dielectric_thickness / g.dielectric_permittivity;
+        if (air < out.air_gap) out = {air, p.x};
+    }
+    return out;
+}
+
+std::vector<double> ElectrostaticPad::mean_travel_row() const {
+    std::vector<double> r(dofs_.size(), 0.0);
+    const double length = geometry_.to - geometry_.from;
+    for (const PadPoint& p : points_) {
+        for (int i = 0; i < 4; ++i) {
+            if (p.local[i] >= 0) r[static_cast<std::size_t>(p.local[i])] += geometry_.sign * p.weight * p.shape[i] / length;
+        }
+    }
+    return r;
+}
+
+}  // namespace vi

@@ -1,0 +1,103 @@
+#pragma once
+// ElectrostaticPad: the distributed electrostatic force of one electrode on the span of the beam it
+// faces, integrated on the beam's Hermite shape functions by Gauss quadrature (docs/electrostatics.md).
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "forces/force_element.hpp"
+#include "model/case.hpp"
+#include "model/time_function.hpp"
+
+namespace vi {
+
+// One quadrature point: its place [m], the length it stands for [m], and the Hermite shape values
+// of v there on (v1, theta1, v2, theta2) of its beam element [-, m], with the index of each of those
+// DOFs in the pad's dofs() (-1 where an end condition holds the DOF).
+struct PadPoint {
+    double x = 0.0;
+    double weight = 0.0;
+    std::array<int, 4> local{-1, -1, -1, -1};
+    std::array<double, 4> shape{};
+};
+
+// The electrode as the force sees it. Electrical gap at a point: g_e = (gap - t_d) - sign v + t_d /
+// eps_r, with sign = +1 for an electrode above (it pulls +v), -1 below.
+struct PadGeometry {
+    double sign = -1.0;
+    double gap = 0.0;                      // electrode to beam at rest, dielectric included [m]
+    double dielectric_thickness = 0.0;     // t_d [m]
+    double dielectric_permittivity = 1.0;  // eps_r [-]
+    double width = 0.0;                    // w_e [m]
+    double beam_thickness = 0.0;           // t, for the fringing model [m]
+    Fringing fringing = Fringing::none;
+    double from = 0.0, to = 0.0;           // the span [m]
+};
+
+// Vacuum permittivity [F/m] (CODATA 2018).
+inline constexpr double kEpsilon0 = 8.8541878128e-12;
+
+// Gauss-Legendre points per beam element (or part of one) the pad integrates with.
+inline constexpr int kPadGaussPoints = 8;
+
+// Capacitance per unit length c(g_e) [F/m] of a strip of width w over a plane, and its first two
+// derivatives in g_e: parallel plate eps0 w / g, or Meijs-Fokkema's line-to-ground formula
+// eps0 (w/g + 0.77 + 1.06 (w/g)^0.25 + 1.06 (t/g)^0.5).
+struct LineCapacitance {
+    double c = 0.0, dc = 0.0, d2c = 0.0;
+};
+LineCapacitance line_capacitance(const PadGeometry& g, double gap);
+
+// The pad: V(t) = voltage g(t). Stored energy is the electrical co-energy's negative, -C V^2 / 2
+// (its gradient is minus the force, as the force-element contract asks); the source's input power
+// in that ledger is -C V dV/dt (docs/electrostatics.md §3).
+class ElectrostaticPad final : public ForceElement {
+public:
+    ElectrostaticPad(std::string name, std::vector<int> dofs, std::vector<PadPoint> points, PadGeometry geometry,
+                     double voltage, TimeFunction time);
+
+    [[nodiscard]] const std::string& name() const override { return name_; }
+    [[nodiscard]] std::string kind() const override { return "electrostatic pad"; }
+    [[nodiscard]] const std::vector<int>& dofs() const override { return dofs_; }
+
+    void add_force(const ElementState& s, int mode, double* f) const override;
+    void add_tangent(const ElementState& s, int mode, double* dfdq, double* dfdv) const override;
+    [[nodiscard]] double stored_energy(const ElementState& s, int mode) const override;
+    [[nodiscard]] double dissipated_power(const ElementState&, int) const override { return 0.0; }
+    [[nodiscard]] double input_power(const ElementState& s, int mode) const override;
+    // Acts from t = 0 on: the static state a transient starts from is without voltage.
+    [[nodiscard]] bool in_static_state() const override { return false; }
+    [[nodiscard]] double force_scale() const override;
+    [[nodiscard]] std::vector<double> breakpoints(double t0, double t1) const override { return time_.breakpoints(t0, t1); }
+    [[nodiscard]] double position() const override { return 0.5 * (geometry_.from + geometry_.to); }
+
+    // V(t) [V].
+    [[nodiscard]] double voltage(double t) const { return voltage_ * time_(t); }
+    // Capacitance between electrode and beam at displacements q (the pad's DOFs) [F].
+    [[nodiscard]] double capacitance(const double* q) const;
+    // The smallest air gap over the span, beam to the dielectric's face [m], and where it is [m].
+    struct Narrowest {
+        double air_gap = 0.0;
+        double x = 0.0;
+    };
+    [[nodiscard]] Narrowest narrowest(const double* q) const;
+    // Weights r over dofs() such that r . q is the mean travel toward the electrode over the span [m].
+    [[nodiscard]] std::vector<double> mean_travel_row() const;
+    [[nodiscard]] const PadGeometry& geometry() const { return geometry_; }
+
+private:
+    // g_e at point k.
+    [[nodiscard]] double electrical_gap(const PadPoint& p, const double* q) const;
+    // Throws std::domain_error when the beam reaches the electrode's face (no force is defined there).
+    void require_open(const PadPoint& p, double ge) const;
+
+    std::string name_;
+    std::vector<int> dofs_;
+    std::vector<PadPoint> points_;
+    PadGeometry geometry_;
+    double voltage_;
+    TimeFunction time_;
+};
+
+}  // namespace vi

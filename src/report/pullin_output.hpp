@@ -1,0 +1,21 @@
+#pragma once
+// Pull-in results (dynamics/pullin.hpp) as JSON, a terminal summary and CSV files.
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "dynamics/pullin.hpp"
+#include "io/output_files.hpp"
+
+namespace vi {
+
+// {"pullin": {...} or null, "touchdown", "release_voltage_V", "end", "branch_points", ...}
+nlohmann::json pullin_json(const PullinResult& r);
+
+// A few lines for a terminal: V_PI, travel at pull-in, touch-down, release, why the branch ends.
+std::string pullin_text(const PullinResult& r);
+
+// pullin.json, pullin_branch.csv (the equilibria), pullin_frequencies.csv (f against V).
+OutputFiles pullin_files(const PullinResult& r);
+
+}  // namespace vi

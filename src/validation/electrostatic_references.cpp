@@ -1,0 +1,58 @@
+#include "validation/electrostatic_references.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+namespace vi {
+
+double cantilever_pullin_lambda_shooting() {
+    const auto residual = [](const Eigen::Vector3d& x, double tip) {
+        const int n = 4000;
+        const double h = 1.0 / n;
+        Eigen::Vector4d y(0, 0, x[0], x[1]);
+        const auto rhs = [&](const Eigen::Vector4d& s) {
+            return Eigen::Vector4d(s[1], s[2], s[3], x[2] / ((1 - s[0]) * (1 - s[0])));
+        };
+        for (int i = 0; i < n; ++i) {
+            const Eigen::Vector4d k1 = rhs(y), k2 = rhs(y + 0.5 * h * k1), k3 = rhs(y + 0.5 * h * k2), k4 = rhs(y + h * k3);
+            y += h / 6 * (k1 + 2 * k2 + 2 * k3 + k4);
+        }
+        return Eigen::Vector3d(y[2], y[3], y[0] - tip);
+    };
+    Eigen::Vector3d x(0, 0, 0);
+    // lambda at a prescribed tip deflection, by Newton from the last solution.
+    const auto lambda_at = [&](double tip) {
+        for (int it = 0; it < 30; ++it) {
+            const Eigen::Vector3d r = residual(x, tip);
+            Eigen::Matrix3d j;
+            for (int c = 0; c < 3; ++c) {
+                Eigen::Vector3d d = x;
+                d[c] += 1e-7 * (1 + std::abs(x[c]));
+                j.col(c) = (residual(d, tip) - r) / (d[c] - x[c]);
+            }
+            const Eigen::Vector3d dx = j.fullPivLu().solve(-r);
+            x += dx;
+            if (dx.norm() < 1e-13 * (1 + x.norm())) break;
+        }
+        return x[2];
+    };
+    double best_tip = 0.0, best = 0.0;
+    for (int step = 1; step <= 60; ++step) {
+        const double l = lambda_at(0.01 * step);
+        if (l > best) {
+            best = l;
+            best_tip = 0.01 * step;
+        }
+    }
+    // Golden-section search for the largest lambda around the best grid point.
+    double a = best_tip - 0.01, b = best_tip + 0.01;
+    const double phi = (std::sqrt(5.0) - 1) / 2;
+    for (int it = 0; it < 40; ++it) {
+        const double c = b - phi * (b - a), d = a + phi * (b - a);
+        (lambda_at(c) > lambda_at(d) ? b : a) = (lambda_at(c) > lambda_at(d) ? d : c);
+    }
+    return lambda_at(0.5 * (a + b));
+}
+
+}  // namespace vi
