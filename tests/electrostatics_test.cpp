@@ -27,24 +27,6 @@
 namespace vi {
 namespace {
 
-// A rigid plate of area A = w L on one DOF: one quadrature point of weight L with shape value 1.
-std::shared_ptr<const ElectrostaticPad> plate(double gap, double width, double length, double volts, TimeFunction g = {},
-                                             double sign = -1.0) {
-    PadPoint p;
-    p.x = 0.5 * length;
-    p.weight = length;
-    p.local = {0, -1, -1, -1};
-    p.shape = {1.0, 0.0, 0.0, 0.0};
-    PadGeometry geo;
-    geo.sign = sign;
-    geo.gap = gap;
-    geo.width = width;
-    geo.from = 0.0;
-    geo.to = length;
-    return std::make_shared<const ElectrostaticPad>("electrodes[0]", std::vector<int>{0}, std::vector<PadPoint>{p}, geo,
-                                                    volts, g);
-}
-
 // A pad over one beam element of length 10 um (4 DOFs), with a dielectric and Meijs-Fokkema fringing.
 std::shared_ptr<const ElectrostaticPad> beam_pad(Fringing fringing, TimeFunction g) {
     const double L = 10e-6;
@@ -130,15 +112,7 @@ TEST(ElectrostaticPad, TangentEnergyAndPowerMatchTheForce) {
 // (e.g. Senturia, Microsystem Design, 2001, §6.4).
 TEST(ElectrostaticPullin, OneDegreeOfFreedomPlateMatchesTheClosedForm) {
     const double k = 2.0, g = 2e-6, w = 100e-6, L = 100e-6;
-    PullinModel m;
-    m.K.resize(1, 1);
-    m.K.insert(0, 0) = k;
-    m.M.resize(1, 1);
-    m.M.insert(0, 0) = 1e-10;
-    m.pads = {plate(g, w, L, 1.0)};
-    m.row = Eigen::VectorXd::Constant(1, -1.0);  // travel toward the electrode below = -v
-    m.sign = -1.0;
-    m.air_gap = g;
+    const PullinModel m = parallel_plate_model(k, 1e-10, g, w, L);
     const PullinResult r = trace_pullin(m);
     ASSERT_TRUE(r.pullin.has_value()) << r.end;
     const double v_pi = std::sqrt(8.0 * k * g * g * g / (27.0 * kEpsilon0 * w * L));

@@ -3,8 +3,32 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 namespace vi {
+
+PullinModel parallel_plate_model(double k, double mass, double gap, double width, double length) {
+    PullinModel m;
+    m.K.resize(1, 1);
+    m.K.insert(0, 0) = k;
+    m.M.resize(1, 1);
+    m.M.insert(0, 0) = mass;
+    PadPoint p;
+    p.x = 0.5 * length;
+    p.weight = length;
+    p.local = {0, -1, -1, -1};
+    p.shape = {1.0, 0.0, 0.0, 0.0};
+    PadGeometry geo;
+    geo.gap = gap;
+    geo.width = width;
+    geo.to = length;
+    m.pads = {std::make_shared<const ElectrostaticPad>("electrodes[0]", std::vector<int>{0}, std::vector<PadPoint>{p}, geo,
+                                                       1.0, TimeFunction{})};
+    m.row = Eigen::VectorXd::Constant(1, -1.0);  // travel toward the electrode below = -v
+    m.air_gap = gap;
+    return m;
+}
 
 double cantilever_pullin_lambda_shooting() {
     const auto residual = [](const Eigen::Vector3d& x, double tip) {

@@ -1,7 +1,14 @@
 #pragma once
 // Independent references for electrostatic pull-in (docs/electrostatics.md §5).
 
+#include "dynamics/pullin.hpp"
+
 namespace vi {
+
+// A rigid plate of area width x length on a spring k [N/m] with mass [kg], across `gap` [m] from an
+// electrode below it: one DOF, one quadrature point of weight `length` and shape value 1; its
+// parallel-plate pull-in is V_PI = sqrt(8 k g^3 / (27 eps0 A)) at a travel of g/3.
+PullinModel parallel_plate_model(double k, double mass, double gap, double width, double length);
 
 // Pull-in parameter lambda_PI = eps0 w V_PI^2 l^4 / (2 EI g^3) of a cantilever under a full-length
 // electrode without fringing: u'''' = lambda / (1 - u)^2, u(0) = u'(0) = u''(1) = u'''(1) = 0,

@@ -26,24 +26,7 @@ std::string section_electrostatics(const ValidationOptions& o) {
     t.header = {"case", "computed", "reference", "rel. error", "test asserts"};
     {
         const double k = 2.0, g = 2e-6, w = 100e-6, L = 100e-6;
-        PullinModel m;
-        m.K.resize(1, 1);
-        m.K.insert(0, 0) = k;
-        m.M.resize(1, 1);
-        m.M.insert(0, 0) = 1e-10;
-        PadPoint p;
-        p.x = 0.5 * L;
-        p.weight = L;
-        p.local = {0, -1, -1, -1};
-        p.shape = {1.0, 0.0, 0.0, 0.0};
-        PadGeometry geo;
-        geo.gap = g;
-        geo.width = w;
-        geo.to = L;
-        m.pads = {std::make_shared<const ElectrostaticPad>("electrodes[0]", std::vector<int>{0}, std::vector<PadPoint>{p},
-                                                           geo, 1.0, TimeFunction{})};
-        m.row = Eigen::VectorXd::Constant(1, -1.0);
-        m.air_gap = g;
+        const PullinModel m = parallel_plate_model(k, 1e-10, g, w, L);
         const PullinResult r = trace_pullin(m);
         const double v = std::sqrt(8.0 * k * g * g * g / (27.0 * kEpsilon0 * w * L));
         if (r.pullin) {
