@@ -51,7 +51,7 @@ bool add_element(const ForceElement& e, int mode, const Eigen::VectorXd& q, doub
                  std::vector<Triplet>* jt) {
     const std::size_t m = e.dofs().size();
     const std::vector<double> qe = gather(e, q), ve(m, 0.0);
-    std::vector<double> fe(m, 0.0), dq(m * m, 0.0), dv(m * m, 0.0);
+    std::vector<double> fe(m, 0.0), dq(jt ? m * m : 0, 0.0), dv(jt ? m * m : 0, 0.0);
     const ElementState s{0.0, qe.data(), ve.data(), nullptr};
     try {
         e.add_force(s, mode, fe.data());
@@ -119,6 +119,7 @@ bool solve_at(const Model& m, double tau, State& s, bool fix_modes, int& iterati
     s.tau = tau;
     const Index n = m.K.rows();
     const double q_scale = 1e-3 * m.air_gap;
+    double previous_step = std::numeric_limits<double>::infinity();
     for (int it = 0; it < m.max_iterations; ++it) {
         check_run();
         ++iterations;
@@ -143,13 +144,16 @@ bool solve_at(const Model& m, double tau, State& s, bool fix_modes, int& iterati
                 s.modes[k] = mode;
             }
         }
-        // Newton converges quadratically: once a step is 1e-9 of the state, the state it leads to is
-        // within roundoff (K's condition times eps is itself about 1e-9 at m = 50).
+        // Converged once the state is within 1e-9 of the solution (K's condition times eps is itself
+        // about 1e-9 at m = 50): a step that small, or a step in Newton's quadratic regime (small,
+        // and contracting fast) after which the error left, about step^3 / previous^2, is that small.
         const double q_size = std::max(s.q.cwiseAbs().maxCoeff(), q_scale);
-        if (!changed && d.head(n).cwiseAbs().maxCoeff() <= 1e-9 * q_size &&
-            std::abs(d[n]) <= 1e-9 * std::abs(s.lambda) + 1e-300) {
-            return true;
-        }
+        const double step = std::max(d.head(n).cwiseAbs().maxCoeff() / q_size,
+                                     std::abs(d[n]) / (std::abs(s.lambda) + 1e-300));
+        const bool quadratic = step <= 1e-5 && step <= 1e-2 * previous_step &&
+                               step * step * step <= 1e-9 * previous_step * previous_step;
+        if (!changed && (step <= 1e-9 || quadratic)) return true;
+        previous_step = changed ? std::numeric_limits<double>::infinity() : step;
     }
     return false;
 }
@@ -218,11 +222,15 @@ std::string text(const char* format, double a, double b = 0.0) {
     return buf;
 }
 
-// Bisection between a (predicate false) and b (true) on the travel; each trial starts from the
-// nearer end's state. Returns the state at the boundary (within roundoff of the travel).
+// Bisection between a (predicate false) and b (true) on the travel, to a bracket `width` of the
+// travel; each trial starts from the nearer end's state. Returns the state at the boundary.
+// At a fold V^2 is quadratic in the travel, so a bracket of 1e-9 of the travel puts V within
+// about 1e-16 of its extreme (and the travel at pull-in within 1e-9): no need to go to roundoff.
+constexpr double kFoldWidth = 1e-9;
+
 template <class Predicate>
-State bisect(const Model& m, State a, State b, bool fix_modes, int& iterations, Predicate holds) {
-    for (int it = 0; it < 80 && std::abs(b.tau - a.tau) > 4e-16 * std::abs(b.tau); ++it) {
+State bisect(const Model& m, State a, State b, bool fix_modes, int& iterations, double width, Predicate holds) {
+    for (int it = 0; it < 80 && std::abs(b.tau - a.tau) > width * std::abs(b.tau); ++it) {
         State mid = a;
         if (!solve_at(m, 0.5 * (a.tau + b.tau), mid, fix_modes, iterations)) break;
         (holds(mid) ? b : a) = mid;
@@ -344,7 +352,9 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
             State a = previous, b = s;
             b.modes = a.modes;
             if (!solve_at(m, b.tau, b, true, r.newton_iterations)) b = s;
-            const State td = bisect(m, a, b, true, r.newton_iterations, [&](const State& x) { return deepest(m, x) > 0.0; });
+            // The voltage is smooth in the travel there: a bracket at roundoff gives it at roundoff.
+            const State td = bisect(m, a, b, true, r.newton_iterations, 4e-16,
+                                    [&](const State& x) { return deepest(m, x) > 0.0; });
             r.touchdown = describe(m, td);
             r.touchdown->contact = true;
             // Held at touch-down when the closed branch starts stable there.
@@ -358,14 +368,14 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
             if (!r.pullin && open.size() >= 3 && s.lambda < previous.lambda) {
                 // The fold lies between the last two points of rising lambda and this one.
                 const State& a = open[open.size() - 3];
-                const State fold = bisect(m, a, s, false, r.newton_iterations,
+                const State fold = bisect(m, a, s, false, r.newton_iterations, kFoldWidth,
                                           [&](const State& x) { return lambda_slope(m, x) < 0.0; });
                 r.pullin = describe(m, fold);
                 open.insert(open.end() - 1, fold);
             }
         }
         if (closed && r.touchdown && !r.collapse && s.lambda < previous.lambda && any_closed(m, previous)) {
-            const State fold = bisect(m, previous, s, false, r.newton_iterations,
+            const State fold = bisect(m, previous, s, false, r.newton_iterations, kFoldWidth,
                                       [&](const State& x) { return lambda_slope(m, x) < 0.0; });
             r.collapse = describe(m, fold);
         }
