@@ -33,9 +33,15 @@ bool same_time(double a, double b) { return std::abs(a - b) <= 8.0 * kEps * std:
 
 ModalBasis make_basis(const TransientProblem& p, const CvodeOptions& o) {
     if (o.reduced_modes <= 0 || o.reduced_modes >= p.size()) return full_basis(p.K, p.M);
-    std::vector<int> dofs;
-    for (const ForceElementPtr& e : p.forces) dofs.insert(dofs.end(), e->dofs().begin(), e->dofs().end());
-    return reduced_basis(p.K, p.M, o.reduced_modes, dofs, {p.q0, p.v0});
+    std::vector<Eigen::VectorXd> loads;
+    for (const ForceElementPtr& e : p.forces) {
+        for (const std::vector<double>& pattern : e->load_patterns()) {
+            Eigen::VectorXd f = Eigen::VectorXd::Zero(p.size());
+            for (std::size_t i = 0; i < pattern.size(); ++i) f[e->dofs()[i]] += pattern[i];
+            loads.push_back(std::move(f));
+        }
+    }
+    return reduced_basis(p.K, p.M, o.reduced_modes, loads, {p.q0, p.v0});
 }
 
 // SUNDIALS objects, freed in reverse order of creation.

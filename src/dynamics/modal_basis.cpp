@@ -49,7 +49,7 @@ ModalBasis full_basis(const Eigen::SparseMatrix<double>& K, const Eigen::SparseM
 }
 
 ModalBasis reduced_basis(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, int modes,
-                         const std::vector<int>& dofs, const std::vector<Eigen::VectorXd>& extra) {
+                         const std::vector<Eigen::VectorXd>& loads, const std::vector<Eigen::VectorXd>& extra) {
     const Eigen::Index n = K.rows();
     if (modes >= n) return full_basis(K, M);
     const ModeSet set = lowest_modes(K, M, modes);
@@ -60,13 +60,8 @@ ModalBasis reduced_basis(const Eigen::SparseMatrix<double>& K, const Eigen::Spar
         throw std::runtime_error("reduced basis: the beam is free to move as a rigid body (its static corrections do "
                                  "not exist); use solver.reduced_modes = 0");
     }
-    std::vector<int> unique = dofs;
-    std::sort(unique.begin(), unique.end());
-    unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
-    for (int d : unique) {
-        Eigen::VectorXd e = Eigen::VectorXd::Zero(n);
-        e[d] = 1.0;
-        candidates.emplace_back(ldlt.solve(e));
+    for (const Eigen::VectorXd& f : loads) {
+        if (f.size() == n && f.squaredNorm() > 0.0) candidates.emplace_back(ldlt.solve(f));
     }
     for (const Eigen::VectorXd& x : extra) {
         if (x.size() == n && x.squaredNorm() > 0.0) candidates.push_back(x);

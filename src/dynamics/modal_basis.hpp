@@ -21,14 +21,14 @@ struct ModalBasis {
 // Every bending mode: the full FE model in modal coordinates (a dense eigen solve, O(n^3)).
 ModalBasis full_basis(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M);
 
-// A reduced-order basis: the lowest `modes` modes, augmented by the static response K^-1 e_d to a
-// unit force at each DOF in `dofs` (where the force elements act) and by the vectors in `extra`
+// A reduced-order basis: the lowest `modes` modes, augmented by the static response K^-1 f to each
+// load in `loads` (the force elements' load patterns) and by the vectors in `extra`
 // (the initial displacement and velocity, so that the start is represented exactly). The set is
 // made M-orthonormal and diagonalised in its span (a Rayleigh-Ritz solve), so it is again a set of
 // frequencies and vectors: the `modes` lowest are the beam's own, the static corrections become high
 // Ritz frequencies (modal truncation augmentation; docs/model.md §13). Vectors that the others
 // already span (to 1e-10) are dropped.
 ModalBasis reduced_basis(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, int modes,
-                         const std::vector<int>& dofs, const std::vector<Eigen::VectorXd>& extra);
+                         const std::vector<Eigen::VectorXd>& loads, const std::vector<Eigen::VectorXd>& extra);
 
 }  // namespace vi

@@ -11,9 +11,10 @@ namespace vi {
 LineCapacitance line_capacitance(const PadGeometry& g, double gap) {
     const double w = g.width;
     LineCapacitance out;
-    out.c = kEpsilon0 * w / gap;
-    out.dc = -kEpsilon0 * w / (gap * gap);
-    out.d2c = 2.0 * kEpsilon0 * w / (gap * gap * gap);
+    const double inverse = 1.0 / gap;  // one division: this runs at every quadrature point of every step
+    out.c = kEpsilon0 * w * inverse;
+    out.dc = -out.c * inverse;
+    out.d2c = -2.0 * out.dc * inverse;
     if (g.fringing == Fringing::meijs_fokkema) {
         // eps0 (0.77 + 1.06 (w/g)^(1/4) + 1.06 (t/g)^(1/2)) and its derivatives in g.
         const double a = 1.06 * std::pow(w, 0.25), b = 1.06 * std::sqrt(g.beam_thickness);
@@ -146,6 +147,22 @@ std::vector<double> ElectrostaticPad::mean_travel_row() const {
         }
     }
     return r;
+}
+
+std::vector<std::vector<double>> ElectrostaticPad::load_patterns() const {
+    const double centre = 0.5 * (geometry_.from + geometry_.to);
+    const double half = 0.5 * (geometry_.to - geometry_.from);
+    std::vector<std::vector<double>> patterns(3, std::vector<double>(dofs_.size(), 0.0));
+    for (const PadPoint& p : points_) {
+        const double xi = half > 0.0 ? (p.x - centre) / half : 0.0;
+        const double moment[3] = {1.0, xi, xi * xi};
+        for (int k = 0; k < 3; ++k) {
+            for (int i = 0; i < 4; ++i) {
+                if (p.local[i] >= 0) patterns[static_cast<std::size_t>(k)][static_cast<std::size_t>(p.local[i])] += moment[k] * p.weight * p.shape[i];
+            }
+        }
+    }
+    return patterns;
 }
 
 }  // namespace vi

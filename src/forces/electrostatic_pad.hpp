@@ -71,6 +71,9 @@ public:
     [[nodiscard]] double force_scale() const override;
     [[nodiscard]] std::vector<double> breakpoints(double t0, double t1) const override { return time_.breakpoints(t0, t1); }
     [[nodiscard]] double position() const override { return 0.5 * (geometry_.from + geometry_.to); }
+    // A line load over the span that is constant, linear and quadratic in x: the shapes the force
+    // takes as the gap closes unevenly, for a reduced-order model's static corrections.
+    [[nodiscard]] std::vector<std::vector<double>> load_patterns() const override;
 
     // V(t) [V].
     [[nodiscard]] double voltage(double t) const { return voltage_ * time_(t); }

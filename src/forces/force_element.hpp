@@ -82,6 +82,16 @@ public:
     // Whether a watch function needs the accelerations (ElementState::a).
     [[nodiscard]] virtual bool watch_needs_acceleration() const { return false; }
 
+    // Generalised load patterns over dofs() whose static responses a reduced-order model adds to its
+    // modes (modal truncation augmentation, docs/model.md §13): by default a unit force at each DOF;
+    // an element spread over many DOFs gives the few shapes its own load takes instead, or the
+    // reduced model would keep every DOF it touches.
+    [[nodiscard]] virtual std::vector<std::vector<double>> load_patterns() const {
+        std::vector<std::vector<double>> unit(dofs().size(), std::vector<double>(dofs().size(), 0.0));
+        for (std::size_t i = 0; i < unit.size(); ++i) unit[i][i] = 1.0;
+        return unit;
+    }
+
     // The largest magnitude of a force it prescribes [N] (a load's amplitude times max |g|), for the
     // scales of solver tolerances; 0 when its force follows from the motion alone.
     [[nodiscard]] virtual double force_scale() const { return 0.0; }
