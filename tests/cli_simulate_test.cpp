@@ -110,7 +110,7 @@ TEST_F(CliSimulate, JsonHasEveryKeyWithItsType) {
     ASSERT_TRUE(j["energy"].is_object());
     for (const char* when : {"initial", "final"}) {
         ASSERT_TRUE(j["energy"][when].is_object()) << when;
-        for (const char* key : {"kinetic_j", "strain_j", "contact_spring_j", "rayleigh_dissipated_j",
+        for (const char* key : {"kinetic_j", "strain_j", "contact_spring_j", "electrical_j", "rayleigh_dissipated_j",
                                 "contact_dissipated_j", "external_work_j"}) {
             EXPECT_TRUE(j["energy"][when][key].is_number()) << when << "." << key;
         }

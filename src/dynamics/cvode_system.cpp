@@ -192,7 +192,14 @@ EnergyLedger ModalSystem::energy(double t, const double* y, double jump) const {
     EnergyLedger e;
     e.kinetic = 0.5 * vel.squaredNorm();
     e.strain = 0.5 * eta.dot(w2_.cwiseProduct(eta));
-    for (int k = 0; k < elements(); ++k) e.contact_spring += stored_energy(k, modes_[static_cast<std::size_t>(k)], t, y);
+    for (int k = 0; k < elements(); ++k) {
+        const double stored = stored_energy(k, modes_[static_cast<std::size_t>(k)], t, y);
+        switch (element(k).stored_energy_kind()) {
+            case StoredEnergyKind::contact_spring: e.contact_spring += stored; break;
+            case StoredEnergyKind::electrical: e.electrical += stored; break;
+            case StoredEnergyKind::strain: e.strain += stored; break;
+        }
+    }
     e.rayleigh_dissipated = y[rayleigh_index()];
     e.contact_dissipated = y[dissipation_index()] + jump;
     e.external_work = y[work_index()];

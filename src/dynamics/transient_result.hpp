@@ -19,11 +19,13 @@ struct ContactEpisode {
     bool closed_at_end = false;   // still in contact when the horizon ended
 };
 
-// Energy terms [J]; with no damping, kinetic + strain + contact_spring - external_work is conserved.
+// Energy terms [J]; with no damping, kinetic + strain + contact_spring + electrical - external_work is
+// conserved (external_work includes the electrodes' source work, docs/electrostatics.md §2).
 struct EnergyLedger {
     double kinetic = 0.0;             // 1/2 v^T M v
     double strain = 0.0;              // 1/2 q^T K q
     double contact_spring = 0.0;      // sum of 1/2 Kc d^2 over closed contacts
+    double electrical = 0.0;          // the electrodes' stored energy, -C V^2 / 2 (co-energy's negative)
     double rayleigh_dissipated = 0.0; // integral of v^T C v dt
     double contact_dissipated = 0.0;  // integral of Cc (dd/dt)^2 dt over closed contacts
     double external_work = 0.0;       // integral of Q(t)^T v dt, contact surfaces' static part excluded

@@ -64,6 +64,7 @@ public:
     void add_force(const ElementState& s, int mode, double* f) const override;
     void add_tangent(const ElementState& s, int mode, double* dfdq, double* dfdv) const override;
     [[nodiscard]] double stored_energy(const ElementState& s, int mode) const override;
+    [[nodiscard]] StoredEnergyKind stored_energy_kind() const override { return StoredEnergyKind::electrical; }
     [[nodiscard]] double dissipated_power(const ElementState&, int) const override { return 0.0; }
     [[nodiscard]] double input_power(const ElementState& s, int mode) const override;
     // Acts from t = 0 on: the static state a transient starts from is without voltage.

@@ -31,6 +31,10 @@ struct ContactReading {
     double point_velocity = 0.0;
 };
 
+// Which term of the energy ledger an element's stored energy belongs to: a contact's spring, the
+// electrical co-energy of an electrode (-C V^2/2), or strain energy (mid-plane stretching).
+enum class StoredEnergyKind { contact_spring, electrical, strain };
+
 // A force element. Forces are generalised nodal forces on dofs() [N, N m], positive along the DOF.
 //
 // Modes: an element may be hybrid (a contact is open or closed). Mode 0 is the first; modes() says
@@ -59,6 +63,8 @@ public:
     virtual void add_tangent(const ElementState& s, int mode, double* dfdq, double* dfdv) const = 0;
     // Energy stored in the element [J] (a contact spring's 1/2 Kc d^2).
     [[nodiscard]] virtual double stored_energy(const ElementState& s, int mode) const = 0;
+    // The ledger term stored_energy goes to.
+    [[nodiscard]] virtual StoredEnergyKind stored_energy_kind() const { return StoredEnergyKind::contact_spring; }
     // Power it dissipates [W], >= 0 (a contact damper's Cc (dd/dt)^2).
     [[nodiscard]] virtual double dissipated_power(const ElementState& s, int mode) const = 0;
     // Power an external source delivers through it [W] (a load's Q(t) v).

@@ -15,6 +15,7 @@ nlohmann::json energy_json(const EnergyLedger& e) {
     return {{"kinetic_j", e.kinetic},
             {"strain_j", e.strain},
             {"contact_spring_j", e.contact_spring},
+            {"electrical_j", e.electrical},
             {"rayleigh_dissipated_j", e.rayleigh_dissipated},
             {"contact_dissipated_j", e.contact_dissipated},
             {"external_work_j", e.external_work}};
@@ -149,8 +150,8 @@ CsvTable history_csv(const TransientResult& r) {
     }
     const bool energy = h.energy.size() == h.t.size();
     if (energy) {
-        t.header.insert(t.header.end(), {"kinetic_j", "strain_j", "contact_spring_j", "rayleigh_dissipated_j",
-                                         "contact_dissipated_j", "external_work_j"});
+        t.header.insert(t.header.end(), {"kinetic_j", "strain_j", "contact_spring_j", "electrical_j",
+                                         "rayleigh_dissipated_j", "contact_dissipated_j", "external_work_j"});
     }
     for (std::size_t i = 0; i < h.t.size(); ++i) {
         std::vector<double> row{h.t[i], h.tip_v[i], h.tip_velocity[i]};
@@ -159,8 +160,8 @@ CsvTable history_csv(const TransientResult& r) {
         }
         if (energy) {
             const EnergyLedger& e = h.energy[i];
-            row.insert(row.end(), {e.kinetic, e.strain, e.contact_spring, e.rayleigh_dissipated, e.contact_dissipated,
-                                   e.external_work});
+            row.insert(row.end(), {e.kinetic, e.strain, e.contact_spring, e.electrical, e.rayleigh_dissipated,
+                                   e.contact_dissipated, e.external_work});
         }
         t.add_row(std::move(row));
     }

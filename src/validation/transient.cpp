@@ -43,7 +43,7 @@ Attempt attempt(Solve solve) {
     return a;
 }
 
-double conserved(const EnergyLedger& e) { return e.kinetic + e.strain + e.contact_spring - e.external_work; }
+double conserved(const EnergyLedger& e) { return e.kinetic + e.strain + e.contact_spring + e.electrical - e.external_work; }
 double with_losses(const EnergyLedger& e) { return conserved(e) + e.rayleigh_dissipated + e.contact_dissipated; }
 
 // Worst relative departure of f(E(t)) from f(E(0)) over the samples and at the end.
