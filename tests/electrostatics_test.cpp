@@ -210,7 +210,13 @@ poisson_ratio = 0.31
         {"from = 0.2\nto = 0.8\ngap = \"1 um\"\nvoltage = \"5 V\"\nwaveform = \"pulse\"\nrise = \"1 us\"\nhold = \"2 us\"\n",
          "electrodes[0].fall"},
         {"from = 0.2\nto = 0.8\ngap = \"1 um\"\nvoltage = \"5 V\"\nrise = \"1 us\"\n", "only with"},
+        // w/g = 30 um / 0.5 um = 60: outside the range Meijs and Fokkema state their formula for.
+        {"from = 0.2\nto = 0.8\ngap = \"0.5 um\"\nvoltage = \"5 V\"\nfringing = \"meijs-fokkema\"\n",
+         "electrodes[0].fringing: \"meijs-fokkema\" holds for 0.3 <= w/g <= 30"},
     };
+    // Inside the range (w/g = 15, t/g = 1) it is taken.
+    EXPECT_NO_THROW((void)read_case_text(base + "from = 0.2\nto = 0.8\ngap = \"2 um\"\nvoltage = \"5 V\"\n"
+                                                "fringing = \"meijs-fokkema\"\n", "good.toml"));
     for (const auto& [body, expected] : cases) {
         try {
             (void)read_case_text(base + body, "bad.toml");
