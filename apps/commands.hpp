@@ -26,5 +26,6 @@ CommandBody add_validate_command(CLI::App& app);
 CommandBody add_sweep_command(CLI::App& app);
 CommandBody add_paper_command(CLI::App& app);
 CommandBody add_pullin_command(CLI::App& app);
+CommandBody add_switch_report_command(CLI::App& app);
 
 }  // namespace vi::cli

@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
     add(add_sweep_command);
     add(add_paper_command);
     add(add_pullin_command);
+    add(add_switch_report_command);
 
     try {
         app.parse(argc, argv);

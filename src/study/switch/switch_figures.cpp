@@ -1,0 +1,155 @@
+// The switch report's figures: the pull-in curve, C-V, f-V and the switching transient.
+
+#include <algorithm>
+#include <limits>
+#include <optional>
+#include <sstream>
+
+#include "report/csv_text.hpp"
+#include "study/switch/switch_study.hpp"
+
+namespace vi {
+namespace {
+
+constexpr const char* kGrid = "set grid lc rgb '#dddddd'\nset key top left\n";
+
+// The equilibria as CSV: stable and unstable points in separate columns so that gnuplot draws the
+// unstable branch dashed.
+std::string branch_csv(const PullinResult& r) {
+    CsvText t;
+    t.header = {"watched_travel_um", "mean_travel_um", "voltage_stable_V", "voltage_unstable_V", "capacitance_fF", "contact"};
+    for (const PullinPoint& p : r.branch) {
+        const double nan = std::numeric_limits<double>::quiet_NaN();
+        t.add({cell(p.watched_travel * 1e6), cell(p.travel * 1e6), cell(p.stable ? p.voltage : nan),
+               cell(p.stable ? nan : p.voltage), cell(p.capacitance * 1e15), p.contact ? "1" : "0"});
+    }
+    return t.str();
+}
+
+std::string marker(int id, const char* what, const PullinPoint& p, double x_um, const char* colour) {
+    std::ostringstream s;
+    s << "set label " << id << " sprintf('" << what << " %.2f V', " << p.voltage << ") at first " << x_um << ", first "
+      << p.voltage << " point pointtype 7 pointsize 1.2 lc rgb '" << colour << "' offset 1,-0.2 textcolor rgb '" << colour << "'\n";
+    return s.str();
+}
+
+FigureSpec pullin_figure(const SwitchStudy& s) {
+    const PullinResult& r = s.pullin;
+    FigureSpec f;
+    f.name = "switch_pullin";
+    f.title = "Static pull-in: voltage against travel";
+    f.caption = "Equilibria traced by displacement control (vibroimpact pullin): the voltage that holds the beam at each "
+                "travel of the watched point (x/l = " + cell(r.watched_x) +
+                ") toward the electrode, stable (solid) and unstable (dashed). Pull-in is the fold of the open branch; "
+                "after touch-down the contact holds the beam; release is the lowest voltage of a stable closed state.";
+    f.data = {{"switch_pullin.csv", branch_csv(r)}};
+    std::ostringstream p;
+    p << kGrid << "set xlabel 'travel of the watched point toward the electrode  [μm]'\nset ylabel 'voltage  [V]'\n";
+    int id = 1;
+    if (r.pullin) p << marker(id++, "pull-in", *r.pullin, r.pullin->watched_travel * 1e6, "#d62728");
+    if (r.touchdown) p << marker(id++, "touch-down", *r.touchdown, r.touchdown->watched_travel * 1e6, "#2ca02c");
+    if (r.collapse) p << marker(id++, "collapse", *r.collapse, r.collapse->watched_travel * 1e6, "#9467bd");
+    p << "plot 'switch_pullin.csv' using 1:3 with lines lw 2 lc rgb '#1f77b4' title 'stable', "
+         "'' using 1:4 with lines lw 2 dt 2 lc rgb '#ff7f0e' title 'unstable'\n";
+    f.plot = p.str();
+    return f;
+}
+
+FigureSpec cv_figure(const SwitchStudy& s) {
+    FigureSpec f;
+    f.name = "switch_cv";
+    f.title = "Capacitance against voltage";
+    f.caption = "Capacitance of all electrodes along the traced equilibria (stable solid, unstable dashed): the C-V "
+                "curve a capacitance meter sees on the way up to pull-in, and the closed state's.";
+    f.data = {{"switch_cv.csv", branch_csv(s.pullin)}};
+    f.plot = std::string(kGrid) + "set xlabel 'voltage  [V]'\nset ylabel 'capacitance  [fF]'\n"
+             "plot 'switch_cv.csv' using 3:5 with lines lw 2 lc rgb '#1f77b4' title 'stable', "
+             "'' using 4:5 with lines lw 2 dt 2 lc rgb '#ff7f0e' title 'unstable'\n";
+    return f;
+}
+
+FigureSpec fv_figure(const SwitchStudy& s) {
+    const PullinResult& r = s.pullin;
+    CsvText t;
+    std::size_t modes = 0;
+    for (const PullinFrequencies& x : r.frequencies) modes = std::max(modes, x.frequency_hz.size());
+    t.header = {"voltage_V"};
+    for (std::size_t k = 0; k < modes; ++k) {
+        std::string name = "f";
+        name += std::to_string(k + 1);
+        name += "_kHz";
+        t.header.push_back(name);
+    }
+    for (const PullinFrequencies& x : r.frequencies) {
+        std::vector<std::string> row{cell(x.voltage)};
+        for (std::size_t k = 0; k < modes; ++k) {
+            row.push_back(k < x.frequency_hz.size() ? cell(x.frequency_hz[k] * 1e-3) : cell(std::optional<double>()));
+        }
+        t.add(std::move(row));
+    }
+    FigureSpec f;
+    f.name = "switch_fv";
+    f.title = "Natural frequencies against DC bias";
+    f.caption = "The lowest bending frequencies about the stable open equilibria up to pull-in: electrostatic softening "
+                "pulls the first toward zero at V_PI.";
+    f.data = {{"switch_fv.csv", t.str()}};
+    std::ostringstream p;
+    p << kGrid << "set key top right\nset xlabel 'DC bias  [V]'\nset ylabel 'frequency  [kHz]'\nset logscale y\n";
+    if (modes == 0) {
+        p << "set label 1 'no stable open equilibria' at graph 0.5, graph 0.5 center\nplot [0:1] [1:10] NaN notitle\n";
+    } else {
+        p << "plot ";
+        for (std::size_t k = 0; k < modes; ++k) {
+            p << (k ? ", " : "") << "'switch_fv.csv' using 1:" << k + 2 << " with linespoints lw 2 pt 7 ps 0.6 title 'f_" << k + 1
+              << "'";
+        }
+        p << "\n";
+    }
+    f.plot = p.str();
+    return f;
+}
+
+FigureSpec transient_figure(const SwitchStudy& s) {
+    const TimeHistory& h = s.transient.result.history;
+    const Electrode& e = s.c.electrodes.front();
+    CsvText t;
+    t.header = {"t_us", "watched_um", "contact_force_uN", "voltage_V"};
+    for (std::size_t i = 0; i < h.t.size(); ++i) {
+        double force = 0.0;
+        for (const auto& f : h.contact_force) force += f[i];
+        t.add({cell(h.t[i] * 1e6), cell(h.tip_v[i] * 1e6), cell(force * 1e6), cell(e.voltage * e.time(h.t[i]))});
+    }
+    FigureSpec f;
+    f.name = "switch_transient";
+    f.title = "Switching transient";
+    f.caption = "The case's transient (vibroimpact simulate): (a) the watched point's displacement with the contact "
+                "episodes shaded and the voltage of electrodes[0]; (b) the total contact force.";
+    f.data = {{"switch_transient.csv", t.str()}};
+    f.height = 760;
+    std::ostringstream p;
+    // Fixed margins: both panels share the time axis, though only (a) has a right-hand axis.
+    p << "set multiplot layout 2,1\n" << kGrid << "set xlabel 't  [μs]'\nset lmargin 10\nset rmargin 10\n";
+    int obj = 1;
+    for (const ContactEpisode& c : s.transient.result.episodes) {
+        if (obj > 200) break;  // a chattering run would bury the curve under its shading
+        p << "set object " << obj++ << " rect from first " << c.t_on * 1e6 << ", graph 0 to first " << c.t_off * 1e6
+          << ", graph 1 fillcolor rgb '#e8e8e8' fillstyle solid noborder behind\n";
+    }
+    p << "set ylabel 'displacement  [μm]'\nset y2label 'voltage  [V]'\nset y2tics\nset ytics nomirror\nset y2range [0:*]\n"
+         "set title '(a) watched point (x/l = " << cell(s.pullin.watched_x) << ") and voltage'\n"
+         "plot 'switch_transient.csv' using 1:2 with lines lw 1.5 lc rgb '#1f77b4' title 'displacement', "
+         "'' using 1:4 axes x1y2 with lines lw 1 dt 2 lc rgb '#7f7f7f' title 'voltage'\n"
+         "unset object\nunset y2label\nunset y2tics\nset ytics mirror\n"
+         "set title '(b) contact force'\nset ylabel 'force  [μN]'\n"
+         "plot 'switch_transient.csv' using 1:3 with lines lw 1.5 lc rgb '#d62728' notitle\nunset multiplot\n";
+    f.plot = p.str();
+    return f;
+}
+
+}  // namespace
+
+std::vector<FigureSpec> switch_figures(const SwitchStudy& s) {
+    return {pullin_figure(s), cv_figure(s), fv_figure(s), transient_figure(s)};
+}
+
+}  // namespace vi
