@@ -199,4 +199,18 @@ std::vector<RenderedFigure> render_figures(const std::string& gnuplot, const std
     return out;
 }
 
+std::map<std::string, std::string> figure_files(const std::vector<FigureSpec>& figures,
+                                                const std::vector<RenderedFigure>& rendered,
+                                                std::map<std::string, std::string>* png) {
+    std::map<std::string, std::string> files;
+    for (std::size_t i = 0; i < figures.size() && i < rendered.size(); ++i) {
+        files[figures[i].name + ".png"] = rendered[i].png;
+        files[figures[i].name + ".svg"] = rendered[i].svg;
+        files[figures[i].name + ".gp"] = rendered[i].script;
+        for (const auto& [name, text] : figures[i].data) files[name] = text;
+        if (png) (*png)[figures[i].name] = rendered[i].png;
+    }
+    return files;
+}
+
 }  // namespace vi

@@ -2,6 +2,7 @@
 // Figures drawn by gnuplot: a figure is its data (CSV text) and the gnuplot commands that plot it;
 // rendering writes both into a temporary folder, runs gnuplot there and reads back PNG and SVG.
 
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -41,6 +42,13 @@ std::string gnuplot_script(const FigureSpec& f);
 // gnuplot runs for more than 10 minutes. A stop request (model/run_control.hpp) kills the gnuplot
 // processes and throws StopRequested.
 std::vector<RenderedFigure> render_figures(const std::string& gnuplot, const std::vector<FigureSpec>& figures, int threads);
+
+// The files of rendered figures, name -> contents: per figure <name>.png, .svg, .gp and its data
+// files; and in `png` (if given) each figure's PNG by name, for a page to embed. `rendered` is in
+// the order of `figures`.
+std::map<std::string, std::string> figure_files(const std::vector<FigureSpec>& figures,
+                                                const std::vector<RenderedFigure>& rendered,
+                                                std::map<std::string, std::string>* png = nullptr);
 
 // Text for a gnuplot string in single quotes (quotes doubled).
 std::string gp_quote(const std::string& s);

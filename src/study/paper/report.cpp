@@ -161,15 +161,8 @@ std::string claims_json(const std::vector<Claim>& claims) {
 
 OutputFiles paper_output_files(const PaperStudy& st, const std::vector<Claim>& claims, const std::vector<FigureSpec>& figs,
                                const std::vector<RenderedFigure>& rendered, const ReportRun& run) {
-    OutputFiles files;
     std::map<std::string, std::string> png;
-    for (std::size_t i = 0; i < figs.size() && i < rendered.size(); ++i) {
-        files[figs[i].name + ".png"] = rendered[i].png;
-        files[figs[i].name + ".svg"] = rendered[i].svg;
-        files[figs[i].name + ".gp"] = rendered[i].script;
-        for (const auto& [name, text] : figs[i].data) files[name] = text;
-        png[figs[i].name] = rendered[i].png;
-    }
+    OutputFiles files = figure_files(figs, rendered, &png);
     const ReportDocument doc = paper_report(st, claims, figs, run);
     files["report.html"] = render_html(doc, png);
     files["report.md"] = render_markdown(doc);

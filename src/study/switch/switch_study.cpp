@@ -122,16 +122,13 @@ OutputFiles switch_report_files(const SwitchStudy& s, const std::vector<FigureSp
     const OutputFiles transient = transient_files(s.c, s.transient.built, s.transient.result, s.transient.summary);
     files.insert(transient.begin(), transient.end());
     std::map<std::string, std::string> png;
+    const OutputFiles drawn = figure_files(figures, rendered, &png);
+    files.insert(drawn.begin(), drawn.end());
     ReportDocument doc = switch_report(s, command);
-    for (std::size_t i = 0; i < figures.size() && i < rendered.size(); ++i) {
-        files[figures[i].name + ".png"] = rendered[i].png;
-        files[figures[i].name + ".svg"] = rendered[i].svg;
-        files[figures[i].name + ".gp"] = rendered[i].script;
-        for (const auto& [name, text] : figures[i].data) files[name] = text;
-        png[figures[i].name] = rendered[i].png;
-        // The captions live with the figures: fill them into the page's figure blocks.
+    // The captions live with the figures: fill them into the page's figure blocks.
+    for (const FigureSpec& f : figures) {
         for (ReportBlock& b : doc.blocks) {
-            if (b.kind == ReportBlock::Kind::figure && b.figure == figures[i].name) b.caption = figures[i].caption;
+            if (b.kind == ReportBlock::Kind::figure && b.figure == f.name) b.caption = f.caption;
         }
     }
     files["report.html"] = render_html(doc, png);
