@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/cvode_solver.hpp"
 #include "dynamics/problem_builder.hpp"
 #include "dynamics/pullin.hpp"
 #include "fem/system.hpp"
@@ -20,6 +22,8 @@
 #include "modal/modal_analysis.hpp"
 #include "model/case_checks.hpp"
 #include "model/input_error.hpp"
+#include "support/run_command.hpp"
+#include "support/test_files.hpp"
 #include "validation/axial_references.hpp"
 
 namespace vi {
@@ -217,6 +221,48 @@ TEST(AxialInput, FreeEndsAndBucklingAreRefusedWithTheKey) {
     // Just below buckling is accepted and K stays positive definite (the FE model buckles above Euler).
     const Case c = bridge(10, "left = \"pinned\"\nright = \"pinned\"", "residual_stress = \"-7.3 MPa\"");
     EXPECT_GT(analyse_modes(build_system(c), 1).bending[0].omega, 0.0);
+}
+
+
+// The bridge switch example: pull-in from the command line (stretching and residual stress raise it
+// from the bare bridge's), and a step to 1.2 V_PI that closes the switch with the energy ledger
+// (kinetic + strain + stretching + contact springs - C V^2/2 + dissipated) constant to 1e-6 of the
+// electrical energy.
+TEST(BridgeSwitchExample, PullinAndAClosingTransientWithItsEnergyBalance) {
+    const std::string file = test::source_path("examples/switch/bridge_switch.toml");
+    const auto r = test::run_vibroimpact({"pullin", file, "--json"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json j = nlohmann::json::parse(r.out);
+    const double v_pi = j["pullin"]["voltage_V"].get<double>();
+    EXPECT_GT(v_pi, 55.0);
+    EXPECT_LT(v_pi, 61.0);
+    EXPECT_LT(j["release_voltage_V"].get<double>(), v_pi);
+
+    const Case c = read_case_file(file);
+    Case bare = c;
+    bare.beam.stretching = false;
+    bare.beam.residual_stress = 0.0;
+    const PullinResult b = trace_pullin(bare);
+    ASSERT_TRUE(b.pullin.has_value());
+    std::printf("bridge example: V_PI %.4f V, without stretching and residual stress %.4f V\n", v_pi, b.pullin->voltage);
+    EXPECT_GT(v_pi, 1.5 * b.pullin->voltage);
+
+    const BuiltProblem built = build_transient_problem(c);
+    CvodeOptions o;
+    o.rtol = 1e-9;  // at the example's 1e-8 the ledger drifts by 1.3e-6
+    const TransientResult t = solve_cvode(built.problem, o);
+    ASSERT_FALSE(t.episodes.empty());
+    const auto total = [](const EnergyLedger& e) {
+        return e.kinetic + e.strain + e.contact_spring + e.contact_dissipated + e.rayleigh_dissipated - e.external_work;
+    };
+    // The stretching's stored energy is zero at rest: contact_spring starts as -C V^2 / 2.
+    const double electrical = std::abs(t.initial_energy.contact_spring);
+    const double drift = std::abs(total(t.final_energy) - total(t.initial_energy)) / electrical;
+    std::printf("bridge example: first contact %.4g us, %zu episodes, ledger drift %.2e of C V^2/2\n",
+                t.episodes.front().t_on * 1e6, t.episodes.size(), drift);
+    EXPECT_LT(drift, 1e-6);
+    EXPECT_GT(t.episodes.front().t_on, 1e-6);
+    EXPECT_TRUE(t.episodes.back().closed_at_end);
 }
 
 }  // namespace
