@@ -82,7 +82,7 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
         EXPECT_FALSE(case_path_unit(p).empty());
         ++checked;
     }
-    EXPECT_EQ(checked, 46);
+    EXPECT_EQ(checked, 47);
 }
 
 TEST(SweepCasePaths, ValuesLandWhereTheCaseFileWouldPutThem) {
@@ -154,7 +154,7 @@ TEST(SweepCasePaths, BadPathsSayWhatIsWrong) {
         {"loads[0].amplitude", &alpha, "loads[0]: index out of range (the case has 0 loads)"},
         {"supports.position", &full, "supports: needs an index, like supports[0].position"},
         {"supports", &full, "supports: needs an index and a key"},
-        {"beam", &full, "beam: needs a key (length, width, thickness, elements)"},
+        {"beam", &full, "beam: needs a key (length, width, thickness, elements, residual_stress)"},
         {"beam[0].length", &full, "beam: takes no index"},
         {"beam.length[0]", &full, "beam.length: takes no index"},
         {"damping.ratios", &full, "damping.ratios: needs an index, [0] or [1]"},

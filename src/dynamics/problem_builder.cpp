@@ -9,6 +9,7 @@
 #include "dynamics/electrode_elements.hpp"
 #include "dynamics/initial_state.hpp"
 #include "forces/kelvin_voigt_contact.hpp"
+#include "forces/midplane_stretching.hpp"
 #include "forces/point_load_element.hpp"
 #include "model/input_error.hpp"
 #include "modal/eigen_solver.hpp"
@@ -16,7 +17,9 @@
 
 // The transient works on the bending DOFs (v, theta) only. In this linear beam model axial and
 // bending decouple, supports and loads act transversely, so the axial DOFs are never loaded and stay
-// at rest: leaving them out changes nothing but the size of the problem.
+// at rest: leaving them out changes nothing but the size of the problem. Mid-plane stretching is the
+// one coupling, and it enters as a force element whose axial force is uniform along the beam (the
+// axial DOFs' equilibrium with the ends held, solved in closed form), so they stay out.
 
 namespace vi {
 namespace {
@@ -196,6 +199,11 @@ BuiltProblem build_transient_problem(const Case& c) {
     add_contacts(c, s, pos, modes.shapes.col(0), b);
     add_loads(c, s, b);
     for (auto& pad : electrode_elements(c, s, pos, false)) p.forces.push_back(std::move(pad));
+    if (c.beam.stretching) {
+        // The axis's lengthening, on every bending DOF; E is the modulus bending uses.
+        p.forces.push_back(std::make_shared<MidplaneStretching>("beam.stretching", submatrix(s.G, s.bending),
+                                                                s.props.E * s.props.A / s.length));
+    }
 
     // The static step: the time-dependent loads are not part of it (they act from t = 0 on).
     std::vector<bool> is_v(s.bending.size());

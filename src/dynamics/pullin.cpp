@@ -83,6 +83,9 @@ bool evaluate(const Model& m, const State& s, Eigen::VectorXd& force, SparseMatr
     for (std::size_t k = 0; k < m.contacts.size(); ++k) {
         if (!add_element(*m.contacts[k], s.modes[k], s.q, 1.0, force, pj)) return false;
     }
+    for (const ForceElementPtr& e : m.structural) {
+        if (!add_element(*e, 0, s.q, 1.0, force, pj)) return false;
+    }
     for (const PadPtr& p : m.pads) {
         if (!add_element(*p, 0, s.q, s.lambda, force, pj)) return false;
     }
@@ -274,7 +277,12 @@ PullinModel pullin_model(const Case& c) {
     m.K = b.problem.K;
     m.M = b.problem.M;
     for (const ForceElementPtr& e : b.problem.forces) {
-        if (e->is_contact()) m.contacts.push_back(e);
+        if (e->is_contact()) {
+            m.contacts.push_back(e);
+        } else if (e->in_static_state()) {
+            if (e->modes() != 1) throw std::logic_error(e->name() + ": pull-in takes only smooth elements besides contacts");
+            m.structural.push_back(e);
+        }
     }
     m.pads = electrode_elements(c, b.system, bending_positions(b.system), true);
     const ElectrostaticPad& first = *m.pads.front();
@@ -305,9 +313,11 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
     s.q = Eigen::VectorXd::Zero(n);
     s.modes.assign(m.contacts.size(), 0);
     {
-        const StaticState rest = solve_static(m.K, m.contacts, Eigen::VectorXd::Zero(n), {}, m.max_iterations);
+        ForceSet at_rest = m.contacts;
+        at_rest.insert(at_rest.end(), m.structural.begin(), m.structural.end());
+        const StaticState rest = solve_static(m.K, at_rest, Eigen::VectorXd::Zero(n), {}, m.max_iterations);
         s.q = rest.q;
-        s.modes = rest.modes;
+        s.modes.assign(rest.modes.begin(), rest.modes.begin() + static_cast<std::ptrdiff_t>(m.contacts.size()));
         s.tau = m.row.dot(s.q);
     }
     std::vector<State> open;  // the open branch, for frequencies and the fold

@@ -51,10 +51,12 @@ struct PullinResult {
 };
 
 // What the continuation works on: the beam's stiffness and mass over its bending DOFs, the contact
-// elements, the electrodes at 1 V, and r with r . q the mean travel toward electrodes[0] [m].
+// elements, the smooth structural elements (their force and tangent join K q and K), the electrodes
+// at 1 V, and r with r . q the mean travel toward electrodes[0] [m].
 struct PullinModel {
     SparseMatrix K, M;                                       // [N/m], [kg]
     std::vector<ForceElementPtr> contacts;                   // contact elements (their static modes)
+    std::vector<ForceElementPtr> structural;                 // smooth elements acting at rest (mid-plane stretching)
     std::vector<std::shared_ptr<const ElectrostaticPad>> pads;  // every electrode at 1 V
     Eigen::VectorXd row;                                     // r [-]
     int watched = -1;                                        // DOF of the watched point's v, or -1

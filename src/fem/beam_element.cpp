@@ -40,6 +40,19 @@ ElementMatrix element_mass(const ElementProperties& p, double L) {
     return m;
 }
 
+ElementMatrix element_geometric_stiffness(double L) {
+    ElementMatrix g = ElementMatrix::Zero();
+    const double c = 1.0 / (30.0 * L);
+    const int b[4] = {1, 2, 4, 5};
+    const double gb[4][4] = {{36, 3 * L, -36, 3 * L},
+                             {3 * L, 4 * L * L, -3 * L, -L * L},
+                             {-36, -3 * L, 36, -3 * L},
+                             {3 * L, -L * L, -3 * L, 4 * L * L}};
+    for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j) g(b[i], b[j]) = c * gb[i][j];
+    return g;
+}
+
 Eigen::Vector4d hermite_v_coefficients(double L, double v1, double t1, double v2, double t2) {
     // From N1 = 1 - 3xi^2 + 2xi^3, N2 = L(xi - 2xi^2 + xi^3), N3 = 3xi^2 - 2xi^3, N4 = L(-xi^2 + xi^3).
     const double a1 = L * t1;

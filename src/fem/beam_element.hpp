@@ -22,6 +22,11 @@ ElementMatrix element_stiffness(const ElementProperties& p, double L);
 // Consistent mass matrix of an element of length L [m]: linear axial and cubic Hermite bending [kg].
 ElementMatrix element_mass(const ElementProperties& p, double L);
 
+// Geometric stiffness of an element of length L [m] per unit axial force (tension positive) [1/m]:
+// int N_i' N_j' dx on the bending DOFs (the Hermite cubics), zero on the axial ones. N G q is the
+// transverse force an axial force N exerts through the slope.
+ElementMatrix element_geometric_stiffness(double L);
+
 // Transverse displacement v at local coordinate xi in [0, 1] from nodal (v1, theta1, v2, theta2).
 double hermite_v(double xi, double L, double v1, double t1, double v2, double t2);
 

@@ -45,11 +45,17 @@ System build_system(const Case& c, SupportModel model) {
     using Triplet = Eigen::Triplet<double>;
     std::vector<Triplet> kt;
     std::vector<Triplet> mt;
+    std::vector<Triplet> gt;
     kt.reserve(static_cast<std::size_t>(36 * s.mesh.element_count()));
     mt.reserve(kt.capacity());
+    gt.reserve(kt.capacity());
+    // The residual stress's axial force: constant along a beam whose ends hold the axis (case checks
+    // refuse it otherwise), so its geometric stiffness is linear and joins K.
+    s.axial_force = c.beam.axis_held() ? c.beam.residual_stress * c.beam.area() : 0.0;
     for (int e = 0; e < s.mesh.element_count(); ++e) {
         const double L = s.mesh.element_length(e);
-        const ElementMatrix ke = element_stiffness(s.props, L);
+        const ElementMatrix ge = element_geometric_stiffness(L);
+        const ElementMatrix ke = element_stiffness(s.props, L) + s.axial_force * ge;
         const ElementMatrix me = element_mass(s.props, L);
         for (int i = 0; i < 6; ++i) {
             const int ri = s.reduced_of[3 * e + i];
@@ -59,6 +65,7 @@ System build_system(const Case& c, SupportModel model) {
                 if (rj < 0) continue;
                 if (ke(i, j) != 0.0) kt.emplace_back(ri, rj, ke(i, j));
                 if (me(i, j) != 0.0) mt.emplace_back(ri, rj, me(i, j));
+                if (ge(i, j) != 0.0) gt.emplace_back(ri, rj, ge(i, j));
             }
         }
     }
@@ -70,8 +77,10 @@ System build_system(const Case& c, SupportModel model) {
     const int n = s.size();
     s.K.resize(n, n);
     s.M.resize(n, n);
+    s.G.resize(n, n);
     s.K.setFromTriplets(kt.begin(), kt.end());
     s.M.setFromTriplets(mt.begin(), mt.end());
+    s.G.setFromTriplets(gt.begin(), gt.end());
     return s;
 }
 

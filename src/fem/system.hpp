@@ -28,7 +28,9 @@ struct System {
     int total_dofs = 0;                  // 3 x nodes, constrained included
     std::vector<int> free_dofs;          // global DOF of each reduced DOF, ascending
     std::vector<int> reduced_of;         // reduced index of each global DOF, -1 if constrained
-    SparseMatrix K;                      // stiffness over free DOFs [N/m]
+    SparseMatrix K;                      // stiffness over free DOFs, residual stress's N0 G included [N/m]
+    SparseMatrix G;                      // int N_i' N_j' dx over free DOFs (bending only): K's part per unit axial force [1/m]
+    double axial_force = 0.0;            // N0 = residual_stress x A, tension positive [N]
     SparseMatrix M;                      // consistent mass over free DOFs [kg]
     std::vector<int> bending;            // reduced indices of v and theta DOFs, ascending
     std::vector<int> axial;              // reduced indices of u DOFs, ascending

@@ -68,7 +68,8 @@ const toml::table* sub_table(FieldReader& f, std::string_view key, bool required
 }
 
 void read_beam(const toml::table& t, Position at, Reading& r, Beam& beam) {
-    FieldReader f(t, "beam", at, r.log, {"length", "width", "thickness", "elements", "left", "right"});
+    FieldReader f(t, "beam", at, r.log, {"length", "width", "thickness", "elements", "left", "right",
+                                                "residual_stress", "stretching"});
     if (auto v = f.quantity("length", Dimension::length, true)) beam.length = *v;
     if (auto v = f.quantity("width", Dimension::length, true)) beam.width = *v;
     if (auto v = f.quantity("thickness", Dimension::length, true)) beam.thickness = *v;
@@ -76,6 +77,8 @@ void read_beam(const toml::table& t, Position at, Reading& r, Beam& beam) {
     if (auto v = f.integer("elements", true)) beam.elements = clamp_to_int(*v);
     if (auto v = f.choice("left", {"clamped", "pinned", "free"}, false)) beam.left = end_condition(*v);
     if (auto v = f.choice("right", {"clamped", "pinned", "free"}, false)) beam.right = end_condition(*v);
+    if (auto v = f.quantity("residual_stress", Dimension::pressure, false)) beam.residual_stress = *v;
+    if (auto v = f.boolean("stretching", false)) beam.stretching = *v;
     f.finish();
 }
 

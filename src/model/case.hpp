@@ -34,8 +34,15 @@ struct Beam {
     int elements = 50;       // m, elements of the uniform mesh before support nodes are added
     EndCondition left = EndCondition::clamped;   // end at x = 0
     EndCondition right = EndCondition::free;     // end at x = l
+    // Residual axial stress sigma0 [Pa], positive = tension; the axial force N0 = sigma0 A stiffens
+    // (or, compressive, softens) bending. Only with both ends clamped or pinned (docs/electrostatics.md §6).
+    double residual_stress = 0.0;
+    // Mid-plane stretching: the axial force (E A / (2 l)) int v'^2 dx of a beam whose ends hold the axis.
+    bool stretching = false;
     [[nodiscard]] double area() const { return width * thickness; }                          // A [m^2]
     [[nodiscard]] double second_moment() const { return width * thickness * thickness * thickness / 12.0; }  // I [m^4]
+    // Whether both ends hold the axis (clamped or pinned), so that an axial force can act.
+    [[nodiscard]] bool axis_held() const { return left != EndCondition::free && right != EndCondition::free; }
 };
 
 // Kelvin-Voigt motion limiter acting on v(x0).

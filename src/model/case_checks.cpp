@@ -170,6 +170,33 @@ void check_electrode(std::vector<CaseProblem>& out, const Case& c, std::size_t k
     check_time_function(out, at, e.time);
 }
 
+// Residual stress and mid-plane stretching need both ends to hold the axis: at a free end an axial
+// stress relaxes and the beam stretches nothing. A compressive stress must stay below the Euler
+// buckling stress of the beam's end conditions (the finite-element model buckles a little above it,
+// a Ritz bound, so every accepted stress leaves K positive definite).
+void check_axial(std::vector<CaseProblem>& out, const Case& c) {
+    const Beam& b = c.beam;
+    require_finite(out, "beam.residual_stress", b.residual_stress);
+    if (!b.axis_held()) {
+        if (b.residual_stress != 0.0) {
+            out.push_back({"beam.residual_stress", "needs both ends clamped or pinned (at a free end an axial "
+                                                   "stress relaxes; a cantilever carries none)"});
+        }
+        if (b.stretching) {
+            out.push_back({"beam.stretching", "needs both ends clamped or pinned (a beam with a free end does "
+                                              "not stretch as it bends)"});
+        }
+        return;
+    }
+    const double critical = buckling_stress(c);
+    if (std::isfinite(b.residual_stress) && critical > 0.0 && b.residual_stress <= -critical) {
+        out.push_back({"beam.residual_stress", "is a compression at or beyond buckling: the beam buckles at -" +
+                                                   number_text(critical) +
+                                                   " Pa (Euler: E I beta^2 / A, beta l = pi pinned-pinned, 4.493 "
+                                                   "clamped-pinned, 2 pi clamped-clamped)"});
+    }
+}
+
 void check_solver(std::vector<CaseProblem>& out, const SolverSettings& s) {
     // horizon and output_step: 0 stands for "not given".
     if (!std::isfinite(s.horizon) || s.horizon < 0.0) out.push_back({"solver.horizon", "must be positive"});
@@ -203,6 +230,18 @@ void check_solver(std::vector<CaseProblem>& out, const SolverSettings& s) {
 }
 
 }  // namespace
+
+double buckling_stress(const Case& c) {
+    const Beam& b = c.beam;
+    if (!b.axis_held() || !(b.length > 0.0) || !(b.area() > 0.0)) return 0.0;
+    // Lowest root beta l of the buckling equation: pi (pinned-pinned), 4.4934... = tan's first
+    // positive fixed point (clamped-pinned), 2 pi (clamped-clamped).
+    constexpr double pi = 3.14159265358979323846;
+    const int clamps = (b.left == EndCondition::clamped) + (b.right == EndCondition::clamped);
+    const double beta_l = clamps == 0 ? pi : clamps == 1 ? 4.493409457909064 : 2.0 * pi;
+    const double beta = beta_l / b.length;
+    return c.material.effective_modulus() * b.second_moment() * beta * beta / b.area();
+}
 
 bool bending_is_restrained(EndCondition left, EndCondition right) {
     // One clamp, or two pins, is the least that stops both rigid-body bending motions.
@@ -277,6 +316,7 @@ std::vector<CaseProblem> check_case(const Case& c) {
         require_non_negative(out, "damping.alpha", d.alpha);
         require_non_negative(out, "damping.beta", d.beta);
     }
+    check_axial(out, c);
     check_initial(out, c);
     for (std::size_t k = 0; k < c.loads.size(); ++k) check_load(out, c, k);
     if (c.electrodes.size() > kMaxElectrodes) {

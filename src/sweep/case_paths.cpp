@@ -84,6 +84,8 @@ const FieldSpec kFields[] = {
     {"beam", "width", "m", false, false, VI_GET(c.beam.width), VI_SET(c.beam.width = v), always},
     {"beam", "thickness", "m", false, false, VI_GET(c.beam.thickness), VI_SET(c.beam.thickness = v), always},
     {"beam", "elements", "-", true, false, VI_GET(c.beam.elements), VI_SET(c.beam.elements = whole(v)), always},
+    {"beam", "residual_stress", "Pa", false, false, VI_GET(c.beam.residual_stress),
+     VI_SET(c.beam.residual_stress = v), always},
     {"material", "youngs_modulus", "Pa", false, false, VI_GET(c.material.youngs_modulus),
      VI_SET(c.material.youngs_modulus = v), always},
     {"material", "density", "kg/m^3", false, false, VI_GET(c.material.density), VI_SET(c.material.density = v), always},
