@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "fem/system.hpp"
+#include "forces/dielectric_contact.hpp"
 #include "forces/electrostatic_pad.hpp"
 #include "model/case.hpp"
 
@@ -16,5 +17,11 @@ namespace vi {
 std::vector<std::shared_ptr<const ElectrostaticPad>> electrode_elements(const Case& c, const System& s,
                                                                        const std::vector<int>& bending_position,
                                                                        bool unit_voltage);
+
+// One distributed contact per electrode with a dielectric layer (dielectric_thickness > 0): the
+// beam landing on the layer; named "electrodes[i].dielectric". An electrode without a layer has none
+// (the beam must not reach its face: docs/electrostatics.md §2).
+std::vector<std::shared_ptr<const DielectricContact>> dielectric_contacts(const Case& c, const System& s,
+                                                                          const std::vector<int>& bending_position);
 
 }  // namespace vi

@@ -199,6 +199,8 @@ BuiltProblem build_transient_problem(const Case& c) {
     add_contacts(c, s, pos, modes.shapes.col(0), b);
     add_loads(c, s, b);
     for (auto& pad : electrode_elements(c, s, pos, false)) p.forces.push_back(std::move(pad));
+    // After the supports, so that a support's contact index is its index in the case.
+    for (auto& layer : dielectric_contacts(c, s, pos)) p.forces.push_back(std::move(layer));
     if (c.beam.stretching) {
         // The axis's lengthening, on every bending DOF; E is the modulus bending uses.
         p.forces.push_back(std::make_shared<MidplaneStretching>("beam.stretching", submatrix(s.G, s.bending),

@@ -331,7 +331,8 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
     double lambda_limit = std::numeric_limits<double>::infinity();
     for (long k = 0; k < max_points; ++k) {
         const double tau = s.tau + step;
-        if (tau >= m.air_gap) {
+        // On a dielectric the beam lands and presses into the layer: the travel may pass the air gap.
+        if (tau >= m.air_gap + m.pads.front()->geometry().dielectric_thickness) {
             r.end = "the mean travel reached the air gap of electrodes[0]";
             break;
         }
@@ -395,6 +396,9 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
         r.branch.push_back(p);
 
         for (const PadPtr& pad : m.pads) {
+            // A dielectric layer is a contact (DielectricContact): the beam lands on it and the
+            // branch goes on; a bare electrode's face is not, so the branch ends before it.
+            if (pad->geometry().dielectric_thickness > 0.0) continue;
             const std::vector<double> qe = gather(*pad, s.q);
             const ElectrostaticPad::Narrowest narrow = pad->narrowest(qe.data());
             if (narrow.air_gap <= 5e-3 * (pad->geometry().gap - pad->geometry().dielectric_thickness)) {

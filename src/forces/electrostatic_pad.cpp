@@ -53,13 +53,24 @@ double ElectrostaticPad::electrical_gap(const PadPoint& p, const double* q) cons
 
 void ElectrostaticPad::require_open(const PadPoint& p, double ge) const {
     const PadGeometry& g = geometry_;
-    const double air = ge - g.dielectric_thickness / g.dielectric_permittivity;
+    const double layer = g.dielectric_thickness / g.dielectric_permittivity;
+    const double air = ge - layer;
+    if (layer > 0.0) {
+        // A dielectric is a contact (DielectricContact): the beam may press into it elastically, by
+        // far less than its thickness; half its electrical thickness means the layer has failed.
+        if (ge > 0.5 * layer) return;
+        char buf[200];
+        std::snprintf(buf, sizeof buf,
+                      "the beam presses %.3g nm into the dielectric at x = %.4g um, half its electrical thickness: "
+                      "raise dielectric_modulus or lower the voltage",
+                      -air * 1e9, p.x * 1e6);
+        throw std::domain_error(name_ + ": " + buf);
+    }
     if (ge > 0.0 && air > -1e-3 * g.gap) return;
     char buf[160];
-    std::snprintf(buf, sizeof buf, "the beam reaches the electrode%s at x = %.4g um (air gap %.3g um)",
-                  g.dielectric_thickness > 0.0 ? "'s dielectric" : "", p.x * 1e6, air * 1e6);
-    throw std::domain_error(name_ + ": " + buf + "; the electrode face is not a contact: add a support that stops the "
-                                             "beam before it, or see docs/electrostatics.md");
+    std::snprintf(buf, sizeof buf, "the beam reaches the electrode at x = %.4g um (air gap %.3g um)", p.x * 1e6, air * 1e6);
+    throw std::domain_error(name_ + ": " + buf + "; a bare electrode face is not a contact: add a support that stops "
+                                             "the beam before it, or a dielectric layer (docs/electrostatics.md)");
 }
 
 void ElectrostaticPad::add_force(const ElementState& s, int, double* f) const {
@@ -149,20 +160,25 @@ std::vector<double> ElectrostaticPad::mean_travel_row() const {
     return r;
 }
 
-std::vector<std::vector<double>> ElectrostaticPad::load_patterns() const {
-    const double centre = 0.5 * (geometry_.from + geometry_.to);
-    const double half = 0.5 * (geometry_.to - geometry_.from);
-    std::vector<std::vector<double>> patterns(3, std::vector<double>(dofs_.size(), 0.0));
-    for (const PadPoint& p : points_) {
+std::vector<std::vector<double>> line_load_patterns(const std::vector<PadPoint>& points, const PadGeometry& g,
+                                                    std::size_t n) {
+    const double centre = 0.5 * (g.from + g.to);
+    const double half = 0.5 * (g.to - g.from);
+    std::vector<std::vector<double>> patterns(3, std::vector<double>(n, 0.0));
+    for (const PadPoint& p : points) {
         const double xi = half > 0.0 ? (p.x - centre) / half : 0.0;
         const double moment[3] = {1.0, xi, xi * xi};
-        for (int k = 0; k < 3; ++k) {
+        for (std::size_t k = 0; k < 3; ++k) {
             for (int i = 0; i < 4; ++i) {
-                if (p.local[i] >= 0) patterns[static_cast<std::size_t>(k)][static_cast<std::size_t>(p.local[i])] += moment[k] * p.weight * p.shape[i];
+                if (p.local[i] >= 0) patterns[k][static_cast<std::size_t>(p.local[i])] += moment[k] * p.weight * p.shape[i];
             }
         }
     }
     return patterns;
+}
+
+std::vector<std::vector<double>> ElectrostaticPad::load_patterns() const {
+    return line_load_patterns(points_, geometry_, dofs_.size());
 }
 
 }  // namespace vi

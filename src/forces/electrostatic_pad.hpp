@@ -49,6 +49,11 @@ struct LineCapacitance {
 };
 LineCapacitance line_capacitance(const PadGeometry& g, double gap);
 
+// Line loads over the span of `points` (on n DOFs) constant, linear and quadratic in x: the shapes
+// an electrode's force and its dielectric's contact take, for a reduced-order model's corrections.
+std::vector<std::vector<double>> line_load_patterns(const std::vector<PadPoint>& points, const PadGeometry& g,
+                                                    std::size_t n);
+
 // The pad: V(t) = voltage g(t). Stored energy is the electrical co-energy's negative, -C V^2 / 2
 // (its gradient is minus the force, as the force-element contract asks); the source's input power
 // in that ledger is -C V dV/dt (docs/electrostatics.md §3).
@@ -93,7 +98,8 @@ public:
 private:
     // g_e at point k.
     [[nodiscard]] double electrical_gap(const PadPoint& p, const double* q) const;
-    // Throws std::domain_error when the beam reaches the electrode's face (no force is defined there).
+    // Throws std::domain_error when the beam reaches a bare electrode's face (no force is defined
+    // there) or presses through half a dielectric's electrical thickness.
     void require_open(const PadPoint& p, double ge) const;
 
     std::string name_;

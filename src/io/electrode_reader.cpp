@@ -32,8 +32,9 @@ TimeFunction pulse(double t_on, double rise, double hold, double fall) {
 Electrode read_electrode(const toml::table& t, const std::string& path, tomlio::Position at, tomlio::ReadLog& log,
                          std::vector<CaseProblem>& value_problems, std::optional<std::string>& table_file) {
     FieldReader f(t, path, at, log,
-                  {"from", "to", "side", "gap", "dielectric_thickness", "dielectric_permittivity", "width", "fringing",
-                   "voltage", "waveform", "t_on", "rise", "hold", "fall", "frequency", "phase", "bias", "table"});
+                  {"from", "to", "side", "gap", "dielectric_thickness", "dielectric_permittivity", "dielectric_modulus",
+                   "width", "fringing", "voltage", "waveform", "t_on", "rise", "hold", "fall", "frequency", "phase", "bias",
+                   "table"});
     Electrode e;
     if (auto v = f.quantity("from", Dimension::dimensionless, true)) e.from = *v;
     if (auto v = f.quantity("to", Dimension::dimensionless, true)) e.to = *v;
@@ -41,6 +42,10 @@ Electrode read_electrode(const toml::table& t, const std::string& path, tomlio::
     if (auto v = f.quantity("gap", Dimension::length, true)) e.gap = *v;
     if (auto v = f.quantity("dielectric_thickness", Dimension::length, false)) e.dielectric_thickness = *v;
     if (auto v = f.quantity("dielectric_permittivity", Dimension::dimensionless, false)) e.dielectric_permittivity = *v;
+    if (auto v = f.quantity("dielectric_modulus", Dimension::pressure, false)) e.dielectric_modulus = *v;
+    if (f.has("dielectric_modulus") && !f.has("dielectric_thickness")) {
+        f.reject("dielectric_modulus", "needs dielectric_thickness (the layer it belongs to)");
+    }
     if (f.has("dielectric_permittivity") && !f.has("dielectric_thickness")) {
         f.reject("dielectric_permittivity", "needs dielectric_thickness (the layer it belongs to)");
     }

@@ -111,6 +111,9 @@ struct Electrode {
     double gap = 0.0;                      // beam to electrode at rest, dielectric included [m]
     double dielectric_thickness = 0.0;     // t_d of the layer on the electrode, < gap [m]
     double dielectric_permittivity = 1.0;  // eps_r of that layer [-]
+    // Young's modulus E_d of that layer [Pa]: where the beam lands on it, the layer is an elastic
+    // foundation of line stiffness E_d w_e / t_d (the default: silicon nitride, 250 GPa).
+    double dielectric_modulus = 250e9;
     double width = 0.0;                    // effective electrode width w_e [m]; 0 = the beam's width
     Fringing fringing = Fringing::none;
     double voltage = 0.0;                  // amplitude [V]

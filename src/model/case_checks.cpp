@@ -165,6 +165,7 @@ void check_electrode(std::vector<CaseProblem>& out, const Case& c, std::size_t k
         out.push_back({at + "dielectric_permittivity", "must be at least 1 (relative permittivity)"});
     }
     if (!std::isfinite(e.width) || e.width < 0.0) out.push_back({at + "width", "must be positive"});
+    require_positive(out, at + "dielectric_modulus", e.dielectric_modulus);
     check_fringing_range(out, c, k);
     require_finite(out, at + "voltage", e.voltage);
     check_time_function(out, at, e.time);

@@ -53,7 +53,7 @@ std::string pullin_text(const PullinResult& r) {
         out += "No pull-in instability before the beam closes on a support\n";
     }
     if (r.touchdown) {
-        out += line("Touch-down on a support at V = %.6g V (mean travel %.6g um)\n", r.touchdown->voltage,
+        out += line("Touch-down on a contact (a support or a dielectric) at V = %.6g V (mean travel %.6g um)\n", r.touchdown->voltage,
                     r.touchdown->travel * 1e6);
     } else {
         out += "No support closes on the traced branch\n";
@@ -64,7 +64,7 @@ std::string pullin_text(const PullinResult& r) {
         out += "No stable closed state on the traced branch: after touch-down the beam collapses further\n";
     }
     if (r.collapse) {
-        out += line("Closed, the beam collapses onto the electrode above V = %.6g V (mean travel %.6g um)\n",
+        out += line("Closed, the beam snaps further toward the electrode (the closed branch folds) above V = %.6g V (mean travel %.6g um)\n",
                     r.collapse->voltage, r.collapse->travel * 1e6);
     }
     if (!r.frequencies.empty()) {

@@ -1,0 +1,110 @@
+#include "forces/dielectric_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace vi {
+
+DielectricContact::DielectricContact(std::string name, std::vector<int> dofs, std::vector<PadPoint> points,
+                                     PadGeometry geometry, double line_stiffness)
+    : name_(std::move(name)), dofs_(std::move(dofs)), points_(std::move(points)), geometry_(geometry),
+      stiffness_(line_stiffness) {
+    if (points_.empty() || std::abs(geometry_.sign) != 1.0 || !(stiffness_ > 0.0) || !std::isfinite(stiffness_)) {
+        throw std::invalid_argument(name_ + ": inconsistent dielectric contact data");
+    }
+}
+
+double DielectricContact::displacement(const PadPoint& p, const double* q) const {
+    double v = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        if (p.local[i] >= 0) v += p.shape[i] * q[p.local[i]];
+    }
+    return v;
+}
+
+double DielectricContact::penetration(const PadPoint& p, const double* q) const {
+    return geometry_.sign * displacement(p, q) - (geometry_.gap - geometry_.dielectric_thickness);
+}
+
+std::size_t DielectricContact::deepest(const double* q) const {
+    std::size_t best = 0;
+    double d = -std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k < points_.size(); ++k) {
+        const double dk = penetration(points_[k], q);
+        if (dk > d) {
+            d = dk;
+            best = k;
+        }
+    }
+    return best;
+}
+
+void DielectricContact::add_force(const ElementState& s, int mode, double* f) const {
+    if (mode != 1) return;
+    for (const PadPoint& p : points_) {
+        const double d = penetration(p, s.q);
+        if (d <= 0.0) continue;
+        // The layer pushes the beam away from the electrode: -sign k d per unit length.
+        const double load = -geometry_.sign * stiffness_ * d * p.weight;
+        for (int i = 0; i < 4; ++i) {
+            if (p.local[i] >= 0) f[p.local[i]] += load * p.shape[i];
+        }
+    }
+}
+
+void DielectricContact::add_tangent(const ElementState& s, int mode, double* dfdq, double*) const {
+    if (mode != 1) return;
+    const std::size_t n = dofs_.size();
+    for (const PadPoint& p : points_) {
+        if (penetration(p, s.q) <= 0.0) continue;
+        // d f_i / d q_j = -sign k (d d / d q_j) N_i w = -k N_i N_j w (sign^2 = 1).
+        const double k = -stiffness_ * p.weight;
+        for (int i = 0; i < 4; ++i) {
+            if (p.local[i] < 0) continue;
+            for (int j = 0; j < 4; ++j) {
+                if (p.local[j] < 0) continue;
+                dfdq[static_cast<std::size_t>(p.local[i]) * n + static_cast<std::size_t>(p.local[j])] +=
+                    k * p.shape[i] * p.shape[j];
+            }
+        }
+    }
+}
+
+double DielectricContact::stored_energy(const ElementState& s, int mode) const {
+    if (mode != 1) return 0.0;
+    double e = 0.0;
+    for (const PadPoint& p : points_) {
+        const double d = penetration(p, s.q);
+        if (d > 0.0) e += 0.5 * stiffness_ * d * d * p.weight;
+    }
+    return e;
+}
+
+double DielectricContact::switching_function(const ElementState& s, int mode) const {
+    const double d = penetration(points_[deepest(s.q)], s.q);
+    return mode == 1 ? -d : d;
+}
+
+int DielectricContact::static_mode(const ElementState& s) const {
+    const double d = penetration(points_[deepest(s.q)], s.q);
+    return d > 1e-12 * geometry_.gap ? 1 : 0;
+}
+
+std::vector<std::vector<double>> DielectricContact::load_patterns() const {
+    return line_load_patterns(points_, geometry_, dofs_.size());
+}
+
+ContactReading DielectricContact::contact_reading(const ElementState& s) const {
+    ContactReading r;
+    const PadPoint& p = points_[deepest(s.q)];
+    r.penetration = penetration(p, s.q);
+    for (const PadPoint& x : points_) {
+        const double d = penetration(x, s.q);
+        if (d > 0.0) r.force += stiffness_ * d * x.weight;
+    }
+    r.point_velocity = displacement(p, s.v);
+    return r;
+}
+
+}  // namespace vi
