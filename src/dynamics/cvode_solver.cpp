@@ -64,12 +64,20 @@ void error_fn(int code, const char* module, const char* function, char* msg, voi
     if (code < 0) *static_cast<std::string*>(ud) = std::string(module) + "/" + function + ": " + msg;
 }
 
+// An element's refusal of a state (std::domain_error: the beam reaches an electrode) met inside a
+// callback on this thread; Driver::check throws it instead of CVODE's bare failure code, so the
+// caller learns what happened and can tell it from a numerical failure (dynamic pull-in does).
+thread_local std::string element_refusal;
+
 // CVODE callbacks; user_data is the ModalSystem. They never let an exception into the C library:
 // one becomes an unrecoverable error (-1) and CVODE fails.
 int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void* ud) {
     try {
         static_cast<const ModalSystem*>(ud)->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
         return 0;
+    } catch (const std::domain_error& e) {
+        element_refusal = e.what();
+        return -1;
     } catch (...) {
         return -1;
     }
@@ -82,6 +90,9 @@ int jac_fn(realtype t, N_Vector y, N_Vector, SUNMatrix J, void* ud, N_Vector, N_
         j.a = 1.0;
         j.b = 0.0;
         return 0;
+    } catch (const std::domain_error& e) {
+        element_refusal = e.what();
+        return -1;
     } catch (...) {
         return -1;
     }
@@ -91,6 +102,9 @@ int root_fn(realtype t, N_Vector y, realtype* g, void* ud) {
     try {
         static_cast<const ModalSystem*>(ud)->root_functions(t, N_VGetArrayPointer(y), g);
         return 0;
+    } catch (const std::domain_error& e) {
+        element_refusal = e.what();
+        return -1;
     } catch (...) {
         return -1;
     }
@@ -141,6 +155,11 @@ void Driver::check(int flag, const char* what) const {
     std::string msg = std::string("solve_cvode: ") + what + " failed (" + (name ? name : "?") + ")";
     std::free(name);
     if (!cvode_message_.empty()) msg += ": " + cvode_message_;
+    if (!element_refusal.empty()) {
+        std::string refusal;
+        refusal.swap(element_refusal);
+        throw std::domain_error(msg + "; " + refusal);
+    }
     throw std::runtime_error(msg);
 }
 
@@ -420,6 +439,7 @@ TransientResult Driver::run() {
 
 TransientResult solve_cvode(const TransientProblem& p, const CvodeOptions& o) {
     cvode_detail::validate(p);
+    element_refusal.clear();
     Driver driver(p, o);
     return driver.run();
 }

@@ -32,8 +32,9 @@ struct CvodeOptions {
 // steps, table knots) are integration stops with a restart too. The energy ledger's integrals and
 // each contact's impulse are extra CVODE states. Throws std::invalid_argument for an inconsistent
 // problem, std::runtime_error when CVODE fails, WorkLimitReached at solver.max_steps or
-// solver.max_events, and StopRequested / TimeLimitReached from check_run() (never returns a
-// partial result).
+// solver.max_events, std::domain_error when a force element refuses the state reached (the beam
+// reaches an electrode; the element's message included), and StopRequested / TimeLimitReached from
+// check_run() (never returns a partial result).
 TransientResult solve_cvode(const TransientProblem& p, const CvodeOptions& o = {});
 // The same problem built for the exact solver (its contacts and loads become force elements).
 TransientResult solve_cvode(const PiecewiseLinearProblem& p, const CvodeOptions& o = {});
