@@ -25,7 +25,6 @@ CommandBody add_pullin_command(CLI::App& app) {
         PullinOptions pullin;
         bool dynamic = false;
         std::string horizon;
-        std::string criterion = "close";
         DynamicPullinOptions dyn;
     };
     auto opt = std::make_shared<Options>();
@@ -41,10 +40,6 @@ CommandBody add_pullin_command(CLI::App& app) {
         ->check(CLI::Range(1, 200));
     sub->add_option("--rel-width", opt->dyn.bisection.rel_width, "--dynamic: relative width of the final bracket")
         ->check(CLI::Range(1e-12, 0.5));
-    sub->add_option("--criterion", opt->criterion,
-                    "--dynamic: close (a support closes or the beam reaches the electrode) or electrode (supports "
-                    "removed)")
-        ->check(CLI::IsMember({"close", "electrode"}));
     sub->add_flag("--json", opt->json, "Print one JSON document on stdout instead of text");
     sub->add_option("--out,-o", opt->out_dir, "Folder for pullin.json, pullin_branch.csv, pullin_frequencies.csv");
 
@@ -75,7 +70,6 @@ CommandBody add_pullin_command(CLI::App& app) {
             }
             DynamicPullinOptions o = opt->dyn;
             o.horizon = horizon;
-            o.criterion = opt->criterion == "electrode" ? PullinCriterion::electrode : PullinCriterion::close;
             try {
                 dyn = dynamic_pullin(c, r.pullin->voltage, o);
             } catch (const InputError& e) {

@@ -281,7 +281,7 @@ TEST(DynamicPullin, BadOptionsAreExitTwo) {
     const std::string file = test::source_path("examples/switch/cantilever_switch.toml");
     EXPECT_EQ(test::run_vibroimpact({"pullin", file, "--dynamic", "--horizon", "-3 us"}).exit_code, 2);
     EXPECT_EQ(test::run_vibroimpact({"pullin", file, "--dynamic", "--horizon", "3 kg"}).exit_code, 2);
-    EXPECT_EQ(test::run_vibroimpact({"pullin", file, "--dynamic", "--criterion", "maybe"}).exit_code, 2);
+    EXPECT_EQ(test::run_vibroimpact({"pullin", file, "--dynamic", "--rel-width", "0"}).exit_code, 2);
 }
 
 }  // namespace

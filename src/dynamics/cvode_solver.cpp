@@ -122,6 +122,7 @@ private:
     void sample_until(double t_lim, bool interpolate);
     void record(double t, const double* y);
     double handle_roots(double tret);
+    [[nodiscard]] bool contact_closed() const;  // some contact element is in its contact mode
     double locate_missed_switch(int e, double tret);
     void toggle(double t, const std::vector<int>& which);
     void restart(double t);
@@ -132,6 +133,7 @@ private:
     ModalSystem sys_;
     Sundials s_;
     std::string cvode_message_;
+    double t_final_ = p_.t_end;          // the horizon, or the first contact with stop_at_first_contact
     int close_root_restarts_ = 0;  // restarts after CVODE's "root found at and very near t"
     TransientResult r_;
     std::vector<double> stops_;          // element breakpoints in (0, t_end), then t_end
@@ -311,6 +313,13 @@ void Driver::toggle(double t, const std::vector<int>& which) {
     restart(t);
 }
 
+bool Driver::contact_closed() const {
+    for (int e : sys_.contacts()) {
+        if (modes_[static_cast<std::size_t>(e)] == sys_.element(e).contact_mode()) return true;
+    }
+    return false;
+}
+
 void Driver::add_counters() {
     long nst = 0, nsetups = 0;
     check(CVodeGetNumSteps(s_.mem, &nst), "CVodeGetNumSteps");
@@ -410,6 +419,11 @@ TransientResult Driver::run() {
         check_run();
         if (flag == CV_ROOT_RETURN) {
             t = handle_roots(tret);
+            if (o_.stop_at_first_contact && contact_closed()) {
+                sample_until(t, false);
+                t_final_ = t;
+                break;
+            }
         } else {
             sample_until(tret, true);
             episodes_.update_peaks(tret, N_VGetArrayPointer(s_.y));
@@ -421,9 +435,9 @@ TransientResult Driver::run() {
     add_counters();
 
     const double* y = N_VGetArrayPointer(s_.y);
-    episodes_.close_at_end(p_.t_end, y);
-    r_.final_energy = sys_.energy(p_.t_end, y, jump_);
-    r_.t_end = p_.t_end;
+    episodes_.close_at_end(t_final_, y);
+    r_.final_energy = sys_.energy(t_final_, y, jump_);
+    r_.t_end = t_final_;
     r_.stats.method = "cvode";
     r_.stats.basis_vectors = sys_.basis_size();
     r_.stats.basis_modes = sys_.basis().modes;
