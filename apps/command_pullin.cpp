@@ -2,12 +2,16 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "commands.hpp"
 #include "dynamics/pullin.hpp"
+#include "impacts/dynamic_pullin.hpp"
 #include "io/case_reader.hpp"
 #include "io/output_files.hpp"
+#include "io/units.hpp"
 #include "model/input_error.hpp"
 #include "report/pullin_output.hpp"
 
@@ -19,6 +23,9 @@ CommandBody add_pullin_command(CLI::App& app) {
         bool json = false;
         std::string out_dir;
         PullinOptions pullin;
+        bool dynamic = false;
+        std::string horizon;
+        DynamicPullinOptions dyn;
     };
     auto opt = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand(
@@ -26,10 +33,27 @@ CommandBody add_pullin_command(CLI::App& app) {
     sub->add_option("case", opt->case_path, "Case file (TOML) with at least one [[electrodes]]")->required();
     sub->add_option("--steps", opt->pullin.steps, "Continuation steps over the air gap of electrodes[0]")
         ->check(CLI::Range(10, 100000));
+    sub->add_flag("--dynamic", opt->dynamic,
+                  "Also the dynamic (step) pull-in voltage, by bisection on transients (docs/electrostatics.md)");
+    sub->add_option("--horizon", opt->horizon, "--dynamic: length of each transient (default 10 periods of mode 1)");
+    sub->add_option("--bisections", opt->dyn.bisection.bisections, "--dynamic: most transients after the bracket")
+        ->check(CLI::Range(1, 200));
+    sub->add_option("--rel-width", opt->dyn.bisection.rel_width, "--dynamic: relative width of the final bracket")
+        ->check(CLI::Range(1e-12, 0.5));
     sub->add_flag("--json", opt->json, "Print one JSON document on stdout instead of text");
     sub->add_option("--out,-o", opt->out_dir, "Folder for pullin.json, pullin_branch.csv, pullin_frequencies.csv");
 
     return [opt]() {
+        // Bad options are refused before any work.
+        double horizon = 0.0;
+        if (!opt->horizon.empty()) {
+            try {
+                horizon = parse_quantity(opt->horizon, Dimension::time);
+            } catch (const std::invalid_argument& e) {
+                throw InputError("--horizon: " + std::string(e.what()));
+            }
+            if (!(horizon > 0.0)) throw InputError("--horizon: must be positive (e.g. \"100 us\")");
+        }
         const Case c = read_case_file(opt->case_path);
         PullinResult r;
         try {
@@ -37,11 +61,33 @@ CommandBody add_pullin_command(CLI::App& app) {
         } catch (const InputError& e) {
             throw locate_in_case(c, e);
         }
-        if (!opt->out_dir.empty()) write_output_files(opt->out_dir, pullin_files(r));
+        std::optional<DynamicPullinResult> dyn;
+        if (opt->dynamic) {
+            if (!r.pullin) {
+                std::fprintf(stderr, "vibroimpact pullin: --dynamic needs a static pull-in to bracket, and the branch has "
+                                     "none (%s)\n", r.touchdown ? "a support closes first" : r.end.c_str());
+                return kExitFailure;
+            }
+            DynamicPullinOptions o = opt->dyn;
+            o.horizon = horizon;
+            try {
+                dyn = dynamic_pullin(c, r.pullin->voltage, o);
+            } catch (const InputError& e) {
+                throw locate_in_case(c, e);
+            }
+        }
+        nlohmann::json j = pullin_json(r);
+        if (dyn) j["dynamic"] = dynamic_pullin_json(*dyn);
+        if (!opt->out_dir.empty()) {
+            OutputFiles files = pullin_files(r);
+            files["pullin.json"] = j.dump(2) + "\n";
+            write_output_files(opt->out_dir, files);
+        }
         if (opt->json) {
-            std::printf("%s\n", pullin_json(r).dump(2).c_str());
+            std::printf("%s\n", j.dump(2).c_str());
         } else {
             std::printf("Case %s: %s\n%s", opt->case_path.c_str(), c.name.c_str(), pullin_text(r).c_str());
+            if (dyn) std::printf("%s", dynamic_pullin_text(*dyn).c_str());
             if (!opt->out_dir.empty()) std::printf("Written to %s/\n", opt->out_dir.c_str());
         }
         // A branch that ends before it found pull-in or touch-down has no answer to give.

@@ -24,6 +24,15 @@ std::string us(const std::optional<double>& v) {
     return buf;
 }
 
+void print_switching(const SwitchingLedger& l) {
+    std::printf("Switching [%s]: %s\n", l.state.c_str(), l.reason.c_str());
+    std::printf("  closing time (first contact)     %s\n", us(l.closing_time).c_str());
+    std::printf("  bounces before stable contact    %d\n", l.bounces);
+    std::printf("  stable contact from              %s\n", us(l.stable_contact).c_str());
+    if (!l.contacts.empty()) std::printf("  peak contact force               %.4g N\n", l.peak_force);
+    std::printf("  release                          %s\n", us(l.release_time).c_str());
+}
+
 }  // namespace
 
 CommandBody add_simulate_command(CLI::App& app) {
@@ -55,7 +64,8 @@ CommandBody add_simulate_command(CLI::App& app) {
                          "solver.min_search_step)\n",
                          opt->case_path.c_str(), run.result.stats.unproven_excess);
         }
-        const OutputFiles files = transient_files(c, run.built, run.result, run.summary);
+        const OutputFiles files =
+            transient_files(c, run.built, run.result, run.summary, run.switching ? &*run.switching : nullptr);
         // Last chance to stop: from here the results are complete and go out together.
         check_run();
         if (!opt->out_dir.empty()) {
@@ -74,6 +84,7 @@ CommandBody add_simulate_command(CLI::App& app) {
         std::printf("  T2 (impact duration)             %s\n", us(s.T2_first).c_str());
         std::printf("  Tp (transient duration)          %s  [%s]\n", us(s.Tp).c_str(), s.Tp_reason.c_str());
         if (s.y_max) std::printf("  y_max %.4g m, z_max %.4g\n", *s.y_max, *s.z_max);
+        if (run.switching) print_switching(*run.switching);
         if (!opt->out_dir.empty()) std::printf("Written to %s/\n", opt->out_dir.c_str());
         return kExitOk;
     };

@@ -1,4 +1,4 @@
-// Beams held at both ends (docs/electrostatics.md §6): residual stress's frequencies against the
+// Beams held at both ends (docs/electrostatics.md §8): residual stress's frequencies against the
 // axially loaded beam's closed form and characteristic equation, the mid-plane stretching element's
 // contract, pull-in of a clamped-clamped bridge with stretching and residual stress against an
 // independent shooting solution, and the refusals.

@@ -70,12 +70,20 @@ void error_fn(int code, const char* module, const char* function, char* msg, voi
     if (code < 0) *static_cast<std::string*>(ud) = std::string(module) + "/" + function + ": " + msg;
 }
 
+// An element's refusal of a state (std::domain_error: the beam reaches an electrode) met inside a
+// callback on this thread; Driver::check throws it instead of CVODE's bare failure code, so the
+// caller learns what happened and can tell it from a numerical failure (dynamic pull-in does).
+thread_local std::string element_refusal;
+
 // CVODE callbacks; user_data is the ModalSystem. They never let an exception into the C library:
 // one becomes an unrecoverable error (-1) and CVODE fails.
 int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void* ud) {
     try {
         static_cast<const ModalSystem*>(ud)->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
         return 0;
+    } catch (const std::domain_error& e) {
+        element_refusal = e.what();
+        return -1;
     } catch (...) {
         return -1;
     }
@@ -88,6 +96,9 @@ int jac_fn(realtype t, N_Vector y, N_Vector, SUNMatrix J, void* ud, N_Vector, N_
         j.a = 1.0;
         j.b = 0.0;
         return 0;
+    } catch (const std::domain_error& e) {
+        element_refusal = e.what();
+        return -1;
     } catch (...) {
         return -1;
     }
@@ -97,6 +108,9 @@ int root_fn(realtype t, N_Vector y, realtype* g, void* ud) {
     try {
         static_cast<const ModalSystem*>(ud)->root_functions(t, N_VGetArrayPointer(y), g);
         return 0;
+    } catch (const std::domain_error& e) {
+        element_refusal = e.what();
+        return -1;
     } catch (...) {
         return -1;
     }
@@ -114,6 +128,7 @@ private:
     void sample_until(double t_lim, bool interpolate);
     void record(double t, const double* y);
     double handle_roots(double tret);
+    [[nodiscard]] bool contact_closed() const;  // some contact element is in its contact mode
     double locate_missed_switch(int e, double tret);
     void toggle(double t, const std::vector<int>& which);
     void restart(double t);
@@ -124,6 +139,7 @@ private:
     ModalSystem sys_;
     Sundials s_;
     std::string cvode_message_;
+    double t_final_ = p_.t_end;          // the horizon, or the first contact with stop_at_first_contact
     int close_root_restarts_ = 0;  // restarts after CVODE's "root found at and very near t"
     TransientResult r_;
     std::vector<double> stops_;          // element breakpoints in (0, t_end), then t_end
@@ -147,6 +163,11 @@ void Driver::check(int flag, const char* what) const {
     std::string msg = std::string("solve_cvode: ") + what + " failed (" + (name ? name : "?") + ")";
     std::free(name);
     if (!cvode_message_.empty()) msg += ": " + cvode_message_;
+    if (!element_refusal.empty()) {
+        std::string refusal;
+        refusal.swap(element_refusal);
+        throw std::domain_error(msg + "; " + refusal);
+    }
     throw std::runtime_error(msg);
 }
 
@@ -298,6 +319,13 @@ void Driver::toggle(double t, const std::vector<int>& which) {
     restart(t);
 }
 
+bool Driver::contact_closed() const {
+    for (int e : sys_.contacts()) {
+        if (modes_[static_cast<std::size_t>(e)] == sys_.element(e).contact_mode()) return true;
+    }
+    return false;
+}
+
 void Driver::add_counters() {
     long nst = 0, nsetups = 0;
     check(CVodeGetNumSteps(s_.mem, &nst), "CVodeGetNumSteps");
@@ -397,6 +425,11 @@ TransientResult Driver::run() {
         check_run();
         if (flag == CV_ROOT_RETURN) {
             t = handle_roots(tret);
+            if (o_.stop_at_first_contact && contact_closed()) {
+                sample_until(t, false);
+                t_final_ = t;
+                break;
+            }
         } else {
             sample_until(tret, true);
             episodes_.update_peaks(tret, N_VGetArrayPointer(s_.y));
@@ -408,9 +441,9 @@ TransientResult Driver::run() {
     add_counters();
 
     const double* y = N_VGetArrayPointer(s_.y);
-    episodes_.close_at_end(p_.t_end, y);
-    r_.final_energy = sys_.energy(p_.t_end, y, jump_);
-    r_.t_end = p_.t_end;
+    episodes_.close_at_end(t_final_, y);
+    r_.final_energy = sys_.energy(t_final_, y, jump_);
+    r_.t_end = t_final_;
     r_.stats.method = "cvode";
     r_.stats.basis_vectors = sys_.basis_size();
     r_.stats.basis_modes = sys_.basis().modes;
@@ -426,6 +459,7 @@ TransientResult Driver::run() {
 
 TransientResult solve_cvode(const TransientProblem& p, const CvodeOptions& o) {
     cvode_detail::validate(p);
+    element_refusal.clear();
     Driver driver(p, o);
     return driver.run();
 }

@@ -25,6 +25,9 @@ struct CvodeOptions {
     // 0: every bending mode (the full FE model, an exact change of coordinates); N > 0: a
     // reduced-order model on the N lowest modes plus static corrections (solver.reduced_modes).
     int reduced_modes = 0;
+    // End the run at the first contact onset (the result's t_end is then that time, the episode
+    // closed_at_end): a question that the first contact answers (dynamic pull-in) needs no more.
+    bool stop_at_first_contact = false;
 };
 
 // Integrates p from 0 to p.t_end. Elements switch only at located events (their switching
@@ -32,8 +35,9 @@ struct CvodeOptions {
 // steps, table knots) are integration stops with a restart too. The energy ledger's integrals and
 // each contact's impulse are extra CVODE states. Throws std::invalid_argument for an inconsistent
 // problem, std::runtime_error when CVODE fails, WorkLimitReached at solver.max_steps or
-// solver.max_events, and StopRequested / TimeLimitReached from check_run() (never returns a
-// partial result).
+// solver.max_events, std::domain_error when a force element refuses the state reached (the beam
+// reaches an electrode; the element's message included), and StopRequested / TimeLimitReached from
+// check_run() (never returns a partial result).
 TransientResult solve_cvode(const TransientProblem& p, const CvodeOptions& o = {});
 // The same problem built for the exact solver (its contacts and loads become force elements).
 TransientResult solve_cvode(const PiecewiseLinearProblem& p, const CvodeOptions& o = {});

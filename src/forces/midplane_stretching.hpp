@@ -1,7 +1,7 @@
 #pragma once
 // MidplaneStretching: the axial force a beam held at both ends gains as it bends (its axis
 // lengthens), N = (E A / (2 l)) int v'^2 dx = (E A / (2 l)) q^T G q, acting through the slope on
-// every bending DOF (docs/electrostatics.md §6).
+// every bending DOF (docs/electrostatics.md §8).
 
 #include <Eigen/SparseCore>
 #include <string>

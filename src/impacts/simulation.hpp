@@ -1,7 +1,11 @@
 #pragma once
-// One transient run of a case from start to summary: build, solve (exact or CVODE), summarise.
+// One transient run of a case from start to summary: build, solve (exact or CVODE), summarise (the
+// impact ledger, and the switching ledger under electrode voltage).
+
+#include <optional>
 
 #include "impacts/impact_summary.hpp"
+#include "impacts/switching_ledger.hpp"
 #include "dynamics/exact_solver.hpp"
 #include "dynamics/problem_builder.hpp"
 #include "dynamics/transient_result.hpp"
@@ -13,6 +17,7 @@ struct SimulationRun {
     BuiltProblem built;
     TransientResult result;
     ImpactSummary summary;
+    std::optional<SwitchingLedger> switching;  // when the case has electrodes
 };
 
 // What to compute besides the impact characteristics.

@@ -35,7 +35,7 @@ struct Beam {
     EndCondition left = EndCondition::clamped;   // end at x = 0
     EndCondition right = EndCondition::free;     // end at x = l
     // Residual axial stress sigma0 [Pa], positive = tension; the axial force N0 = sigma0 A stiffens
-    // (or, compressive, softens) bending. Only with both ends clamped or pinned (docs/electrostatics.md §6).
+    // (or, compressive, softens) bending. Only with both ends clamped or pinned (docs/electrostatics.md §8).
     double residual_stress = 0.0;
     // Mid-plane stretching: the axial force (E A / (2 l)) int v'^2 dx of a beam whose ends hold the axis.
     bool stretching = false;

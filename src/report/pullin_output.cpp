@@ -107,4 +107,33 @@ OutputFiles pullin_files(const PullinResult& r) {
             {"pullin_frequencies.csv", freq.str()}};
 }
 
+nlohmann::json dynamic_pullin_json(const DynamicPullinResult& r) {
+    nlohmann::json trials = nlohmann::json::array();
+    for (const StepTrial& t : r.trials) {
+        trials.push_back({{"voltage_V", t.voltage},
+                          {"pulls_in", t.closes},
+                          {"how", t.how},
+                          {"closing_time_s", t.closing_time ? nlohmann::json(*t.closing_time) : nlohmann::json(nullptr)}});
+    }
+    return {{"voltage_V", r.voltage},
+            {"ratio_to_static", r.voltage / r.static_voltage},
+            {"static_voltage_V", r.static_voltage},
+            {"lower_V", r.lower},
+            {"upper_V", r.upper},
+            {"upper_closing_time_s",
+             r.upper_closing_time ? nlohmann::json(*r.upper_closing_time) : nlohmann::json(nullptr)},
+            {"criterion", r.criterion == PullinCriterion::close ? "close" : "electrode"},
+            {"horizon_s", r.horizon},
+            {"trials", trials}};
+}
+
+std::string dynamic_pullin_text(const DynamicPullinResult& r) {
+    std::string out = line("Dynamic pull-in V_DPI = %.6g V (= %.4f of static)\n", r.voltage, r.voltage / r.static_voltage);
+    out += line("  step bracket %.6g .. %.6g V", r.lower, r.upper);
+    out += line(", %.0f transients of %.4g us each", static_cast<double>(r.trials.size()), r.horizon * 1e6);
+    out += r.criterion == PullinCriterion::close ? ", criterion: a support closes or the beam reaches the electrode\n"
+                                                 : ", criterion: the beam reaches the electrode (supports removed)\n";
+    return out;
+}
+
 }  // namespace vi

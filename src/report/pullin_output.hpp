@@ -5,6 +5,7 @@
 #include <string>
 
 #include "dynamics/pullin.hpp"
+#include "impacts/dynamic_pullin.hpp"
 #include "io/output_files.hpp"
 
 namespace vi {
@@ -17,5 +18,11 @@ std::string pullin_text(const PullinResult& r);
 
 // pullin.json, pullin_branch.csv (the equilibria), pullin_frequencies.csv (f against V).
 OutputFiles pullin_files(const PullinResult& r);
+
+// {"voltage_V", "ratio_to_static", "lower_V", "upper_V", "criterion", "horizon_s", "trials": [...]}.
+nlohmann::json dynamic_pullin_json(const DynamicPullinResult& r);
+
+// "Dynamic pull-in V_DPI = ... V (= ... of static)" and the bracket, one line each.
+std::string dynamic_pullin_text(const DynamicPullinResult& r);
 
 }  // namespace vi

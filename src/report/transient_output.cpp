@@ -92,8 +92,30 @@ nlohmann::json resolved_case_json(const Case& c, const BuiltProblem& b, const Im
     return j;
 }
 
+nlohmann::json switching_json(const SwitchingLedger& l) {
+    nlohmann::json contacts = nlohmann::json::array();
+    for (const SwitchingContact& k : l.contacts) {
+        contacts.push_back({{"support", k.support},
+                            {"t_on_s", k.t_on},
+                            {"t_off_s", k.t_off},
+                            {"impact_velocity_m_s", k.impact_velocity},
+                            {"peak_force_n", k.peak_force},
+                            {"closed_at_end", k.closed_at_end}});
+    }
+    return {{"voltage_on_s", opt(l.voltage.on)},
+            {"voltage_off_s", opt(l.voltage.off)},
+            {"closing_time_s", opt(l.closing_time)},
+            {"bounces", l.bounces},
+            {"stable_contact_s", opt(l.stable_contact)},
+            {"peak_force_n", l.contacts.empty() ? nlohmann::json(nullptr) : nlohmann::json(l.peak_force)},
+            {"release_time_s", opt(l.release_time)},
+            {"state", l.state},
+            {"reason", l.reason},
+            {"contacts", contacts}};
+}
+
 nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, const TransientResult& r,
-                                      const ImpactSummary& s) {
+                                      const ImpactSummary& s, const SwitchingLedger* switching) {
     const double w1 = b.omega1;
     nlohmann::json j;
     j["omega1_rad_s"] = w1;
@@ -136,6 +158,7 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
         j["solver"]["basis_modes"] = r.stats.basis_modes;
         j["solver"]["initial_projection_error"] = r.stats.initial_projection_error;
     }
+    if (switching) j["switching"] = switching_json(*switching);
     j["resolved"] = resolved_case_json(c, b, s);
     return j;
 }
@@ -185,10 +208,11 @@ CsvTable events_csv(const TransientResult& r, const ImpactSummary& s) {
     return t;
 }
 
-OutputFiles transient_files(const Case& c, const BuiltProblem& b, const TransientResult& r, const ImpactSummary& s) {
+OutputFiles transient_files(const Case& c, const BuiltProblem& b, const TransientResult& r, const ImpactSummary& s,
+                            const SwitchingLedger* switching) {
     return {{"history.csv", history_csv(r).str()},
             {"events.csv", events_csv(r, s).str()},
-            {"summary.json", transient_summary_json(c, b, r, s).dump(2) + "\n"}};
+            {"summary.json", transient_summary_json(c, b, r, s, switching).dump(2) + "\n"}};
 }
 
 }  // namespace vi

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "impacts/impact_summary.hpp"
+#include "impacts/switching_ledger.hpp"
 #include "dynamics/problem_builder.hpp"
 #include "dynamics/transient_result.hpp"
 #include "io/csv_table.hpp"
@@ -16,9 +17,13 @@ namespace vi {
 // Every parameter of the run, defaults and derived values included, so it can be reproduced.
 nlohmann::json resolved_case_json(const Case& c, const BuiltProblem& b, const ImpactSummary& s);
 
-// The summary: impacts, episodes, T, T1, T2, T_p (with its reason), tau's, y_max, z_max, energy.
+// The switching ledger as JSON (times in s, forces in N, velocities in m/s; null where not applicable).
+nlohmann::json switching_json(const SwitchingLedger& l);
+
+// The summary: impacts, episodes, T, T1, T2, T_p (with its reason), tau's, y_max, z_max, energy, and
+// "switching" when `switching` is given (a case with electrodes).
 nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, const TransientResult& r,
-                                      const ImpactSummary& s);
+                                      const ImpactSummary& s, const SwitchingLedger* switching = nullptr);
 
 // t_s, tip_m, tip_velocity_m_s, per support k: contact<k>_m, contact<k>_velocity_m_s,
 // contact<k>_force_n, then the energy terms in J.
@@ -28,6 +33,7 @@ CsvTable history_csv(const TransientResult& r);
 CsvTable events_csv(const TransientResult& r, const ImpactSummary& s);
 
 // history.csv, events.csv and summary.json.
-OutputFiles transient_files(const Case& c, const BuiltProblem& b, const TransientResult& r, const ImpactSummary& s);
+OutputFiles transient_files(const Case& c, const BuiltProblem& b, const TransientResult& r, const ImpactSummary& s,
+                            const SwitchingLedger* switching = nullptr);
 
 }  // namespace vi

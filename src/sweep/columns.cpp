@@ -43,6 +43,7 @@ std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes)
         {"tau", "-"},              {"tau1", "-"},   {"tau2", "-"},      {"tau_p", "-"},
         {"y_max_m", "m"},          {"z_max", "-"},  {"y_max_contact_m", "m"}, {"tip_min_m", "m"},
         {"unproven_excess", "-"},
+        {"closing_time_s", "s"},   {"bounces", ""},  {"stable_contact_s", "s"}, {"release_time_s", "s"},
     };
     for (int k = 1; k <= kSweepImpactColumns; ++k) {
         const std::string p = impact_prefix(k);
@@ -81,6 +82,15 @@ std::vector<SweepCell> simulate_cells(const SimulationRun& run) {
         // sign change unseen): empty for CVODE.
         run.result.stats.method == "exact" ? SweepCell(run.result.stats.unproven_excess) : SweepCell(),
     };
+    // The switching ledger's headline; empty without electrodes (and where it has no such time).
+    if (const auto& l = run.switching) {
+        cells.push_back(opt(l->closing_time));
+        cells.push_back(static_cast<std::int64_t>(l->bounces));
+        cells.push_back(opt(l->stable_contact));
+        cells.push_back(opt(l->release_time));
+    } else {
+        cells.insert(cells.end(), 4, SweepCell());
+    }
     for (std::size_t k = 0; k < static_cast<std::size_t>(kSweepImpactColumns); ++k) {
         if (k >= s.impacts.size()) {
             cells.insert(cells.end(), 7, SweepCell());

@@ -1,5 +1,5 @@
 #pragma once
-// Independent references for beams held at both ends under an axial force (docs/electrostatics.md §6):
+// Independent references for beams held at both ends under an axial force (docs/electrostatics.md §8):
 // closed forms and characteristic equations of the axially loaded beam, and a shooting solution of
 // the clamped-clamped beam's pull-in with residual stress and mid-plane stretching. They share no
 // code with the finite-element model.

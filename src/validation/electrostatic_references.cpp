@@ -4,16 +4,13 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <utility>
 #include <vector>
 
 namespace vi {
 
-PullinModel parallel_plate_model(double k, double mass, double gap, double width, double length) {
-    PullinModel m;
-    m.K.resize(1, 1);
-    m.K.insert(0, 0) = k;
-    m.M.resize(1, 1);
-    m.M.insert(0, 0) = mass;
+std::shared_ptr<const ElectrostaticPad> parallel_plate_pad(double gap, double width, double length, double voltage,
+                                                          TimeFunction time) {
     PadPoint p;
     p.x = 0.5 * length;
     p.weight = length;
@@ -23,8 +20,17 @@ PullinModel parallel_plate_model(double k, double mass, double gap, double width
     geo.gap = gap;
     geo.width = width;
     geo.to = length;
-    m.pads = {std::make_shared<const ElectrostaticPad>("electrodes[0]", std::vector<int>{0}, std::vector<PadPoint>{p}, geo,
-                                                       1.0, TimeFunction{})};
+    return std::make_shared<const ElectrostaticPad>("electrodes[0]", std::vector<int>{0}, std::vector<PadPoint>{p}, geo,
+                                                    voltage, std::move(time));
+}
+
+PullinModel parallel_plate_model(double k, double mass, double gap, double width, double length) {
+    PullinModel m;
+    m.K.resize(1, 1);
+    m.K.insert(0, 0) = k;
+    m.M.resize(1, 1);
+    m.M.insert(0, 0) = mass;
+    m.pads = {parallel_plate_pad(gap, width, length, 1.0, TimeFunction{})};
     m.row = Eigen::VectorXd::Constant(1, -1.0);  // travel toward the electrode below = -v
     m.air_gap = gap;
     return m;

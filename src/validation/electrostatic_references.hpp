@@ -1,9 +1,16 @@
 #pragma once
-// Independent references for electrostatic pull-in (docs/electrostatics.md §5).
+// Independent references for electrostatic pull-in (docs/electrostatics.md §7).
+
+#include <memory>
 
 #include "dynamics/pullin.hpp"
 
 namespace vi {
+
+// An electrode `gap` [m] below a rigid plate of area width x length whose DOF 0 is v (up positive):
+// one quadrature point of weight `length` and shape value 1, at `voltage` [V] times time(t).
+std::shared_ptr<const ElectrostaticPad> parallel_plate_pad(double gap, double width, double length, double voltage,
+                                                          TimeFunction time);
 
 // A rigid plate of area width x length on a spring k [N/m] with mass [kg], across `gap` [m] from an
 // electrode below it: one DOF, one quadrature point of weight `length` and shape value 1; its

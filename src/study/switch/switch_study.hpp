@@ -1,7 +1,7 @@
 #pragma once
 // The switch report (`vibroimpact switch-report`): a contact switch's static pull-in (V(travel),
 // C-V, f-V) and its switching transient with the bounce ledger, as one page with figures
-// (docs/electrostatics.md §8).
+// (docs/electrostatics.md §10).
 
 #include <string>
 #include <vector>

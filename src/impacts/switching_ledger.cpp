@@ -1,0 +1,161 @@
+#include "impacts/switching_ledger.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+namespace vi {
+namespace {
+
+std::string us_text(double t) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.4g us", t * 1e6);
+    return buf;
+}
+
+// Where g, linear from (t0, a) to (t1, b), reaches the level `level` (a and b on either side of it).
+double crossing(double t0, double a, double t1, double b, double level) {
+    return t0 + (t1 - t0) * (level - a) / (b - a);
+}
+
+// The first time |g| rises above `thr` on [0, period) of a sine, scanned in 1/512 of the period and
+// refined by bisection (bounded loops); |g| is certain to pass thr within one period.
+double harmonic_on(const TimeFunction& g, double thr) {
+    if (std::abs(g(0.0)) > thr) return 0.0;
+    const double period = 1.0 / g.frequency_hz;
+    constexpr int kScan = 512;
+    for (int i = 1; i <= kScan; ++i) {
+        double lo = period * (i - 1) / kScan, hi = period * i / kScan;
+        if (std::abs(g(hi)) <= thr) continue;
+        for (int k = 0; k < 60; ++k) {
+            const double mid = 0.5 * (lo + hi);
+            (std::abs(g(mid)) > thr ? hi : lo) = mid;
+        }
+        return hi;
+    }
+    return 0.0;  // unreachable for a sine whose largest |g| exceeds thr
+}
+
+// One electrode's window, thr = the off level of |g| (g dimensionless, V = voltage g).
+VoltageWindow window_of(const TimeFunction& g, double thr) {
+    VoltageWindow w;
+    switch (g.kind) {
+        case TimeFunction::Kind::constant: w.on = 0.0; return w;
+        case TimeFunction::Kind::step: w.on = g.t_on; return w;
+        case TimeFunction::Kind::harmonic: w.on = harmonic_on(g, thr); return w;
+        case TimeFunction::Kind::table: break;
+    }
+    const std::vector<double>& t = g.times;
+    const std::vector<double>& v = g.values;
+    // Held before the first knot and after the last; linear between, so |g| can pass thr only once
+    // per segment whose ends lie on either side of it.
+    if (std::abs(v.front()) > thr) {
+        w.on = 0.0;
+    } else {
+        for (std::size_t i = 0; i + 1 < v.size(); ++i) {
+            if (std::abs(v[i + 1]) > thr) {
+                w.on = crossing(t[i], v[i], t[i + 1], v[i + 1], std::copysign(thr, v[i + 1]));
+                break;
+            }
+        }
+    }
+    if (std::abs(v.back()) > thr) return w;
+    for (std::size_t i = v.size() - 1; i-- > 0;) {
+        if (std::abs(v[i]) > thr) {
+            w.off = crossing(t[i], v[i], t[i + 1], v[i + 1], std::copysign(thr, v[i]));
+            break;
+        }
+    }
+    return w;
+}
+
+}  // namespace
+
+VoltageWindow voltage_window(const std::vector<Electrode>& electrodes) {
+    VoltageWindow all;
+    bool never_off = false;
+    for (const Electrode& e : electrodes) {
+        const double peak = std::abs(e.voltage) * e.time.max_abs();
+        if (!(peak > 0.0)) continue;
+        const VoltageWindow w = window_of(e.time, kVoltageOffFraction * e.time.max_abs());
+        if (w.on) all.on = all.on ? std::min(*all.on, *w.on) : *w.on;
+        if (!w.off) never_off = true;
+        if (w.off) all.off = all.off ? std::max(*all.off, *w.off) : *w.off;
+    }
+    if (never_off || !all.on) all.off.reset();
+    return all;
+}
+
+SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1) {
+    SwitchingLedger L;
+    L.voltage = voltage_window(electrodes);
+    const std::vector<ContactEpisode>& eps = r.episodes;
+    const double horizon = r.t_end;
+    if (eps.empty()) {
+        L.state = "never_closed";
+        L.reason = !L.voltage.on ? "no electrode has a voltage"
+                                 : "no support closed in the horizon (" + us_text(horizon) + ")";
+        return L;
+    }
+    L.closing_time = eps.front().t_on;
+    const bool fell = L.voltage.off && *L.voltage.off < horizon;
+    // Stable: closed when the voltage falls; or, with the voltage still on, closed to the horizon for
+    // at least one period of mode 1 (a younger contact may still bounce open).
+    const double period = 2.0 * std::numbers::pi / omega1;
+    std::optional<std::size_t> stable;
+    bool young = false;
+    for (std::size_t i = 0; i < eps.size(); ++i) {
+        const ContactEpisode& e = eps[i];
+        const bool held = fell ? (e.t_on < *L.voltage.off && (e.closed_at_end || e.t_off >= *L.voltage.off))
+                               : e.closed_at_end;
+        if (!held) continue;
+        if (!fell && horizon - e.t_on < period) {
+            young = true;
+            continue;
+        }
+        stable = i;
+        break;
+    }
+    for (std::size_t i = 0; i < eps.size(); ++i) {
+        const ContactEpisode& e = eps[i];
+        if (stable ? i > *stable : (fell && e.t_on >= *L.voltage.off)) break;
+        L.contacts.push_back({e.support, e.t_on, e.t_off, e.v_in, e.peak_force, e.closed_at_end});
+        L.peak_force = std::max(L.peak_force, e.peak_force);
+        if (!e.closed_at_end && (!stable || i < *stable)) ++L.bounces;
+    }
+    if (stable) L.stable_contact = eps[*stable].t_on;
+
+    const bool closed_at_end = std::any_of(eps.begin(), eps.end(), [](const ContactEpisode& e) { return e.closed_at_end; });
+    double last_end = 0.0;
+    for (const ContactEpisode& e : eps) last_end = std::max(last_end, e.t_off);
+    if (closed_at_end) {
+        L.state = "closed";
+        if (fell) {
+            L.reason = "the horizon ended " + us_text(horizon - *L.voltage.off) + " after the voltage fell";
+        } else if (L.voltage.off) {
+            L.reason = "the voltage falls at " + us_text(*L.voltage.off) + ", after the horizon";
+        } else {
+            L.reason = "the voltage never falls";
+        }
+        if (!stable && young) {
+            L.reason += "; the last contact began less than one period of mode 1 (" + us_text(period) +
+                        ") before the horizon ended, too late to call it stable";
+        }
+    } else if (!fell) {
+        L.state = "bouncing";
+        L.reason = "open at the horizon with the voltage on; the last contact ended at " + us_text(last_end);
+    } else if (last_end >= *L.voltage.off) {
+        L.state = "released";
+        L.release_time = last_end;
+        L.reason = "the last contact ended " + us_text(last_end - *L.voltage.off) +
+                   " after the voltage fell and the switch stayed open to the horizon";
+    } else {
+        L.state = "opened_before_voltage_off";
+        L.reason = "the last contact ended at " + us_text(last_end) + ", before the voltage fell at " +
+                   us_text(*L.voltage.off);
+    }
+    return L;
+}
+
+}  // namespace vi

@@ -1,0 +1,54 @@
+#pragma once
+// The switching ledger of a transient under electrode voltage: closing time, bounces, time to stable
+// contact, and release (or why not) after the voltage falls (docs/electrostatics.md §5).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "dynamics/transient_result.hpp"
+#include "model/case.hpp"
+
+namespace vi {
+
+// |V| at or below this fraction of an electrode's largest |V| counts as off (the force, ~V^2, is
+// then below 1e-4 of its largest value).
+inline constexpr double kVoltageOffFraction = 0.01;
+
+// When the electrodes' voltage is on: the first time any |V(t)| rises above kVoltageOffFraction of
+// its largest value, and the time after which every |V(t)| stays at or below it [s]. `off` is empty
+// when some voltage never falls for good (constant, step, sine, a table that ends on); both are empty
+// when no electrode has a voltage.
+struct VoltageWindow {
+    std::optional<double> on, off;
+};
+VoltageWindow voltage_window(const std::vector<Electrode>& electrodes);
+
+// One contact episode of the switching sequence (the first contact, each bounce, the stable one).
+struct SwitchingContact {
+    int support = 0;
+    double t_on = 0.0, t_off = 0.0;  // [s] (t_off is the horizon if still closed)
+    double impact_velocity = 0.0;    // contact point's velocity at onset, signed, v up [m/s]
+    double peak_force = 0.0;         // [N]
+    bool closed_at_end = false;
+};
+
+struct SwitchingLedger {
+    VoltageWindow voltage;
+    std::optional<double> closing_time;    // onset of the first contact episode [s]
+    int bounces = 0;                       // contact episodes that opened before stable contact
+    std::optional<double> stable_contact;  // onset of the episode that stays closed [s]
+    std::vector<SwitchingContact> contacts;  // first contact up to stable contact (or all, without one)
+    double peak_force = 0.0;               // largest of those [N]
+    std::optional<double> release_time;    // end of the last contact, once the voltage has fallen [s]
+    // never_closed, closed (still closed at the horizon), released (opened after the voltage fell),
+    // opened_before_voltage_off, bouncing (open at the horizon with the voltage still on).
+    std::string state;
+    std::string reason;  // one sentence: why that state
+};
+
+// What the ledger needs besides the transient: the first circular frequency of the unsupported beam
+// (a contact must last one period 2 pi / omega1 to count as stable) [rad/s].
+SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1);
+
+}  // namespace vi
