@@ -43,6 +43,7 @@ TEST(SwitchReport, ThePageHoldsThePullinAndTheBounceLedgerOfTheExample) {
     char v_pi[32];
     std::snprintf(v_pi, sizeof v_pi, "%.5g", alone["pullin"]["voltage_V"].get<double>());
     EXPECT_NE(md.find(v_pi), std::string::npos) << v_pi;
+    EXPECT_NE(md.find("### Switching ledger"), std::string::npos);
     EXPECT_NE(test::read_text(dir + "/report.html").find("data:image/png;base64,"), std::string::npos);
     fs::remove_all(tmp);
 }

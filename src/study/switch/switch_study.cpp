@@ -104,6 +104,15 @@ ReportDocument switch_report(const SwitchStudy& s, const std::string& command) {
         "static pull-in for comparison: " + volts(s.pullin.pullin ? std::optional<double>(s.pullin.pullin->voltage) : std::nullopt),
         "solver: " + r.stats.method + ", " + std::to_string(r.stats.steps) + " steps, " + fixed("%.3f", s.transient_s) + " s"};
     d.list(facts);
+    if (s.transient.switching) {
+        const SwitchingLedger& w = *s.transient.switching;
+        const auto us = [](const std::optional<double>& t) { return t ? fixed("%.5g us", *t * 1e6) : std::string("-"); };
+        d.heading(3, "Switching ledger");
+        d.table({"closing time", "bounces", "stable contact from", "peak contact force [uN]", "release time", "state"},
+                {{us(w.closing_time), std::to_string(w.bounces), us(w.stable_contact), fixed("%.4g", w.peak_force * 1e6),
+                  us(w.release_time), w.state}});
+        d.paragraph(w.reason);
+    }
     d.heading(3, "Bounce ledger: every contact episode");
     d.table({"episode", "support", "onset [us]", "end [us]", "impact velocity [m/s]", "peak force [uN]",
              "peak penetration [nm]"},
