@@ -20,6 +20,7 @@
 #include "forces/kelvin_voigt_contact.hpp"
 #include "io/case_reader.hpp"
 #include "model/input_error.hpp"
+#include "support/pad_points.hpp"
 #include "support/run_command.hpp"
 #include "validation/electrostatic_references.hpp"
 #include "support/test_files.hpp"
@@ -30,16 +31,7 @@ namespace {
 // A pad over one beam element of length 10 um (4 DOFs), with a dielectric and Meijs-Fokkema fringing.
 std::shared_ptr<const ElectrostaticPad> beam_pad(Fringing fringing, TimeFunction g) {
     const double L = 10e-6;
-    std::vector<PadPoint> pts;
-    for (double xi : {0.1, 0.4, 0.7, 0.95}) {
-        PadPoint p;
-        p.x = xi * L;
-        p.weight = L / 4;
-        p.local = {0, 1, 2, 3};
-        p.shape = {1 - 3 * xi * xi + 2 * xi * xi * xi, L * (xi - 2 * xi * xi + xi * xi * xi), 3 * xi * xi - 2 * xi * xi * xi,
-                   L * (-xi * xi + xi * xi * xi)};
-        pts.push_back(p);
-    }
+    const std::vector<PadPoint> pts = test::one_element_points(L);
     PadGeometry geo;
     geo.sign = 1.0;
     geo.gap = 2e-6;
