@@ -15,16 +15,8 @@ DielectricContact::DielectricContact(std::string name, std::vector<int> dofs, st
     }
 }
 
-double DielectricContact::displacement(const PadPoint& p, const double* q) const {
-    double v = 0.0;
-    for (int i = 0; i < 4; ++i) {
-        if (p.local[i] >= 0) v += p.shape[i] * q[p.local[i]];
-    }
-    return v;
-}
-
 double DielectricContact::penetration(const PadPoint& p, const double* q) const {
-    return geometry_.sign * displacement(p, q) - (geometry_.gap - geometry_.dielectric_thickness);
+    return geometry_.sign * point_displacement(p, q) - (geometry_.gap - geometry_.dielectric_thickness);
 }
 
 std::size_t DielectricContact::deepest(const double* q) const {
@@ -46,10 +38,7 @@ void DielectricContact::add_force(const ElementState& s, int mode, double* f) co
         const double d = penetration(p, s.q);
         if (d <= 0.0) continue;
         // The layer pushes the beam away from the electrode: -sign k d per unit length.
-        const double load = -geometry_.sign * stiffness_ * d * p.weight;
-        for (int i = 0; i < 4; ++i) {
-            if (p.local[i] >= 0) f[p.local[i]] += load * p.shape[i];
-        }
+        add_point_load(p, -geometry_.sign * stiffness_ * d * p.weight, f);
     }
 }
 
@@ -59,15 +48,7 @@ void DielectricContact::add_tangent(const ElementState& s, int mode, double* dfd
     for (const PadPoint& p : points_) {
         if (penetration(p, s.q) <= 0.0) continue;
         // d f_i / d q_j = -sign k (d d / d q_j) N_i w = -k N_i N_j w (sign^2 = 1).
-        const double k = -stiffness_ * p.weight;
-        for (int i = 0; i < 4; ++i) {
-            if (p.local[i] < 0) continue;
-            for (int j = 0; j < 4; ++j) {
-                if (p.local[j] < 0) continue;
-                dfdq[static_cast<std::size_t>(p.local[i]) * n + static_cast<std::size_t>(p.local[j])] +=
-                    k * p.shape[i] * p.shape[j];
-            }
-        }
+        add_point_stiffness(p, -stiffness_ * p.weight, n, dfdq);
     }
 }
 
@@ -103,7 +84,7 @@ ContactReading DielectricContact::contact_reading(const ElementState& s) const {
         const double d = penetration(x, s.q);
         if (d > 0.0) r.force += stiffness_ * d * x.weight;
     }
-    r.point_velocity = displacement(p, s.v);
+    r.point_velocity = point_displacement(p, s.v);
     return r;
 }
 

@@ -46,7 +46,6 @@ public:
     [[nodiscard]] double position() const override { return 0.5 * (geometry_.from + geometry_.to); }
 
 private:
-    [[nodiscard]] double displacement(const PadPoint& p, const double* q) const;
     [[nodiscard]] double penetration(const PadPoint& p, const double* q) const;
     // Index of the deepest point.
     [[nodiscard]] std::size_t deepest(const double* q) const;

@@ -8,6 +8,30 @@
 
 namespace vi {
 
+double point_displacement(const PadPoint& p, const double* q) {
+    double v = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        if (p.local[i] >= 0) v += p.shape[i] * q[p.local[i]];
+    }
+    return v;
+}
+
+void add_point_load(const PadPoint& p, double load, double* f) {
+    for (int i = 0; i < 4; ++i) {
+        if (p.local[i] >= 0) f[p.local[i]] += load * p.shape[i];
+    }
+}
+
+void add_point_stiffness(const PadPoint& p, double k, std::size_t n, double* dfdq) {
+    for (int i = 0; i < 4; ++i) {
+        if (p.local[i] < 0) continue;
+        for (int j = 0; j < 4; ++j) {
+            if (p.local[j] < 0) continue;
+            dfdq[static_cast<std::size_t>(p.local[i]) * n + static_cast<std::size_t>(p.local[j])] += k * p.shape[i] * p.shape[j];
+        }
+    }
+}
+
 LineCapacitance line_capacitance(const PadGeometry& g, double gap) {
     const double w = g.width;
     LineCapacitance out;
@@ -43,12 +67,9 @@ ElectrostaticPad::ElectrostaticPad(std::string name, std::vector<int> dofs, std:
 }
 
 double ElectrostaticPad::electrical_gap(const PadPoint& p, const double* q) const {
-    double v = 0.0;
-    for (int i = 0; i < 4; ++i) {
-        if (p.local[i] >= 0) v += p.shape[i] * q[p.local[i]];
-    }
     const PadGeometry& g = geometry_;
-    return (g.gap - g.dielectric_thickness) - g.sign * v + g.dielectric_thickness / g.dielectric_permittivity;
+    return (g.gap - g.dielectric_thickness) - g.sign * point_displacement(p, q) +
+           g.dielectric_thickness / g.dielectric_permittivity;
 }
 
 void ElectrostaticPad::require_open(const PadPoint& p, double ge) const {
@@ -81,10 +102,7 @@ void ElectrostaticPad::add_force(const ElementState& s, int, double* f) const {
     for (const PadPoint& p : points_) {
         const double ge = electrical_gap(p, s.q);
         require_open(p, ge);
-        const double load = -half_v2 * line_capacitance(geometry_, ge).dc * geometry_.sign * p.weight;
-        for (int i = 0; i < 4; ++i) {
-            if (p.local[i] >= 0) f[p.local[i]] += load * p.shape[i];
-        }
+        add_point_load(p, -half_v2 * line_capacitance(geometry_, ge).dc * geometry_.sign * p.weight, f);
     }
 }
 
@@ -97,15 +115,7 @@ void ElectrostaticPad::add_tangent(const ElementState& s, int, double* dfdq, dou
         const double ge = electrical_gap(p, s.q);
         require_open(p, ge);
         // d f_i / d q_j = V^2/2 c''(g_e) N_i N_j (sign^2 = 1): a negative stiffness.
-        const double k = half_v2 * line_capacitance(geometry_, ge).d2c * p.weight;
-        for (int i = 0; i < 4; ++i) {
-            if (p.local[i] < 0) continue;
-            for (int j = 0; j < 4; ++j) {
-                if (p.local[j] < 0) continue;
-                dfdq[static_cast<std::size_t>(p.local[i]) * n + static_cast<std::size_t>(p.local[j])] +=
-                    k * p.shape[i] * p.shape[j];
-            }
-        }
+        add_point_stiffness(p, half_v2 * line_capacitance(geometry_, ge).d2c * p.weight, n, dfdq);
     }
 }
 

@@ -3,6 +3,7 @@
 // faces, integrated on the beam's Hermite shape functions by Gauss quadrature (docs/electrostatics.md).
 
 #include <array>
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,13 @@ struct PadPoint {
     std::array<int, 4> local{-1, -1, -1, -1};
     std::array<double, 4> shape{};
 };
+
+// v at the point from the DOFs q (in the order the point's local indices refer to) [m].
+double point_displacement(const PadPoint& p, const double* q);
+// Adds a transverse load [N] at the point to the generalised forces f (its shape functions).
+void add_point_load(const PadPoint& p, double load, double* f);
+// Adds k N_i N_j [N/m] at the point to the row-major n x n tangent dfdq.
+void add_point_stiffness(const PadPoint& p, double k, std::size_t n, double* dfdq);
 
 // The electrode as the force sees it. Electrical gap at a point: g_e = (gap - t_d) - sign v + t_d /
 // eps_r, with sign = +1 for an electrode above (it pulls +v), -1 below.
