@@ -171,5 +171,16 @@ TEST(KnownDefects, HangNearGrazingCvodeAgreesWithExact) {
     }
 }
 
+// A step to 50.5 V on the cantilever switch never ended: CVODE returned one rounding-level root
+// again and again at t = 2e-12 s without a step. 50.5 V lies below the dynamic pull-in (53.3 V,
+// docs/electrostatics.md §6), so the answer is a switch that never closes.
+TEST(KnownDefects, SwitchStepWithStalledRootEndsNeverClosed) {
+    const json s = simulate(test::source_path("tests/cases/switch_stalled_root.toml"), 60.0, "switch_stalled_root");
+    ASSERT_TRUE(s.is_object());
+    EXPECT_EQ(s["switching"]["state"], "never_closed") << s["switching"];
+    EXPECT_EQ(s["impacts"].size(), 0u);
+    EXPECT_GT(s["solver"]["steps"].get<int>(), 100) << "the run must reach the horizon, not stop at the start";
+}
+
 }  // namespace
 }  // namespace vi

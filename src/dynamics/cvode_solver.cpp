@@ -155,6 +155,7 @@ private:
     double t_restart_ = 0.0, last_event_t_ = -1.0;
     double t_done_ = 0.0;                // time of the last return of CVODE (all before is recorded)
     int burst_ = 0;
+    int stalled_roots_ = 0;              // root returns in a row at one instant that switched nothing
 };
 
 void Driver::check(int flag, const char* what) const {
@@ -424,7 +425,21 @@ TransientResult Driver::run() {
         }
         check_run();
         if (flag == CV_ROOT_RETURN) {
+            const int events_before = r_.stats.events;
             t = handle_roots(tret);
+            // Watch functions at the rounding level (a velocity of 1e-23 m/s just after a start at
+            // rest) can make CVODE return the same root again and again without stepping. A restart
+            // there forgets the step history and holds a function that is exactly 0 inactive.
+            if (r_.stats.events == events_before && same_time(t, t_done_)) {
+                if (++stalled_roots_ > 100) {
+                    throw std::runtime_error("solve_cvode: root finding makes no progress in time at t = " +
+                                             std::to_string(t * 1e6) +
+                                             " us (a watch function stays at the rounding level; tighten solver.rtol)");
+                }
+                restart(t);
+            } else {
+                stalled_roots_ = 0;
+            }
             if (o_.stop_at_first_contact && contact_closed()) {
                 sample_until(t, false);
                 t_final_ = t;
