@@ -32,21 +32,12 @@ void add_point_stiffness(const PadPoint& p, double k, std::size_t n, double* dfd
     }
 }
 
-LineCapacitance line_capacitance(const PadGeometry& g, double gap) {
-    const double w = g.width;
-    LineCapacitance out;
-    const double inverse = 1.0 / gap;  // one division: this runs at every quadrature point of every step
-    out.c = kEpsilon0 * w * inverse;
-    out.dc = -out.c * inverse;
-    out.d2c = -2.0 * out.dc * inverse;
-    if (g.fringing == Fringing::meijs_fokkema) {
-        // eps0 (0.77 + 1.06 (w/g)^(1/4) + 1.06 (t/g)^(1/2)) and its derivatives in g.
-        const double a = 1.06 * std::pow(w, 0.25), b = 1.06 * std::sqrt(g.beam_thickness);
-        out.c += kEpsilon0 * (0.77 + a * std::pow(gap, -0.25) + b * std::pow(gap, -0.5));
-        out.dc += kEpsilon0 * (-0.25 * a * std::pow(gap, -1.25) - 0.5 * b * std::pow(gap, -1.5));
-        out.d2c += kEpsilon0 * (0.3125 * a * std::pow(gap, -2.25) + 0.75 * b * std::pow(gap, -2.5));
-    }
-    return out;
+void add_fringing(const PadGeometry& g, double gap, LineCapacitance& out) {
+    // eps0 (0.77 + 1.06 (w/g)^(1/4) + 1.06 (t/g)^(1/2)) and its derivatives in g.
+    const double a = 1.06 * std::pow(g.width, 0.25), b = 1.06 * std::sqrt(g.beam_thickness);
+    out.c += kEpsilon0 * (0.77 + a * std::pow(gap, -0.25) + b * std::pow(gap, -0.5));
+    out.dc += kEpsilon0 * (-0.25 * a * std::pow(gap, -1.25) - 0.5 * b * std::pow(gap, -1.5));
+    out.d2c += kEpsilon0 * (0.3125 * a * std::pow(gap, -2.25) + 0.75 * b * std::pow(gap, -2.5));
 }
 
 ElectrostaticPad::ElectrostaticPad(std::string name, std::vector<int> dofs, std::vector<PadPoint> points,
@@ -64,22 +55,21 @@ ElectrostaticPad::ElectrostaticPad(std::string name, std::vector<int> dofs, std:
             if (l >= static_cast<int>(dofs_.size())) throw std::invalid_argument(name_ + ": DOF index out of range");
         }
     }
+    layer_ = g.dielectric_thickness / g.dielectric_permittivity;
+    rest_gap_ = (g.gap - g.dielectric_thickness) + layer_;
+    // A dielectric is a contact (DielectricContact): the beam may press into it elastically, by far
+    // less than its thickness; half its electrical thickness means the layer has failed. A bare
+    // face stops the run where the beam reaches it.
+    open_above_ = layer_ > 0.0 ? 0.5 * layer_ : 0.0;
 }
 
 double ElectrostaticPad::electrical_gap(const PadPoint& p, const double* q) const {
-    const PadGeometry& g = geometry_;
-    return (g.gap - g.dielectric_thickness) - g.sign * point_displacement(p, q) +
-           g.dielectric_thickness / g.dielectric_permittivity;
+    return rest_gap_ - geometry_.sign * point_displacement(p, q);
 }
 
-void ElectrostaticPad::require_open(const PadPoint& p, double ge) const {
-    const PadGeometry& g = geometry_;
-    const double layer = g.dielectric_thickness / g.dielectric_permittivity;
-    const double air = ge - layer;
-    if (layer > 0.0) {
-        // A dielectric is a contact (DielectricContact): the beam may press into it elastically, by
-        // far less than its thickness; half its electrical thickness means the layer has failed.
-        if (ge > 0.5 * layer) return;
+void ElectrostaticPad::refuse(const PadPoint& p, double ge) const {
+    const double air = ge - layer_;
+    if (layer_ > 0.0) {
         char buf[200];
         std::snprintf(buf, sizeof buf,
                       "the beam presses %.3g nm into the dielectric at x = %.4g um, half its electrical thickness: "
@@ -87,7 +77,6 @@ void ElectrostaticPad::require_open(const PadPoint& p, double ge) const {
                       -air * 1e9, p.x * 1e6);
         throw std::domain_error(name_ + ": " + buf);
     }
-    if (ge > 0.0 && air > -1e-3 * g.gap) return;
     char buf[160];
     std::snprintf(buf, sizeof buf, "the beam reaches the electrode at x = %.4g um (air gap %.3g um)", p.x * 1e6, air * 1e6);
     throw std::domain_error(name_ + ": " + buf + "; a bare electrode face is not a contact: add a support that stops "

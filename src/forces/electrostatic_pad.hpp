@@ -55,7 +55,18 @@ inline constexpr int kPadGaussPoints = 8;
 struct LineCapacitance {
     double c = 0.0, dc = 0.0, d2c = 0.0;
 };
-LineCapacitance line_capacitance(const PadGeometry& g, double gap);
+// Adds Meijs-Fokkema's fringing terms to a parallel-plate c (the slow part, out of line).
+void add_fringing(const PadGeometry& g, double gap, LineCapacitance& out);
+// Inline because it runs at every quadrature point of every right-hand side.
+inline LineCapacitance line_capacitance(const PadGeometry& g, double gap) {
+    LineCapacitance out;
+    const double inverse = 1.0 / gap;
+    out.c = kEpsilon0 * g.width * inverse;
+    out.dc = -out.c * inverse;
+    out.d2c = -2.0 * out.dc * inverse;
+    if (g.fringing == Fringing::meijs_fokkema) add_fringing(g, gap, out);
+    return out;
+}
 
 // Line loads over the span of `points` (on n DOFs) constant, linear and quadratic in x: the shapes
 // an electrode's force and its dielectric's contact take, for a reduced-order model's corrections.
@@ -108,7 +119,10 @@ private:
     [[nodiscard]] double electrical_gap(const PadPoint& p, const double* q) const;
     // Throws std::domain_error when the beam reaches a bare electrode's face (no force is defined
     // there) or presses through half a dielectric's electrical thickness.
-    void require_open(const PadPoint& p, double ge) const;
+    void require_open(const PadPoint& p, double ge) const {
+        if (!(ge > open_above_)) refuse(p, ge);
+    }
+    [[noreturn]] void refuse(const PadPoint& p, double ge) const;
 
     std::string name_;
     std::vector<int> dofs_;
@@ -116,6 +130,9 @@ private:
     PadGeometry geometry_;
     double voltage_;
     TimeFunction time_;
+    double layer_ = 0.0;       // the dielectric's electrical thickness t_d / eps_r [m]
+    double rest_gap_ = 0.0;    // g_e at v = 0 [m]
+    double open_above_ = 0.0;  // require_open passes for g_e above this [m]
 };
 
 }  // namespace vi
