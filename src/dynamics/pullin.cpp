@@ -225,18 +225,42 @@ std::string text(const char* format, double a, double b = 0.0) {
     return buf;
 }
 
-// Bisection between a (predicate false) and b (true) on the travel, to a bracket `width` of the
-// travel; each trial starts from the nearer end's state. Returns the state at the boundary.
+// The boundary between a (value <= 0) and b (value > 0) on the travel, to a bracket `width` of the
+// travel, by the Illinois variant of regula falsi: the values here (the deepest penetration, the
+// slope dV^2/dtau) are smooth in the travel, so it converges superlinearly where bisection took
+// about 40 % of a pull-in run's Newton solves. A trial that fails or gives no finite value falls
+// back to bisecting. Each trial starts from the state at the nearer end. Returns b's side.
 // At a fold V^2 is quadratic in the travel, so a bracket of 1e-9 of the travel puts V within
 // about 1e-16 of its extreme (and the travel at pull-in within 1e-9): no need to go to roundoff.
 constexpr double kFoldWidth = 1e-9;
 
-template <class Predicate>
-State bisect(const Model& m, State a, State b, bool fix_modes, int& iterations, double width, Predicate holds) {
+template <class Value>
+State locate(const Model& m, State a, State b, bool fix_modes, int& iterations, double width, Value value) {
+    double fa = value(a), fb = value(b);
+    int kept = 0;  // which end the last two trials left in place (-1 a, +1 b): Illinois halves its value
     for (int it = 0; it < 80 && std::abs(b.tau - a.tau) > width * std::abs(b.tau); ++it) {
-        State mid = a;
-        if (!solve_at(m, 0.5 * (a.tau + b.tau), mid, fix_modes, iterations)) break;
-        (holds(mid) ? b : a) = mid;
+        double t = 0.5 * (a.tau + b.tau);
+        if (std::isfinite(fa) && std::isfinite(fb) && fa <= 0.0 && fb > 0.0) {
+            const double secant = a.tau + (b.tau - a.tau) * (fa / (fa - fb));
+            if (secant > std::min(a.tau, b.tau) && secant < std::max(a.tau, b.tau)) t = secant;
+        }
+        State mid = std::abs(t - a.tau) <= std::abs(t - b.tau) ? a : b;
+        if (!solve_at(m, t, mid, fix_modes, iterations)) {
+            mid = a;
+            if (!solve_at(m, 0.5 * (a.tau + b.tau), mid, fix_modes, iterations)) break;
+        }
+        const double fm = value(mid);
+        if (fm > 0.0) {
+            b = mid;
+            fb = fm;
+            if (kept == -1) fa *= 0.5;
+            kept = -1;
+        } else {
+            a = mid;
+            fa = std::isfinite(fm) ? fm : std::numeric_limits<double>::quiet_NaN();
+            if (kept == +1) fb *= 0.5;
+            kept = +1;
+        }
     }
     return b;
 }
@@ -364,8 +388,8 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
             b.modes = a.modes;
             if (!solve_at(m, b.tau, b, true, r.newton_iterations)) b = s;
             // The voltage is smooth in the travel there: a bracket at roundoff gives it at roundoff.
-            const State td = bisect(m, a, b, true, r.newton_iterations, 4e-16,
-                                    [&](const State& x) { return deepest(m, x) > 0.0; });
+            const State td = locate(m, a, b, true, r.newton_iterations, 4e-16,
+                                    [&](const State& x) { return deepest(m, x); });
             r.touchdown = describe(m, td);
             r.touchdown->contact = true;
             // Held at touch-down when the closed branch starts stable there.
@@ -379,15 +403,15 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
             if (!r.pullin && open.size() >= 3 && s.lambda < previous.lambda) {
                 // The fold lies between the last two points of rising lambda and this one.
                 const State& a = open[open.size() - 3];
-                const State fold = bisect(m, a, s, false, r.newton_iterations, kFoldWidth,
-                                          [&](const State& x) { return lambda_slope(m, x) < 0.0; });
+                const State fold = locate(m, a, s, false, r.newton_iterations, kFoldWidth,
+                                          [&](const State& x) { return -lambda_slope(m, x); });
                 r.pullin = describe(m, fold);
                 open.insert(open.end() - 1, fold);
             }
         }
         if (closed && r.touchdown && !r.collapse && s.lambda < previous.lambda && any_closed(m, previous)) {
-            const State fold = bisect(m, previous, s, false, r.newton_iterations, kFoldWidth,
-                                      [&](const State& x) { return lambda_slope(m, x) < 0.0; });
+            const State fold = locate(m, previous, s, false, r.newton_iterations, kFoldWidth,
+                                      [&](const State& x) { return -lambda_slope(m, x); });
             r.collapse = describe(m, fold);
         }
         PullinPoint p = describe(m, s);
