@@ -4,6 +4,7 @@
 #include <time.h>
 
 #include <atomic>
+#include <cstdlib>
 
 #include "model/run_control.hpp"
 
@@ -53,6 +54,14 @@ extern "C" void on_stop_signal(int signal) {
     end_by(signal);
 }
 
+// mpirun's first step in ending a job (Open MPI 4.1, on its own SIGINT/SIGTERM or an aborting
+// rank) is a SIGCONT to every rank; it then waits odls_base_sigkill_timeout (1 s) before the SIGTERM.
+// It forwards no job control to the ranks (unless orte_forward_job_control is set), so under mpirun a
+// SIGCONT means the job is ending: taken as that SIGTERM, the ranks stop a second sooner.
+extern "C" void on_mpirun_continue(int) { on_stop_signal(SIGTERM); }
+
+bool under_mpirun() { return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr; }
+
 }  // namespace
 
 void install_stop_handlers() {
@@ -67,6 +76,14 @@ void install_stop_handlers() {
         for (const int m : kStopSignals) sigaddset(&sa.sa_mask, m);
         sa.sa_flags = SA_RESTART;
         sigaction(s, &sa, nullptr);
+    }
+    if (under_mpirun()) {
+        struct sigaction sa {};
+        sa.sa_handler = on_mpirun_continue;
+        sigemptyset(&sa.sa_mask);
+        for (const int m : kStopSignals) sigaddset(&sa.sa_mask, m);
+        sa.sa_flags = SA_RESTART;
+        sigaction(SIGCONT, &sa, nullptr);
     }
 }
 

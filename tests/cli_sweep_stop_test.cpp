@@ -274,6 +274,21 @@ TEST_F(SweepStop, SigtermAndSigintToMpirunKeepTheJournalAndResumeIdentically) {
     }
 }
 
+// With Open MPI's odls_base_sigkill_timeout at 0, mpirun sends SIGCONT, SIGTERM and SIGKILL to the
+// ranks at once after its own SIGTERM and ends without waiting (docs/sweeps.md): the ranks are killed,
+// not stopped, so nothing says how to resume, but every journaled point is whole and --resume
+// finishes the sweep as an uninterrupted run would.
+TEST_F(SweepStop, MpirunWithoutSigkillTimeoutKillsTheRanksAndTheJournalStillResumes) {
+    if (const std::string why = test::mpi_unavailable(); !why.empty()) GTEST_SKIP() << why;
+    std::vector<std::string> env = test::mpi_env();
+    env.push_back("OMPI_MCA_odls_base_sigkill_timeout=0");
+    test::ChildProcess child(test::mpi_argv(args({"--threads", "1", "--out", out_})), env, true);
+    const CommandResult r = interrupt(child, SIGTERM);
+    expect_stopped_in_time(r, "mpirun -n 2 sweep, odls_base_sigkill_timeout 0, SIGTERM to mpirun");
+    EXPECT_NE(r.exit_code, 0) << r.err;
+    expect_intact_then_resume();
+}
+
 // Slurm's --signal=TERM@T (and `kill` of every rank) signals each rank at once, not through mpirun:
 // every rank stops, rank 0 keeps the journal, the ranks exit with 143 (which mpirun then reports);
 // resumed under MPI as a requeued job would be.
