@@ -57,8 +57,13 @@ extern "C" void on_stop_signal(int signal) {
 // mpirun's first step in ending a job (Open MPI 4.1, on its own SIGINT/SIGTERM or an aborting
 // rank) is a SIGCONT to every rank; it then waits odls_base_sigkill_timeout (1 s) before the SIGTERM.
 // It forwards no job control to the ranks (unless orte_forward_job_control is set), so under mpirun a
-// SIGCONT means the job is ending: taken as that SIGTERM, the ranks stop a second sooner.
-extern "C" void on_mpirun_continue(int) { on_stop_signal(SIGTERM); }
+// SIGCONT means the job is ending: taken as that SIGTERM, the ranks stop a second sooner. It only
+// ever starts a stop: after a stop already under way (a rank signalled directly, whose exit makes
+// mpirun end the job) it must not count as the second signal that ends the process at once.
+extern "C" void on_mpirun_continue(int) {
+    long long first = 0;
+    if (g_first_ns.compare_exchange_strong(first, now_ns())) vi::request_stop(SIGTERM);
+}
 
 bool under_mpirun() { return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr; }
 
