@@ -1,0 +1,191 @@
+// `vibroimpact optimize CASE --vary PATH=LOW:HIGH ... --minimize QUANTITY [--constraint ...]`:
+// the best design in a box of case values (docs/optimization.md).
+
+#include <cstdio>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "commands.hpp"
+#include "design/optimizer.hpp"
+#include "io/case_reader.hpp"
+#include "io/number_text.hpp"
+#include "io/output_files.hpp"
+#include "model/input_error.hpp"
+#include "model/run_control.hpp"
+#include "plot/figure_gnuplot.hpp"
+#include "stop_signals.hpp"
+
+namespace vi::cli {
+namespace {
+
+std::string cell(const std::optional<double>& v) { return v ? round_trip_text(*v) : ""; }
+
+std::string quoted(const std::string& s) {
+    std::string out = "\"";
+    for (char ch : s) {
+        if (ch == '"') out += '"';
+        out += ch;
+    }
+    return out + "\"";
+}
+
+std::string evaluations_csv(const DesignProblem& p, const OptimizeResult& r) {
+    std::string text = "index,stage";
+    for (const DesignVariable& v : p.variables) text += "," + v.path.text();
+    text += "," + p.columns[p.objective].name;
+    for (const DesignConstraint& c : p.constraints) text += "," + p.columns[c.column].name;
+    text += ",feasible,best_so_far,status\n";
+    for (const DesignEvaluation& e : r.evaluations) {
+        text.append(std::to_string(e.index)).append(",").append(e.stage);
+        for (double x : e.x) text.append(",").append(round_trip_text(x));
+        text.append(",").append(cell(e.outcome.objective));
+        for (const auto& c : e.outcome.constraints) text.append(",").append(cell(c));
+        text.append(e.feasible ? ",1," : ",0,").append(cell(e.best)).append(",").append(quoted(e.outcome.status)).append("\n");
+    }
+    return text;
+}
+
+nlohmann::json result_json(const DesignProblem& p, const OptimizeResult& r, const std::string& command) {
+    nlohmann::json j;
+    j["command"] = command;
+    j["objective"] = {{"quantity", p.columns[p.objective].name}, {"sense", p.maximize ? "maximize" : "minimize"}};
+    for (const DesignVariable& v : p.variables) j["variables"].push_back({{"path", v.path.text()}, {"low", v.low}, {"high", v.high}});
+    j["constraints"] = nlohmann::json::array();
+    for (const DesignConstraint& c : p.constraints) j["constraints"].push_back(c.text);
+    int global = 0;
+    for (const DesignEvaluation& e : r.evaluations) global += e.stage == "global" ? 1 : 0;
+    j["evaluations"] = {{"global", global}, {"local", static_cast<int>(r.evaluations.size()) - global}};
+    j["global_end"] = r.global_end;
+    j["local_end"] = r.local_end;
+    if (r.best) {
+        const DesignEvaluation& b = r.evaluations[*r.best];
+        nlohmann::json best;
+        best["index"] = b.index;
+        for (std::size_t i = 0; i < b.x.size(); ++i) best["x"][p.variables[i].path.text()] = b.x[i];
+        best["objective"] = *b.outcome.objective;
+        for (std::size_t k = 0; k < p.constraints.size(); ++k) best["constraints"][p.constraints[k].text] = *b.outcome.constraints[k];
+        j["best"] = best;
+    } else {
+        j["best"] = nullptr;
+    }
+    return j;
+}
+
+FigureSpec convergence_figure(const DesignProblem& p, const OptimizeResult& r) {
+    std::string data = "index,value,best\n";
+    for (const DesignEvaluation& e : r.evaluations) {
+        data += std::to_string(e.index) + "," + (e.feasible ? cell(e.outcome.objective) : "") + "," + cell(e.best) + "\n";
+    }
+    const std::string q = p.columns[p.objective].name;
+    FigureSpec f;
+    f.name = "convergence";
+    f.title = "Convergence: " + q + " against evaluations";
+    f.caption = "Each feasible design's " + q + " (points) and the best so far (line), global stage then local.";
+    f.data = {{"convergence.csv", data}};
+    f.plot = "set datafile separator ','\nset key top right\nset xlabel 'evaluation'\nset ylabel " + gp_quote(q) +
+             " noenhanced\nplot 'convergence.csv' using 1:2 every ::1 with points pt 7 ps 0.6 title 'design', "
+             "'' using 1:3 every ::1 with steps lw 2 title 'best so far'\n";
+    return f;
+}
+
+}  // namespace
+
+CommandBody add_optimize_command(CLI::App& app) {
+    struct Options {
+        std::string case_path;
+        std::vector<std::string> vary, constraints;
+        std::string minimize, maximize;
+        int max_evals = 100, global_evals = 0;
+        double point_timeout = 60.0;
+        std::string out = "out/optimize";
+        std::string gnuplot = "gnuplot";
+        bool json = false;
+    };
+    auto opt = std::make_shared<Options>();
+    CLI::App* sub = app.add_subcommand("optimize", "The design that minimises (or maximises) a reported quantity in a box of case values");
+    sub->add_option("case", opt->case_path, "Case file (TOML)")->required();
+    sub->add_option("--vary", opt->vary, "PATH=LOW:HIGH, SI units, as --set of sweep (repeat for more)")->required();
+    auto* mn = sub->add_option("--minimize", opt->minimize, "Reported quantity to minimise (a sweep column, e.g. z_max, Tp_s)");
+    auto* mx = sub->add_option("--maximize", opt->maximize, "Reported quantity to maximise");
+    mn->excludes(mx);
+    sub->add_option("--constraint", opt->constraints, "NAME<=VALUE or NAME>=VALUE on a reported quantity (repeat for more)");
+    sub->add_option("--max-evals", opt->max_evals, "Designs computed at most, both stages together")
+        ->check(CLI::Range(2, 100000))->capture_default_str();
+    sub->add_option("--global-evals", opt->global_evals, "Of those, the global stage's (0: half)")
+        ->check(CLI::Range(0, 100000))->capture_default_str();
+    sub->add_option("--point-timeout", opt->point_timeout, "Wall-clock limit of one design [s] (0: none)")
+        ->check(CLI::Range(0.0, 1e9))->capture_default_str();
+    sub->add_option("--out,-o", opt->out, "Folder for optimize.json, evaluations.csv and the convergence figure")
+        ->capture_default_str();
+    sub->add_option("--gnuplot", opt->gnuplot, "gnuplot executable (name on PATH or path)")->capture_default_str();
+    sub->add_flag("--json", opt->json, "Print optimize.json on stdout instead of text");
+
+    return [opt]() {
+        if (opt->minimize.empty() == opt->maximize.empty()) throw InputError("optimize: give one of --minimize or --maximize");
+        const auto gnuplot = find_gnuplot(opt->gnuplot);
+        if (!gnuplot) {
+            throw std::runtime_error("gnuplot: '" + opt->gnuplot +
+                                     "' not found; the convergence figure needs it (Debian: apt-get install gnuplot-nox)");
+        }
+        DesignProblem p;
+        p.base = read_case_file(opt->case_path);
+        p.columns = sweep_result_columns(SweepAnalysis::simulate, 0);
+        p.settings.point_timeout = opt->point_timeout;
+        for (const std::string& v : opt->vary) p.variables.push_back(parse_design_variable(v, p.base));
+        p.maximize = !opt->maximize.empty();
+        p.objective = quantity_column(p.maximize ? opt->maximize : opt->minimize, p.columns,
+                                      p.maximize ? "--maximize" : "--minimize");
+        for (const std::string& c : opt->constraints) p.constraints.push_back(parse_design_constraint(c, p.columns));
+        OptimizeOptions o;
+        o.max_evaluations = opt->max_evals;
+        o.global_evaluations = opt->global_evals;
+
+        const OptimizeResult r = optimize_design(p, o);
+        std::string command = "vibroimpact optimize " + opt->case_path;
+        for (const std::string& v : opt->vary) command += " --vary '" + v + "'";
+        command += p.maximize ? " --maximize " + opt->maximize : " --minimize " + opt->minimize;
+        for (const std::string& c : opt->constraints) command += " --constraint '" + c + "'";
+        command += " --max-evals " + std::to_string(opt->max_evals);
+        const nlohmann::json j = result_json(p, r, command);
+        OutputFiles files;
+        files["optimize.json"] = j.dump(2) + "\n";
+        files["evaluations.csv"] = evaluations_csv(p, r);
+        const std::vector<FigureSpec> figures = {convergence_figure(p, r)};
+        for (auto& [name, text] : figure_files(figures, render_figures(*gnuplot, figures, 1))) files[name] = text;
+        check_run();
+        {
+            const CommitSection commit;
+            write_output_files(opt->out, files);
+        }
+        if (opt->json) {
+            std::printf("%s\n", j.dump(2).c_str());
+        } else {
+            std::printf("%s %s: %zu designs (global stage: %s; local stage: %s)\n", p.maximize ? "Maximise" : "Minimise",
+                        p.columns[p.objective].name.c_str(), r.evaluations.size(), r.global_end.c_str(), r.local_end.c_str());
+            if (r.best) {
+                const DesignEvaluation& b = r.evaluations[*r.best];
+                std::printf("Best design (evaluation %zu): %s = %s\n", b.index, p.columns[p.objective].name.c_str(),
+                            round_trip_text(*b.outcome.objective).c_str());
+                for (std::size_t i = 0; i < b.x.size(); ++i) {
+                    std::printf("  %s = %s\n", p.variables[i].path.text().c_str(), round_trip_text(b.x[i]).c_str());
+                }
+                for (std::size_t k = 0; k < p.constraints.size(); ++k) {
+                    std::printf("  constraint %s: %s\n", p.constraints[k].text.c_str(),
+                                round_trip_text(*b.outcome.constraints[k]).c_str());
+                }
+            }
+            std::printf("Written to %s/\n", opt->out.c_str());
+        }
+        if (!r.best) {
+            std::fprintf(stderr, "vibroimpact: optimize: no design met the constraints and ran to the end in %zu evaluations "
+                                 "(evaluations.csv says why each failed)\n", r.evaluations.size());
+            return kExitFailure;
+        }
+        return kExitOk;
+    };
+}
+
+}  // namespace vi::cli

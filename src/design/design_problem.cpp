@@ -1,0 +1,122 @@
+#include "design/design_problem.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <variant>
+
+#include "model/input_error.hpp"
+#include "sweep/grid.hpp"
+
+namespace vi {
+namespace {
+
+// A whole-text SI number, or nullopt.
+std::optional<double> number(const std::string& text) {
+    if (text.empty()) return std::nullopt;
+    errno = 0;
+    char* end = nullptr;
+    const double v = std::strtod(text.c_str(), &end);
+    if (errno != 0 || end != text.c_str() + text.size() || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
+
+// Columns that hold text (why T_p ended, which support an impact hit), not numbers.
+bool is_text_column(const std::string& name) {
+    return name == "Tp_reason" || (name.rfind("impact", 0) == 0 && name.size() > 8 && name.ends_with("_support"));
+}
+
+std::optional<double> numeric(const SweepCell& cell) {
+    if (const double* d = std::get_if<double>(&cell)) return *d;
+    if (const std::int64_t* n = std::get_if<std::int64_t>(&cell)) return static_cast<double>(*n);
+    return std::nullopt;
+}
+
+}  // namespace
+
+DesignVariable parse_design_variable(const std::string& text, const Case& c) {
+    const auto fail = [&](const std::string& reason) { return InputError("--vary " + text + ": " + reason); };
+    const std::size_t eq = text.find('=');
+    if (eq == std::string::npos) throw fail("expected PATH=LOW:HIGH, e.g. supports[0].position=0.3:1");
+    DesignVariable v;
+    v.setting = text;
+    try {
+        v.path = resolve_case_path(text.substr(0, eq), c);
+    } catch (const InputError& e) {
+        throw fail(e.what());
+    }
+    if (is_integer_path(v.path)) {
+        throw fail(v.path.text() + " takes whole numbers, which a continuous optimiser cannot vary; sweep it with --set");
+    }
+    const std::string bounds = text.substr(eq + 1);
+    const std::size_t colon = bounds.find(':');
+    if (colon == std::string::npos || bounds.find(':', colon + 1) != std::string::npos) {
+        throw fail("expected LOW:HIGH after '=' (SI units)");
+    }
+    const std::optional<double> low = number(bounds.substr(0, colon)), high = number(bounds.substr(colon + 1));
+    if (!low || !high) throw fail("LOW and HIGH must be finite numbers (SI units)");
+    if (!(*low < *high)) throw fail("LOW must be below HIGH");
+    v.low = *low;
+    v.high = *high;
+    return v;
+}
+
+std::size_t quantity_column(const std::string& name, const std::vector<SweepColumn>& columns, const std::string& option) {
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+        if (columns[k].name != name) continue;
+        if (is_text_column(name)) throw InputError(option + " " + name + ": it is text, not a number");
+        return k;
+    }
+    std::string names;
+    for (const SweepColumn& col : columns) {
+        if (is_text_column(col.name)) continue;
+        if (!names.empty()) names += ", ";
+        names += col.name;
+    }
+    throw InputError(option + " " + name + ": no such reported quantity (one of: " + names + ")");
+}
+
+DesignConstraint parse_design_constraint(const std::string& text, const std::vector<SweepColumn>& columns) {
+    const auto fail = [&](const std::string& reason) { return InputError("--constraint " + text + ": " + reason); };
+    std::size_t at = text.find("<=");
+    DesignConstraint c;
+    c.text = text;
+    c.upper = at != std::string::npos;
+    if (!c.upper) at = text.find(">=");
+    if (at == std::string::npos) throw fail("expected NAME<=VALUE or NAME>=VALUE, e.g. impact1_peak_force_n<=1e-4");
+    try {
+        c.column = quantity_column(text.substr(0, at), columns, "--constraint");
+    } catch (const InputError& e) {
+        throw fail(e.what());
+    }
+    const std::optional<double> bound = number(text.substr(at + 2));
+    if (!bound) throw fail("VALUE must be a finite number in the quantity's SI unit");
+    c.bound = *bound;
+    return c;
+}
+
+bool DesignOutcome::feasible(const DesignProblem& p) const {
+    if (!ok() || !objective) return false;
+    for (std::size_t k = 0; k < constraints.size(); ++k) {
+        if (!constraints[k] || p.constraints[k].violation(*constraints[k]) > 0.0) return false;
+    }
+    return true;
+}
+
+DesignOutcome evaluate_design(const DesignProblem& p, const std::vector<double>& x) {
+    std::vector<SweepAxis> axes;
+    for (std::size_t i = 0; i < p.variables.size(); ++i) {
+        axes.push_back(SweepAxis{p.variables[i].setting, p.variables[i].path, {x[i]}});
+    }
+    const SweepGrid grid(std::move(axes));
+    const SweepPointResult r = run_sweep_point(p.base, grid, 0, p.settings);
+    DesignOutcome out;
+    out.status = r.status;
+    out.constraints.assign(p.constraints.size(), std::nullopt);
+    if (!r.ok()) return out;
+    out.objective = numeric(r.cells.at(p.objective));
+    for (std::size_t k = 0; k < p.constraints.size(); ++k) out.constraints[k] = numeric(r.cells.at(p.constraints[k].column));
+    return out;
+}
+
+}  // namespace vi
