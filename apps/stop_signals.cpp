@@ -69,27 +69,26 @@ bool under_mpirun() { return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr; }
 
 }  // namespace
 
+// Installs fn for signal with the stop signals and SIGCONT blocked while it runs: no handler runs
+// inside another, so the first-signal bookkeeping stays consistent.
+static void handle(int signal, void (*fn)(int)) {
+    struct sigaction sa {};
+    sa.sa_handler = fn;
+    sigemptyset(&sa.sa_mask);
+    for (const int m : kStopSignals) sigaddset(&sa.sa_mask, m);
+    sigaddset(&sa.sa_mask, SIGCONT);
+    sa.sa_flags = SA_RESTART;
+    sigaction(signal, &sa, nullptr);
+}
+
 void install_stop_handlers() {
     for (const int s : kStopSignals) {
         struct sigaction old {};
         sigaction(s, nullptr, &old);
         if (s == SIGINT && (old.sa_flags & SA_SIGINFO) == 0 && old.sa_handler == SIG_IGN) continue;
-        struct sigaction sa {};
-        sa.sa_handler = on_stop_signal;
-        sigemptyset(&sa.sa_mask);
-        // Neither handler runs inside the other: the first-signal bookkeeping stays consistent.
-        for (const int m : kStopSignals) sigaddset(&sa.sa_mask, m);
-        sa.sa_flags = SA_RESTART;
-        sigaction(s, &sa, nullptr);
+        handle(s, on_stop_signal);
     }
-    if (under_mpirun()) {
-        struct sigaction sa {};
-        sa.sa_handler = on_mpirun_continue;
-        sigemptyset(&sa.sa_mask);
-        for (const int m : kStopSignals) sigaddset(&sa.sa_mask, m);
-        sa.sa_flags = SA_RESTART;
-        sigaction(SIGCONT, &sa, nullptr);
-    }
+    if (under_mpirun()) handle(SIGCONT, on_mpirun_continue);
 }
 
 CommitSection::CommitSection() {
