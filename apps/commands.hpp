@@ -28,5 +28,6 @@ CommandBody add_paper_command(CLI::App& app);
 CommandBody add_pullin_command(CLI::App& app);
 CommandBody add_switch_report_command(CLI::App& app);
 CommandBody add_optimize_command(CLI::App& app);
+CommandBody add_fit_command(CLI::App& app);
 
 }  // namespace vi::cli

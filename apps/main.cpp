@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
     add(add_pullin_command);
     add(add_switch_report_command);
     add(add_optimize_command);
+    add(add_fit_command);
 
     try {
         app.parse(argc, argv);

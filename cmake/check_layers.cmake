@@ -1,7 +1,7 @@
 # Checks the layer order of src/ (docs/architecture.md): a file may include its own layer and the
 # layers below it, never one above. Run: cmake -DSRC=<path to src> -P check_layers.cmake
 # Prints every offending #include and fails when there is one.
-set(layers model io fem forces modal dynamics impacts report sweep design plot validation study)
+set(layers model io fem forces modal dynamics impacts report sweep design calibration plot validation study)
 if(NOT SRC)
   message(FATAL_ERROR "check_layers: pass -DSRC=<path to src>")
 endif()
