@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
     add(add_switch_report_command);
     add(add_optimize_command);
     add(add_fit_command);
+    add(add_new_command);
 
     try {
         app.parse(argc, argv);
