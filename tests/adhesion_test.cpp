@@ -6,10 +6,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <numbers>
 #include <string>
+
+#include <unistd.h>
 
 #include "case_text_fixture.hpp"
 #include "dynamics/cvode_solver.hpp"
@@ -21,6 +25,8 @@
 #include "model/input_error.hpp"
 #include "model/run_control.hpp"
 #include "study/stiction/stiction.hpp"
+#include "support/run_command.hpp"
+#include "support/test_files.hpp"
 
 namespace vi {
 namespace {
@@ -251,6 +257,27 @@ TEST(Adhesion, CaseKeysAndRefusals) {
     expect_error(adhesive("adhesion = \"dmt\"\nwork_of_adhesion = 0.1\ncontact_radius = \"1 um\"\n"
                           "[solver]\nmethod = \"exact\"\n"),
                  "bad.toml:19: solver.method: \"exact\" cannot take the adhesive contact of supports[0].adhesion");
+}
+
+// The command line: a bad adhesion value exits 2 with one line naming file:line:key and writes
+// nothing; `stiction` on a case without adhesion exits 2 naming the supports.
+TEST(Adhesion, CommandsRefuseBadAdhesionWithExitTwo) {
+    namespace fs = std::filesystem;
+    const std::string dir = (fs::temp_directory_path() / ("vi_adhesion_" + std::to_string(::getpid()))).string();
+    fs::create_directories(dir);
+    test::write_text(dir + "/bad.toml", adhesive("adhesion = \"dmt\"\nwork_of_adhesion = 0\ncontact_radius = \"1 um\"\n"
+                                                  "[solver]\nhorizon = \"10 us\"\n"));
+    const auto sim = test::run_vibroimpact({"simulate", dir + "/bad.toml", "--out", dir + "/out"});
+    EXPECT_EQ(sim.exit_code, 2);
+    EXPECT_NE(sim.err.find(dir + "/bad.toml:16: supports[0].work_of_adhesion: must be positive"), std::string::npos)
+        << sim.err;
+    EXPECT_EQ(std::count(sim.err.begin(), sim.err.end(), '\n'), 1) << sim.err;
+    EXPECT_FALSE(fs::exists(dir + "/out"));
+    test::write_text(dir + "/plain.toml", test::kBaseCase + "[[supports]]\nposition = 1.0\nstiffness = \"1000 N/m\"\n");
+    const auto st = test::run_vibroimpact({"stiction", dir + "/plain.toml"});
+    EXPECT_EQ(st.exit_code, 2);
+    EXPECT_NE(st.err.find("plain.toml:11: supports: no support has adhesion"), std::string::npos) << st.err;
+    fs::remove_all(dir);
 }
 
 }  // namespace
