@@ -31,6 +31,10 @@ void print_switching(const SwitchingLedger& l) {
     std::printf("  stable contact from              %s\n", us(l.stable_contact).c_str());
     if (!l.contacts.empty()) std::printf("  peak contact force               %.4g N\n", l.peak_force);
     std::printf("  release                          %s\n", us(l.release_time).c_str());
+    if (l.stuck) {
+        std::printf("  stuck on supports[%d]: restoring force %.4g N vs pull-off force %.4g N (the contact pulls %.4g N)\n",
+                    l.stuck->support, l.stuck->restoring_force, l.stuck->pull_off_force, -l.stuck->contact_force);
+    }
 }
 
 }  // namespace

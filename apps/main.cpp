@@ -45,6 +45,7 @@ int main(int argc, char** argv) {
     add(add_optimize_command);
     add(add_fit_command);
     add(add_new_command);
+    add(add_stiction_command);
 
     try {
         app.parse(argc, argv);

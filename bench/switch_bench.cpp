@@ -1,7 +1,8 @@
 // Wall time of the cantilever switch (examples/switch/cantilever_switch.toml, the paper's nickel
 // beam over an electrode, a contact stop under the free end): the static pull-in trace for m = 50
 // (and coarser and finer meshes), and the 50 us switching transient after a step to 1.2 V_PI on the
-// full FE model and on reduced-order models, with the reduced models' error against the full one.
+// full FE model and on reduced-order models, with the reduced models' error against the full one;
+// and the stiction example's pulse transient with and without its adhesive contact.
 
 #include <benchmark/benchmark.h>
 
@@ -99,6 +100,33 @@ BENCHMARK(BM_SwitchTransient)
     ->Args({6, 4})
     ->Args({6, 2})
     ->ArgNames({"rtol_exp", "reduced_modes"})
+    ->Unit(benchmark::kMillisecond);
+
+// The stiction example (examples/switch/cantilever_stiction.toml: the same switch, a 70 V pulse of
+// 20 us, 60 us horizon, m = 50, rtol 1e-8) with its adhesive tip contact (range(0) = 1, w in J/m^2
+// x 10 = range(1)) against the same case with a plain Kelvin-Voigt stop (range(0) = 0): what adhesion
+// costs the nonlinear path. Counters: episodes, CVODE steps, 1 when stuck at the horizon.
+void BM_StictionTransient(benchmark::State& state) {
+    vi::Case c = vi::read_case_file(std::string(VI_SOURCE_DIR) + "/examples/switch/cantilever_stiction.toml");
+    if (state.range(0) == 0) {
+        c.supports.at(0).adhesion = vi::Adhesion::none;
+    } else {
+        c.supports.at(0).work_of_adhesion = 0.1 * static_cast<double>(state.range(1));
+    }
+    vi::SimulationRun r;
+    for (auto _ : state) {
+        r = run(c, 0, c.solver.rtol);
+        benchmark::DoNotOptimize(r.result.episodes.data());
+    }
+    state.counters["episodes"] = static_cast<double>(r.result.episodes.size());
+    state.counters["steps"] = r.result.stats.steps;
+    state.counters["stuck"] = r.switching && r.switching->state == "stuck" ? 1.0 : 0.0;
+}
+BENCHMARK(BM_StictionTransient)
+    ->Args({0, 0})
+    ->Args({1, 2})
+    ->Args({1, 20})
+    ->ArgNames({"adhesion", "w_x10"})
     ->Unit(benchmark::kMillisecond);
 
 }  // namespace

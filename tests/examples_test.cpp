@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include "support/run_command.hpp"
 #include "support/test_files.hpp"
 #include "support/text_checks.hpp"
@@ -77,6 +79,43 @@ TEST(Examples, FreeImpactTipKeepsItsHeadlineNumbers) {
     EXPECT_EQ(j["Tp_reason"], "settled");
     ASSERT_TRUE(j["Tp_s"].is_number());
     EXPECT_LT(j["Tp_s"].get<double>(), 150e-6);  // settles within the horizon
+}
+
+// The stiction example (examples/switch/cantilever_stiction.toml): with w = 0.2 J/m^2 it opens again
+// after the pulse; `stiction` puts the static boundary at w = 0.370 J/m^2; with w = 2 J/m^2 the
+// transient ends stuck, with the force balance in summary.json; a sweep sets the work of adhesion.
+TEST(Examples, CantileverStictionReleasesOrSticksWithTheWorkOfAdhesion) {
+    const std::string file = test::source_path("examples/switch/cantilever_stiction.toml");
+    const auto st = run_vibroimpact({"stiction", file, "--json"});
+    ASSERT_EQ(st.exit_code, 0) << st.err;
+    const json s = json::parse(st.out);
+    EXPECT_EQ(s["supports"][0]["verdict"], "releases");
+    EXPECT_NEAR(s["supports"][0]["critical_work_of_adhesion_j_m2"].get<double>(), 0.3703, 1e-4);
+
+    const auto rel = run_vibroimpact({"simulate", file, "--json"});
+    ASSERT_EQ(rel.exit_code, 0) << rel.err;
+    EXPECT_EQ(json::parse(rel.out)["switching"]["state"], "released");
+
+    const std::string dir = (fs::temp_directory_path() / ("vi_stiction_" + std::to_string(::getpid()))).string();
+    fs::create_directories(dir);
+    std::string text = read_text(file);
+    const std::string from = "work_of_adhesion = \"0.2 J/m^2\"";
+    ASSERT_NE(text.find(from), std::string::npos);
+    text.replace(text.find(from), from.size(), "work_of_adhesion = \"2 J/m^2\"");
+    test::write_text(dir + "/stuck.toml", text);
+    const auto stuck = run_vibroimpact({"simulate", dir + "/stuck.toml", "--json"});
+    ASSERT_EQ(stuck.exit_code, 0) << stuck.err;
+    const json sw = json::parse(stuck.out)["switching"];
+    EXPECT_EQ(sw["state"], "stuck");
+    EXPECT_NEAR(sw["stuck"]["restoring_force_n"].get<double>(), 1.163e-5, 1e-8);
+    EXPECT_NEAR(sw["stuck"]["pull_off_force_n"].get<double>(), 2.0 * 3.141592653589793 * 5e-6 * 2.0, 1e-12);
+
+    const auto sweep = run_vibroimpact(
+        {"sweep", file, "--set", "supports[0].work_of_adhesion=0.5:2:2", "--out", dir + "/sweep", "--threads", "1"});
+    EXPECT_EQ(sweep.exit_code, 0) << sweep.err;
+    const std::string csv = read_text(dir + "/sweep/sweep.csv");
+    EXPECT_NE(csv.find("supports[0].work_of_adhesion"), std::string::npos);
+    fs::remove_all(dir);
 }
 
 }  // namespace

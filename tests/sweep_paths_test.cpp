@@ -22,6 +22,7 @@ Case full_case() {
                              "[damping]\nratios = [0.01, 0.02]\nmodes = [1, 3]\n"
                              "[[supports]]\nposition = 1.0\ngap = \"1 um\"\nstiffness = \"100 N/m\"\ndamping = \"1e-6 N s/m\"\n"
                              "[[supports]]\nposition = 0.5\nside = \"above\"\nprestress = \"0.5 um\"\nstiffness = \"200 N/m\"\n"
+                             "adhesion = \"jkr\"\nwork_of_adhesion = \"0.1 J/m^2\"\ncontact_radius = \"1 um\"\n"
                              "damping_ratio = 0.1\n"
                              "[initial]\nkind = \"displacement\"\ndisplacement = \"1 um\"\nvelocity_shape = \"mode\"\n"
                              "velocity = \"0.1 m/s\"\nvelocity_mode = 2\n"
@@ -82,7 +83,7 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
         EXPECT_FALSE(case_path_unit(p).empty());
         ++checked;
     }
-    EXPECT_EQ(checked, 47);
+    EXPECT_EQ(checked, 50);
 }
 
 TEST(SweepCasePaths, ValuesLandWhereTheCaseFileWouldPutThem) {

@@ -8,6 +8,7 @@
 
 #include "dynamics/electrode_elements.hpp"
 #include "dynamics/initial_state.hpp"
+#include "forces/adhesive_contact.hpp"
 #include "forces/kelvin_voigt_contact.hpp"
 #include "forces/midplane_stretching.hpp"
 #include "forces/point_load_element.hpp"
@@ -109,7 +110,15 @@ void add_contacts(const Case& c, const System& s, const std::vector<int>& pos, c
         const double sign = sup.side == Side::below ? 1.0 : -1.0;
         const double surface = sup.side == Side::below ? sup.surface : -sup.surface;
         const double x = s.mesh.x[static_cast<std::size_t>(s.mesh.support_nodes[k])];
-        b.problem.forces.push_back(std::make_shared<KelvinVoigtContact>(name, dof, sign, surface, sup.stiffness, damping, x));
+        if (sup.adhesion == Adhesion::none) {
+            b.problem.forces.push_back(std::make_shared<KelvinVoigtContact>(name, dof, sign, surface, sup.stiffness, damping, x));
+        } else {
+            // One element, not a second one beside the contact: adhesion changes when the contact opens,
+            // and an element's mode is its own (docs/adhesion.md §3).
+            b.problem.forces.push_back(std::make_shared<AdhesiveContact>(
+                name, dof, sign, surface, sup.stiffness, damping, x, sup.pull_off_force(), sup.adhesion_range,
+                sup.adhesion == Adhesion::dmt ? "DMT" : "JKR"));
+        }
         b.contact_stiffness.push_back(sup.stiffness);
         b.contact_damping.push_back(damping);
     }

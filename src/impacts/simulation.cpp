@@ -83,7 +83,14 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
         run.summary.Tp = 0.0;
         run.summary.Tp_reason = "at_rest";
     }
-    if (actuated) run.switching = switching_ledger(run.result, c.electrodes, run.built.omega1);
+    if (actuated) {
+        // The supports' contacts come first among the contacts, in case order.
+        std::vector<std::optional<ContactHold>> holds(c.supports.size());
+        for (std::size_t k = 0; k < c.supports.size(); ++k) {
+            if (c.supports[k].adhesion != Adhesion::none) holds[k] = contact_hold(run.built.system, c, k);
+        }
+        run.switching = switching_ledger(run.result, c.electrodes, run.built.omega1, holds);
+    }
     return run;
 }
 

@@ -87,7 +87,30 @@ VoltageWindow voltage_window(const std::vector<Electrode>& electrodes) {
     return all;
 }
 
-SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1) {
+namespace {
+
+std::string newton_text(double f) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.4g N", f);
+    return buf;
+}
+
+// The first adhesive contact closed at the horizon that pulls (its force negative): adhesion holds it.
+std::optional<StuckBalance> stuck_balance(const TransientResult& r, const std::vector<std::optional<ContactHold>>& holds) {
+    for (const ContactEpisode& e : r.episodes) {
+        const auto j = static_cast<std::size_t>(e.support);
+        if (!e.closed_at_end || j >= holds.size() || !holds[j] || j >= r.history.contact_force.size()) continue;
+        const std::vector<double>& f = r.history.contact_force[j];
+        if (f.empty() || !(f.back() < 0.0)) continue;
+        return StuckBalance{e.support, holds[j]->restoring_force, holds[j]->pull_off_force, f.back()};
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1,
+                                 const std::vector<std::optional<ContactHold>>& holds) {
     SwitchingLedger L;
     L.voltage = voltage_window(electrodes);
     const std::vector<ContactEpisode>& eps = r.episodes;
@@ -133,6 +156,19 @@ SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Ele
         L.state = "closed";
         if (fell) {
             L.reason = "the horizon ended " + us_text(horizon - *L.voltage.off) + " after the voltage fell";
+            L.stuck = stuck_balance(r, holds);
+            if (L.stuck) {
+                const StuckBalance& b = *L.stuck;
+                L.state = "stuck";
+                std::string why = "supports[";
+                why.append(std::to_string(b.support)).append("] still holds ").append(us_text(horizon - *L.voltage.off));
+                why.append(" after the voltage fell: the beam's elastic restoring force there, ");
+                why.append(newton_text(b.restoring_force)).append(", is ");
+                why.append(b.restoring_force < b.pull_off_force ? "below" : "above").append(" the pull-off force ");
+                why.append(newton_text(b.pull_off_force)).append("; the contact pulls with ");
+                why.append(newton_text(-b.contact_force)).append(" at the horizon");
+                L.reason = why;
+            }
         } else if (L.voltage.off) {
             L.reason = "the voltage falls at " + us_text(*L.voltage.off) + ", after the horizon";
         } else {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/contact_hold.hpp"
 #include "dynamics/transient_result.hpp"
 #include "model/case.hpp"
 
@@ -33,6 +34,15 @@ struct SwitchingContact {
     bool closed_at_end = false;
 };
 
+// Why a switch is stuck: an adhesive support still closed at the horizon after the voltage fell,
+// pulled on by the beam less hard than its pull-off force.
+struct StuckBalance {
+    int support = 0;
+    double restoring_force = 0.0;  // the beam's static pull off the surface (ContactHold) [N]
+    double pull_off_force = 0.0;   // F_po [N]
+    double contact_force = 0.0;    // the contact's force at the horizon, negative while it pulls [N]
+};
+
 struct SwitchingLedger {
     VoltageWindow voltage;
     std::optional<double> closing_time;    // onset of the first contact episode [s]
@@ -41,14 +51,18 @@ struct SwitchingLedger {
     std::vector<SwitchingContact> contacts;  // first contact up to stable contact (or all, without one)
     double peak_force = 0.0;               // largest of those [N]
     std::optional<double> release_time;    // end of the last contact, once the voltage has fallen [s]
-    // never_closed, closed (still closed at the horizon), released (opened after the voltage fell),
-    // opened_before_voltage_off, bouncing (open at the horizon with the voltage still on).
+    // never_closed, closed (still closed at the horizon), stuck (closed at the horizon after the voltage
+    // fell, held by adhesion), released (opened after the voltage fell), opened_before_voltage_off,
+    // bouncing (open at the horizon with the voltage still on).
     std::string state;
+    std::optional<StuckBalance> stuck;  // with state "stuck"
     std::string reason;  // one sentence: why that state
 };
 
 // What the ledger needs besides the transient: the first circular frequency of the unsupported beam
-// (a contact must last one period 2 pi / omega1 to count as stable) [rad/s].
-SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1);
+// (a contact must last one period 2 pi / omega1 to count as stable) [rad/s]; and, per contact (the
+// index of the time history's contact columns), the hold of an adhesive support (empty otherwise).
+SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1,
+                                 const std::vector<std::optional<ContactHold>>& holds = {});
 
 }  // namespace vi

@@ -113,9 +113,27 @@ void read_damping(const toml::table& t, Position at, Reading& r, RayleighDamping
     f.finish();
 }
 
+// A support's adhesion keys: the law, and its parameters only with a law other than "none".
+void read_adhesion(FieldReader& f, const std::string& path, Support& s) {
+    const auto law = f.choice("adhesion", {"none", "dmt", "jkr"}, false);
+    if (law) s.adhesion = *law == "dmt" ? Adhesion::dmt : *law == "jkr" ? Adhesion::jkr : Adhesion::none;
+    if (!law && f.has("adhesion")) return;  // the bad value is already reported
+    const bool on = s.adhesion != Adhesion::none;
+    const std::string condition = path + ".adhesion = \"dmt\" or \"jkr\"";
+    // Their values are checked by check_case (a sweep may set them too).
+    const auto read = [&](std::string_view key, Dimension d, bool required, double& out) {
+        if (!only_with(f, key, on, condition)) return;
+        if (auto v = f.quantity(key, d, required)) out = *v;
+    };
+    read("work_of_adhesion", Dimension::surface_energy, true, s.work_of_adhesion);
+    read("contact_radius", Dimension::length, true, s.contact_radius);
+    read("adhesion_range", Dimension::length, false, s.adhesion_range);
+}
+
 Support read_support(const toml::table& t, const std::string& path, Position at, Reading& r) {
     FieldReader f(t, path, at, r.log,
-                  {"position", "side", "gap", "prestress", "stiffness", "damping", "damping_ratio"});
+                  {"position", "side", "gap", "prestress", "stiffness", "damping", "damping_ratio", "adhesion",
+                   "work_of_adhesion", "contact_radius", "adhesion_range"});
     Support s;
     if (auto v = f.quantity("position", Dimension::dimensionless, true)) s.position = *v;
     if (auto v = f.choice("side", {"below", "above"}, false)) s.side = (*v == "above") ? Side::above : Side::below;
@@ -134,6 +152,7 @@ Support read_support(const toml::table& t, const std::string& path, Position at,
     f.exclusive("damping", "damping_ratio");
     if (auto v = f.quantity("damping", Dimension::damping, false)) s.damping = *v;
     if (auto v = f.quantity("damping_ratio", Dimension::dimensionless, false)) s.damping_ratio = *v;
+    read_adhesion(f, path, s);
     f.finish();
     return s;
 }

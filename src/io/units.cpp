@@ -60,6 +60,8 @@ constexpr UnitEntry kUnits[] = {
     {Dimension::voltage, "V", 1.0, true},
     {Dimension::voltage, "mV", 1e-3, true},
     {Dimension::voltage, "kV", 1e3, true},
+    {Dimension::surface_energy, "J/m^2", 1.0, true},
+    {Dimension::surface_energy, "mJ/m^2", 1e-3, true},
 };
 
 bool is_space(char ch) {
@@ -144,6 +146,7 @@ std::string_view dimension_name(Dimension d) {
         case Dimension::frequency: return "a frequency";
         case Dimension::mass_damping: return "a mass-proportional damping rate";
         case Dimension::voltage: return "a voltage";
+        case Dimension::surface_energy: return "an energy per area";
     }
     return "a quantity";
 }

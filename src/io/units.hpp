@@ -20,6 +20,7 @@ enum class Dimension {
     frequency,      // Hz
     mass_damping,   // 1/s (Rayleigh alpha)
     voltage,        // V
+    surface_energy, // J/m^2 (work of adhesion)
 };
 
 // Human-readable list of the units accepted for a dimension, e.g. "m, mm, um, nm".

@@ -45,6 +45,14 @@ struct Beam {
     [[nodiscard]] bool axis_held() const { return left != EndCondition::free && right != EndCondition::free; }
 };
 
+// Adhesion law of a support's contact (docs/adhesion.md): none, or the pull-off force of a sphere of
+// radius R on a flat with work of adhesion w: DMT 2 pi R w, JKR 1.5 pi R w.
+enum class Adhesion { none, dmt, jkr };
+
+// Default separation over which the pull-off force falls to zero once the surfaces part [m]: a few
+// atomic spacings of surface-force range plus nm-scale roughness (docs/adhesion.md §2).
+inline constexpr double kDefaultAdhesionRange = 2e-9;
+
 // Kelvin-Voigt motion limiter acting on v(x0).
 struct Support {
     double position = 1.0;  // x0 / l in (0, 1]
@@ -58,6 +66,12 @@ struct Support {
     double stiffness = 0.0;                  // Kc [N/m]
     double damping = 0.0;                    // Cc [N s/m]
     std::optional<double> damping_ratio;     // if set, Cc is derived from it (see docs/model.md)
+    Adhesion adhesion = Adhesion::none;
+    double work_of_adhesion = 0.0;           // w [J/m^2]
+    double contact_radius = 0.0;             // R of the contacting asperity or sphere [m]
+    double adhesion_range = kDefaultAdhesionRange;  // delta [m]
+    // The pull-off force F_po [N]: 2 pi R w (DMT), 1.5 pi R w (JKR), 0 without adhesion.
+    [[nodiscard]] double pull_off_force() const;
 };
 
 // Rayleigh damping C = alpha M + beta K: either alpha/beta directly or two ratios at two bending modes.

@@ -59,6 +59,22 @@ std::string number_text(double v) {
 double surface_height(const Support& s) { return s.side == Side::below ? s.surface : -s.surface; }
 
 // A support below and one above at the same place must leave room for the beam between them.
+// An adhesive support: positive parameters, and a solver that takes its law (the exact solver's
+// linear forms have no cohesive zone; docs/adhesion.md §3).
+void check_adhesion(std::vector<CaseProblem>& out, const Case& c, std::size_t i) {
+    const Support& s = c.supports[i];
+    if (s.adhesion == Adhesion::none) return;
+    require_positive(out, support_key(i, "work_of_adhesion"), s.work_of_adhesion);
+    require_positive(out, support_key(i, "contact_radius"), s.contact_radius);
+    require_positive(out, support_key(i, "adhesion_range"), s.adhesion_range);
+    if (c.solver.method == SolverSettings::Method::exact) {
+        std::string why = "\"exact\" cannot take the adhesive contact of ";
+        why.append(support_key(i, "adhesion"))
+            .append(" (its cohesive law is not one of the exact solver's linear forms); use \"cvode\" or \"auto\"");
+        out.push_back({"solver.method", why});
+    }
+}
+
 void check_opposite_supports(std::vector<CaseProblem>& out, const std::vector<Support>& supports) {
     for (std::size_t i = 0; i < supports.size(); ++i) {
         const Support& s = supports[i];
@@ -296,6 +312,7 @@ std::vector<CaseProblem> check_case(const Case& c) {
         require_positive(out, support_key(i, "stiffness"), s.stiffness);
         require_non_negative(out, support_key(i, "damping"), s.damping);
         if (s.damping_ratio) require_non_negative(out, support_key(i, "damping_ratio"), *s.damping_ratio);
+        check_adhesion(out, c, i);
         for (std::size_t j = 0; j < i; ++j) {
             const Support& o = c.supports[j];
             if (o.side == s.side && std::abs(o.position - s.position) <= 1e-12) {

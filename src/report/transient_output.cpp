@@ -102,7 +102,14 @@ nlohmann::json switching_json(const SwitchingLedger& l) {
                             {"peak_force_n", k.peak_force},
                             {"closed_at_end", k.closed_at_end}});
     }
-    return {{"voltage_on_s", opt(l.voltage.on)},
+    nlohmann::json stuck = nullptr;
+    if (l.stuck) {
+        stuck = {{"support", l.stuck->support},
+                 {"restoring_force_n", l.stuck->restoring_force},
+                 {"pull_off_force_n", l.stuck->pull_off_force},
+                 {"contact_force_n", l.stuck->contact_force}};
+    }
+    nlohmann::json j = {{"voltage_on_s", opt(l.voltage.on)},
             {"voltage_off_s", opt(l.voltage.off)},
             {"closing_time_s", opt(l.closing_time)},
             {"bounces", l.bounces},
@@ -112,6 +119,9 @@ nlohmann::json switching_json(const SwitchingLedger& l) {
             {"state", l.state},
             {"reason", l.reason},
             {"contacts", contacts}};
+    // Only where a support has adhesion, so that the summaries of other cases stay as they were.
+    if (l.stuck) j["stuck"] = stuck;
+    return j;
 }
 
 nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, const TransientResult& r,

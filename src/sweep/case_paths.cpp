@@ -55,6 +55,11 @@ const char* needs_harmonic(const Case& c, std::size_t i) {
     return c.loads[i].time.kind == FunctionKind::harmonic ? nullptr : "only for a load of kind \"harmonic\"";
 }
 
+const char* needs_adhesion(const Case& c, std::size_t i) {
+    return c.supports[i].adhesion != Adhesion::none ? nullptr
+                                                     : "only for a support with adhesion (give its adhesion = \"dmt\" or \"jkr\")";
+}
+
 const char* needs_not_table(const Case& c, std::size_t i) {
     return c.electrodes[i].time.kind == FunctionKind::table ? "not for a table waveform (it gives volts itself)" : nullptr;
 }
@@ -103,6 +108,12 @@ const FieldSpec kFields[] = {
      VI_SET(c.supports[i].damping = v; c.supports[i].damping_ratio.reset()), always},
     {"supports", "damping_ratio", "-", false, false, VI_GET(c.supports[i].damping_ratio.value_or(0.0)),
      VI_SET(c.supports[i].damping_ratio = v; c.supports[i].damping = 0.0), always},
+    {"supports", "work_of_adhesion", "J/m^2", false, false, VI_GET(c.supports[i].work_of_adhesion),
+     VI_SET(c.supports[i].work_of_adhesion = v), needs_adhesion},
+    {"supports", "contact_radius", "m", false, false, VI_GET(c.supports[i].contact_radius),
+     VI_SET(c.supports[i].contact_radius = v), needs_adhesion},
+    {"supports", "adhesion_range", "m", false, false, VI_GET(c.supports[i].adhesion_range),
+     VI_SET(c.supports[i].adhesion_range = v), needs_adhesion},
     {"damping", "alpha", "1/s", false, false, VI_GET(c.damping.alpha), VI_SET(c.damping.alpha = v), needs_alpha_beta},
     {"damping", "beta", "s", false, false, VI_GET(c.damping.beta), VI_SET(c.damping.beta = v), needs_alpha_beta},
     {"damping", "ratios", "-", false, true, VI_GET(k == 0 ? c.damping.ratio1 : c.damping.ratio2),

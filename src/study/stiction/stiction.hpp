@@ -1,0 +1,58 @@
+#pragma once
+// The stiction check of a case: whether each adhesive support holds the unloaded beam down, and the
+// detached length of a long cantilever lying on its substrate (docs/adhesion.md §4-5).
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/case.hpp"
+
+namespace vi {
+
+// One adhesive support held closed with no voltage and no load.
+struct SupportStiction {
+    int support = 0;
+    std::string law;                // "DMT" or "JKR"
+    double restoring_force = 0.0;   // the beam's pull off the surface, contact point held on it [N]
+    double point_stiffness = 0.0;   // k_p of the beam at the contact point [N/m]
+    double held_offset = 0.0;       // the surface's distance from the point's rest, toward it [m]
+    double pull_off_force = 0.0;    // F_po [N]
+    bool sticks = false;            // restoring_force < pull_off_force
+    // The work of adhesion at which F_po equals the restoring force: it sticks above it [J/m^2]
+    // (empty when the beam presses on the support, which then holds whatever the adhesion).
+    std::optional<double> critical_work_of_adhesion;
+};
+
+// The S-shaped stuck cantilever (Mastrangelo & Hsu 1993): the beam leaves the clamp at the gap h
+// above the substrate and lies flat on it from x = l_d on. Energy balance of the free part (strain
+// energy 6 E I h^2 / s^3 of a clamped-guided span s) against the adhesion energy gamma w per unit
+// length gives l_d = (3 E t^3 h^2 / (2 gamma))^(1/4).
+struct DetachedLength {
+    int support = 0;              // whose gap and work of adhesion
+    double gap = 0.0;             // h [m]
+    double work_of_adhesion = 0.0;  // gamma [J/m^2]
+    double closed_form = 0.0;     // l_d [m]
+    double finite_element = 0.0;  // the same from the FE strain energy of the span (stiction_fe_length) [m]
+    bool beam_longer = false;     // the case's beam is longer than l_d (it can stay stuck in the S-shape)
+};
+
+struct StictionResult {
+    std::vector<SupportStiction> supports;      // the adhesive ones, in case order
+    std::vector<DetachedLength> detached;       // for a cantilever (one end free) only
+    std::string note;                           // why `detached` is empty, or ""
+};
+
+// Throws InputError when the case has no adhesive support.
+StictionResult stiction_check(const Case& c);
+
+// l_d from the closed form (E the beam's effective modulus) [m].
+double detached_length_closed_form(double youngs_modulus, double thickness, double gap, double work_of_adhesion);
+
+// l_d from the FE model of the case's beam section: the span [0, s] clamped at the gap above the
+// substrate and flat on it at s (v = -h, theta = 0 there), a static solve on `elements` elements,
+// its energy release rate -dU/ds = M(s)^2 / (2 E I) from the reaction moment M, and the balance
+// -dU/ds = gamma w found by bisection on s (bounded) [m].
+double detached_length_fe(const Case& c, double gap, double work_of_adhesion, int elements);
+
+}  // namespace vi
