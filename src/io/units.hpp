@@ -20,6 +20,8 @@ enum class Dimension {
     frequency,      // Hz
     mass_damping,   // 1/s (Rayleigh alpha)
     voltage,        // V
+    viscosity,      // Pa s
+    temperature,    // K
 };
 
 // Human-readable list of the units accepted for a dimension, e.g. "m, mm, um, nm".

@@ -7,3 +7,12 @@ double Material::effective_modulus() const {
 }
 
 }  // namespace vi
+
+namespace vi {
+
+double Air::lambda() const {
+    if (mean_free_path) return *mean_free_path;
+    return kMeanFreePath0 * (kAirPressure0 / pressure) * (temperature / kAirTemperature0);
+}
+
+}  // namespace vi

@@ -171,6 +171,35 @@ void check_electrode(std::vector<CaseProblem>& out, const Case& c, std::size_t k
     check_time_function(out, at, e.time);
 }
 
+// The gas and the explicit film spans (docs/squeeze-film.md §1). A film span must lie on the beam
+// with nonzero length, like an electrode's.
+void check_air(std::vector<CaseProblem>& out, const Case& c) {
+    if (c.air) {
+        require_positive(out, "air.pressure", c.air->pressure);
+        require_positive(out, "air.temperature", c.air->temperature);
+        require_positive(out, "air.viscosity", c.air->viscosity);
+        if (c.air->mean_free_path) require_positive(out, "air.mean_free_path", *c.air->mean_free_path);
+    }
+    if (c.films.size() > kMaxElectrodes) {
+        out.push_back({"films[" + std::to_string(kMaxElectrodes) + "]",
+                       "a case may have at most " + std::to_string(kMaxElectrodes) + " films"});
+    }
+    for (std::size_t k = 0; k < std::min(c.films.size(), kMaxElectrodes); ++k) {
+        const Film& m = c.films[k];
+        const std::string at = "films[" + std::to_string(k) + "].";
+        if (!c.air) {
+            out.push_back({"films[" + std::to_string(k) + "]", "needs an [air] table (the gas the film is made of)"});
+        }
+        if (!std::isfinite(m.from) || m.from < 0.0 || m.from >= 1.0) out.push_back({at + "from", "must lie in [0, 1) (x/l)"});
+        if (!std::isfinite(m.to) || m.to <= 0.0 || m.to > 1.0) {
+            out.push_back({at + "to", "must lie in (0, 1] (x/l)"});
+        } else if (std::isfinite(m.from) && !(m.to > m.from)) {
+            out.push_back({at + "to", "must be greater than from (a film of zero or negative length)"});
+        }
+        require_positive(out, at + "gap", m.gap);
+    }
+}
+
 // Residual stress and mid-plane stretching need both ends to hold the axis: at a free end an axial
 // stress relaxes and the beam stretches nothing. A compressive stress must stay below the Euler
 // buckling stress of the beam's end conditions (the finite-element model buckles a little above it,
@@ -325,6 +354,7 @@ std::vector<CaseProblem> check_case(const Case& c) {
                        "a case may have at most " + std::to_string(kMaxElectrodes) + " electrodes"});
     }
     for (std::size_t k = 0; k < std::min(c.electrodes.size(), kMaxElectrodes); ++k) check_electrode(out, c, k);
+    check_air(out, c);
     check_solver(out, c.solver);
     if (c.supports.size() <= kMaxSupports) check_magnitudes(out, c);
     return out;
