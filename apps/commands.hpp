@@ -27,5 +27,6 @@ CommandBody add_sweep_command(CLI::App& app);
 CommandBody add_paper_command(CLI::App& app);
 CommandBody add_pullin_command(CLI::App& app);
 CommandBody add_switch_report_command(CLI::App& app);
+CommandBody add_air_q_command(CLI::App& app);
 
 }  // namespace vi::cli

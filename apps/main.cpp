@@ -42,6 +42,7 @@ int main(int argc, char** argv) {
     add(add_paper_command);
     add(add_pullin_command);
     add(add_switch_report_command);
+    add(add_air_q_command);
 
     try {
         app.parse(argc, argv);
