@@ -146,15 +146,23 @@ void check_fringing_range(std::vector<CaseProblem>& out, const Case& c, std::siz
                        " and t/g = " + number_text(t) + " (g the electrical gap at rest): use \"none\" or another gap"});
 }
 
+// A span [from, to] (x/l) on the beam of nonzero length, keys under `at`; `what` names the thing
+// for the message ("an electrode").
+void check_span(std::vector<CaseProblem>& out, const std::string& at, double from, double to, const char* what) {
+    if (!std::isfinite(from) || from < 0.0 || from >= 1.0) out.push_back({at + "from", "must lie in [0, 1) (x/l)"});
+    if (!std::isfinite(to) || to <= 0.0 || to > 1.0) {
+        out.push_back({at + "to", "must lie in (0, 1] (x/l)"});
+    } else if (std::isfinite(from) && !(to > from)) {
+        std::string message = "must be greater than from (";
+        message.append(what).append(" of zero or negative length)");
+        out.push_back({at + "to", message});
+    }
+}
+
 void check_electrode(std::vector<CaseProblem>& out, const Case& c, std::size_t k) {
     const Electrode& e = c.electrodes[k];
     const std::string at = "electrodes[" + std::to_string(k) + "].";
-    if (!std::isfinite(e.from) || e.from < 0.0 || e.from >= 1.0) out.push_back({at + "from", "must lie in [0, 1) (x/l)"});
-    if (!std::isfinite(e.to) || e.to <= 0.0 || e.to > 1.0) {
-        out.push_back({at + "to", "must lie in (0, 1] (x/l)"});
-    } else if (std::isfinite(e.from) && !(e.to > e.from)) {
-        out.push_back({at + "to", "must be greater than from (an electrode of zero or negative length)"});
-    }
+    check_span(out, at, e.from, e.to, "an electrode");
     require_positive(out, at + "gap", e.gap);
     require_non_negative(out, at + "dielectric_thickness", e.dielectric_thickness);
     if (std::isfinite(e.dielectric_thickness) && std::isfinite(e.gap) && e.gap > 0.0 && e.dielectric_thickness >= e.gap) {
@@ -190,12 +198,7 @@ void check_air(std::vector<CaseProblem>& out, const Case& c) {
         if (!c.air) {
             out.push_back({"films[" + std::to_string(k) + "]", "needs an [air] table (the gas the film is made of)"});
         }
-        if (!std::isfinite(m.from) || m.from < 0.0 || m.from >= 1.0) out.push_back({at + "from", "must lie in [0, 1) (x/l)"});
-        if (!std::isfinite(m.to) || m.to <= 0.0 || m.to > 1.0) {
-            out.push_back({at + "to", "must lie in (0, 1] (x/l)"});
-        } else if (std::isfinite(m.from) && !(m.to > m.from)) {
-            out.push_back({at + "to", "must be greater than from (a film of zero or negative length)"});
-        }
+        check_span(out, at, m.from, m.to, "a film");
         require_positive(out, at + "gap", m.gap);
     }
 }
