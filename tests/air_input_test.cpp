@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -104,6 +105,24 @@ TEST(AirInput, ExactSolverIsRefusedInAir) {
     const std::string text = test::read_text(test::source_path("examples/paper/free_impact_tip.toml")) +
                              "[air]\n[[films]]\nfrom = 0.0\nto = 1.0\ngap = \"1 um\"\n";
     expect_refused(text, "solver.method", "method = \"exact\"", "films[0] (squeeze film) is not; use method = \"cvode\"");
+}
+
+// The paper's beam over a 1 um film in air has squeeze number 0.99 at its first frequency, beyond
+// the incompressible model's 0.3: `simulate` runs, and says so in one line on stderr, once.
+TEST(AirInput, SimulateWarnsOnceAboveTheSqueezeNumberLimit) {
+    std::string text = test::read_text(test::source_path("examples/paper/free_impact_tip.toml"));
+    text.replace(text.find("method = \"exact\""), 16, "method = \"cvode\"");
+    text.replace(text.find("horizon = \"150 us\""), 18, "horizon = \"5 us\"  ");
+    text += "[air]\n[[films]]\nfrom = 0.0\nto = 1.0\ngap = \"1 um\"\n";
+    const std::string dir = test::make_temp_dir();
+    const std::string path = dir + "/case.toml";
+    test::write_text(path, text);
+    const auto r = test::run_vibroimpact({"simulate", path, "--json"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err.rfind("vibroimpact: warning: " + path + ": films[0]: squeeze number 0.988", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.out.find("\"squeeze_number\""), std::string::npos);
+    fs::remove_all(dir);
 }
 
 }  // namespace
