@@ -74,8 +74,9 @@ void middle_first(PadMesh& m, const System& s) {
 
 }  // namespace
 
-SpanQuadrature span_quadrature(const System& s, const std::vector<int>& bending_position, double from, double to) {
-    const QuadratureRule rule = gauss_legendre(kPadGaussPoints);
+SpanQuadrature span_quadrature(const System& s, const std::vector<int>& bending_position, double from, double to,
+                               int per_piece) {
+    const QuadratureRule rule = gauss_legendre(per_piece);
     SpanQuadrature m;
     // The span need not end on nodes: each element's overlap with it gets its own Gauss rule,
     // so the integrand is smooth (a cubic's reciprocal square) on every piece.

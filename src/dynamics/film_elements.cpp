@@ -44,7 +44,7 @@ std::vector<std::shared_ptr<const SqueezeFilm>> film_elements(const Case& c, con
         g.width = c.beam.width;
         g.from = f.from * s.length;
         g.to = f.to * s.length;
-        SpanQuadrature q = span_quadrature(s, bending_position, g.from, g.to);
+        SpanQuadrature q = span_quadrature(s, bending_position, g.from, g.to, kFilmGaussPoints);
         if (q.dofs.empty()) continue;
         out.push_back(std::make_shared<const SqueezeFilm>(f.name, std::move(q.dofs), std::move(q.points), g, gas_of(*c.air)));
     }
