@@ -37,6 +37,34 @@ void print_switching(const SwitchingLedger& l) {
     }
 }
 
+// The film model's range (docs/squeeze-film.md §3): one line, once, naming the worst film.
+void warn_film_range(const std::string& path, const std::vector<FilmRegime>& films) {
+    const FilmRegime* sigma = nullptr;
+    const FilmRegime* kn = nullptr;
+    for (const FilmRegime& f : films) {
+        if (f.squeeze_number > kSqueezeNumberLimit && (!sigma || f.squeeze_number > sigma->squeeze_number)) sigma = &f;
+        if (f.knudsen > kVeijolaKnudsenMax && (!kn || f.knudsen > kn->knudsen)) kn = &f;
+    }
+    if (!sigma && !kn) return;
+    std::string line = "vibroimpact: warning: ";
+    line.append(path).append(":");
+    char buf[320];
+    if (sigma) {
+        std::snprintf(buf, sizeof buf,
+                      " %s: squeeze number %.3g at the first natural frequency is above %.1f, where the gas film "
+                      "also acts as a spring and the incompressible model overstates its damping;",
+                      sigma->name.c_str(), sigma->squeeze_number, kSqueezeNumberLimit);
+        line += buf;
+    }
+    if (kn) {
+        std::snprintf(buf, sizeof buf, " %s: Knudsen number %.3g is beyond Veijola's fitted range (<= %.0f);",
+                      kn->name.c_str(), kn->knudsen, kVeijolaKnudsenMax);
+        line += buf;
+    }
+    line += " see docs/squeeze-film.md\n";
+    std::fputs(line.c_str(), stderr);
+}
+
 }  // namespace
 
 CommandBody add_simulate_command(CLI::App& app) {
@@ -59,6 +87,7 @@ CommandBody add_simulate_command(CLI::App& app) {
         } catch (const InputError& e) {
             throw locate_in_case(c, e);
         }
+        warn_film_range(opt->case_path, run.built.films);
         // A contact narrower than the smallest search step could have gone unseen this deep (a
         // fraction of the watched signal's size); at roundoff level (1e-14 typically) it is noise.
         if (run.result.stats.unproven_excess > 1e-9) {

@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
     add(add_fit_command);
     add(add_new_command);
     add(add_stiction_command);
+    add(add_air_q_command);
 
     try {
         app.parse(argc, argv);

@@ -25,7 +25,6 @@ struct PadMesh {
 };
 
 PadMesh pad_mesh(const Case& c, std::size_t k, const System& s, const std::vector<int>& bending_position) {
-    const QuadratureRule rule = gauss_legendre(kPadGaussPoints);
     const Electrode& e = c.electrodes[k];
     PadMesh m;
     PadGeometry& g = m.geometry;
@@ -38,32 +37,9 @@ PadMesh pad_mesh(const Case& c, std::size_t k, const System& s, const std::vecto
     g.fringing = e.fringing;
     g.from = e.from * s.length;
     g.to = e.to * s.length;
-    // The span need not end on nodes: each element's overlap with it gets its own Gauss rule,
-    // so the integrand is smooth (a cubic's reciprocal square) on every piece.
-    const auto local_of = [&](int node, int comp) {
-        const int r = s.reduced_of[static_cast<std::size_t>(global_dof(node, comp))];
-        if (r < 0) return -1;
-        const int b = bending_position[static_cast<std::size_t>(r)];
-        const auto it = std::find(m.dofs.begin(), m.dofs.end(), b);
-        if (it != m.dofs.end()) return static_cast<int>(it - m.dofs.begin());
-        m.dofs.push_back(b);
-        return static_cast<int>(m.dofs.size()) - 1;
-    };
-    for (int el = 0; el < s.mesh.element_count(); ++el) {
-        const double x0 = s.mesh.x[static_cast<std::size_t>(el)], x1 = s.mesh.x[static_cast<std::size_t>(el) + 1];
-        const double a = std::max(x0, g.from), b = std::min(x1, g.to);
-        if (!(b > a)) continue;
-        const double L = x1 - x0;
-        const std::array<int, 4> local{local_of(el, 1), local_of(el, 2), local_of(el + 1, 1), local_of(el + 1, 2)};
-        for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
-            PadPoint p;
-            p.x = a + (b - a) * rule.nodes[i];
-            p.weight = (b - a) * rule.weights[i];
-            p.local = local;
-            p.shape = shape_values((p.x - x0) / L, L);
-            m.points.push_back(p);
-        }
-    }
+    SpanQuadrature q = span_quadrature(s, bending_position, g.from, g.to);
+    m.dofs = std::move(q.dofs);
+    m.points = std::move(q.points);
     return m;
 }
 
@@ -97,6 +73,39 @@ void middle_first(PadMesh& m, const System& s) {
 }
 
 }  // namespace
+
+SpanQuadrature span_quadrature(const System& s, const std::vector<int>& bending_position, double from, double to,
+                               int per_piece) {
+    const QuadratureRule rule = gauss_legendre(per_piece);
+    SpanQuadrature m;
+    // The span need not end on nodes: each element's overlap with it gets its own Gauss rule,
+    // so the integrand is smooth (a cubic's reciprocal square) on every piece.
+    const auto local_of = [&](int node, int comp) {
+        const int r = s.reduced_of[static_cast<std::size_t>(global_dof(node, comp))];
+        if (r < 0) return -1;
+        const int b = bending_position[static_cast<std::size_t>(r)];
+        const auto it = std::find(m.dofs.begin(), m.dofs.end(), b);
+        if (it != m.dofs.end()) return static_cast<int>(it - m.dofs.begin());
+        m.dofs.push_back(b);
+        return static_cast<int>(m.dofs.size()) - 1;
+    };
+    for (int el = 0; el < s.mesh.element_count(); ++el) {
+        const double x0 = s.mesh.x[static_cast<std::size_t>(el)], x1 = s.mesh.x[static_cast<std::size_t>(el) + 1];
+        const double a = std::max(x0, from), b = std::min(x1, to);
+        if (!(b > a)) continue;
+        const double L = x1 - x0;
+        const std::array<int, 4> local{local_of(el, 1), local_of(el, 2), local_of(el + 1, 1), local_of(el + 1, 2)};
+        for (std::size_t i = 0; i < rule.nodes.size(); ++i) {
+            PadPoint p;
+            p.x = a + (b - a) * rule.nodes[i];
+            p.weight = (b - a) * rule.weights[i];
+            p.local = local;
+            p.shape = shape_values((p.x - x0) / L, L);
+            m.points.push_back(p);
+        }
+    }
+    return m;
+}
 
 std::vector<std::shared_ptr<const ElectrostaticPad>> electrode_elements(const Case& c, const System& s,
                                                                        const std::vector<int>& bending_position,

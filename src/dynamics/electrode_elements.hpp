@@ -11,6 +11,16 @@
 
 namespace vi {
 
+// Gauss points (`per_piece` on every element's overlap with the span) over the span [from, to] [m]
+// of the beam, and the bending DOFs they touch (point indices refer to `dofs`); `bending_position`
+// as below.
+struct SpanQuadrature {
+    std::vector<int> dofs;
+    std::vector<PadPoint> points;
+};
+SpanQuadrature span_quadrature(const System& s, const std::vector<int>& bending_position, double from, double to,
+                               int per_piece = kPadGaussPoints);
+
 // One pad per electrode of c over the system's bending DOFs; `bending_position` maps a reduced
 // DOF to its index among the bending DOFs (-1 for axial). With unit_voltage, every pad is held at
 // 1 V (the static continuation scales the force by V^2 itself).

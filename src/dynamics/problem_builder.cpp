@@ -7,6 +7,7 @@
 #include <string>
 
 #include "dynamics/electrode_elements.hpp"
+#include "dynamics/film_elements.hpp"
 #include "dynamics/initial_state.hpp"
 #include "forces/adhesive_contact.hpp"
 #include "forces/kelvin_voigt_contact.hpp"
@@ -199,6 +200,7 @@ BuiltProblem build_transient_problem(const Case& c) {
     const ModeSet modes = bending_modes(s, count, key);
     b.omega1 = modes.omega[0];
     b.rayleigh = rayleigh(c.damping, modes);
+    b.films = film_regimes(c, b.omega1);
 
     TransientProblem& p = b.problem;
     p.M = submatrix(s.M, s.bending);
@@ -210,6 +212,8 @@ BuiltProblem build_transient_problem(const Case& c) {
     for (auto& pad : electrode_elements(c, s, pos, false)) p.forces.push_back(std::move(pad));
     // After the supports, so that a support's contact index is its index in the case.
     for (auto& layer : dielectric_contacts(c, s, pos)) p.forces.push_back(std::move(layer));
+    // The gas films damp only: they leave the static state alone (no force at v = 0).
+    for (auto& film : film_elements(c, s, pos)) p.forces.push_back(std::move(film));
     if (c.beam.stretching) {
         // The axis's lengthening, on every bending DOF; E is the modulus bending uses.
         p.forces.push_back(std::make_shared<MidplaneStretching>("beam.stretching", submatrix(s.G, s.bending),

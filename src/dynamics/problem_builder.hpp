@@ -7,6 +7,7 @@
 
 #include "dynamics/transient_problem.hpp"
 #include "fem/rayleigh.hpp"
+#include "dynamics/film_elements.hpp"
 #include "fem/system.hpp"
 #include "model/case.hpp"
 
@@ -23,6 +24,7 @@ struct BuiltProblem {
     double y0_m = 0.0;                     // lift of the point at initial.position above equilibrium [m]
     double static_force_n = 0.0;           // static point force of the step [N] (0 at rest)
     Eigen::VectorXd q_equilibrium;         // static equilibrium over the bending DOFs [m, rad]
+    std::vector<FilmRegime> films;         // each squeeze film's regime at rest, at omega1
 };
 
 // Builds the transient problem of c. Throws InputError ("key: reason") when the case fails

@@ -161,8 +161,13 @@ std::vector<double> ElectrostaticPad::mean_travel_row() const {
 
 std::vector<std::vector<double>> line_load_patterns(const std::vector<PadPoint>& points, const PadGeometry& g,
                                                     std::size_t n) {
-    const double centre = 0.5 * (g.from + g.to);
-    const double half = 0.5 * (g.to - g.from);
+    return line_load_patterns(points, g.from, g.to, n);
+}
+
+std::vector<std::vector<double>> line_load_patterns(const std::vector<PadPoint>& points, double from, double to,
+                                                    std::size_t n) {
+    const double centre = 0.5 * (from + to);
+    const double half = 0.5 * (to - from);
     std::vector<std::vector<double>> patterns(3, std::vector<double>(n, 0.0));
     for (const PadPoint& p : points) {
         const double xi = half > 0.0 ? (p.x - centre) / half : 0.0;

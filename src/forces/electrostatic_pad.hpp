@@ -72,6 +72,9 @@ inline LineCapacitance line_capacitance(const PadGeometry& g, double gap) {
 // an electrode's force and its dielectric's contact take, for a reduced-order model's corrections.
 std::vector<std::vector<double>> line_load_patterns(const std::vector<PadPoint>& points, const PadGeometry& g,
                                                     std::size_t n);
+// The same over the span [from, to] [m] (a squeeze film's).
+std::vector<std::vector<double>> line_load_patterns(const std::vector<PadPoint>& points, double from, double to,
+                                                    std::size_t n);
 
 // The pad: V(t) = voltage g(t). Stored energy is the electrical co-energy's negative, -C V^2 / 2
 // (its gradient is minus the force, as the force-element contract asks); the source's input power

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "model/input_error.hpp"
+#include "io/air_reader.hpp"
 #include "io/electrode_reader.hpp"
 #include "io/load_table.hpp"
 #include "io/text_file.hpp"
@@ -282,7 +283,8 @@ void read_solver(const toml::table& t, Position at, Reading& r, SolverSettings& 
 
 Case read_root(const toml::table& root, const std::string& default_name, Reading& r) {
     FieldReader f(root, "", Position{}, r.log,
-                  {"name", "beam", "material", "damping", "supports", "initial", "loads", "electrodes", "solver"});
+                  {"name", "beam", "material", "damping", "supports", "initial", "loads", "electrodes", "air", "films",
+                   "solver"});
     Case c;
     c.name = default_name;
     if (auto v = f.string("name", false)) {
@@ -317,6 +319,11 @@ Case read_root(const toml::table& root, const std::string& default_name, Reading
                          if (table) r.tables.push_back({c.electrodes.size(), *table, true});
                          return e;
                      });
+    }
+    if (const auto* t = sub_table(f, "air", false, at)) c.air = read_air(*t, at, r.log);
+    if (const auto* a = f.array("films", false, "an array of tables ([[films]])")) {
+        read_entries(*a, f.key_position("films"), r, "films", c.films,
+                     [&](const toml::table& t, const std::string& path, Position p) { return read_film(t, path, p, r.log); });
     }
     if (const auto* t = sub_table(f, "solver", false, at)) read_solver(*t, at, r, c.solver);
     f.finish();

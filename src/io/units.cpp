@@ -62,6 +62,11 @@ constexpr UnitEntry kUnits[] = {
     {Dimension::voltage, "kV", 1e3, true},
     {Dimension::surface_energy, "J/m^2", 1.0, true},
     {Dimension::surface_energy, "mJ/m^2", 1e-3, true},
+    {Dimension::viscosity, "Pa s", 1.0, true},
+    {Dimension::viscosity, "Pa*s", 1.0, true},
+    {Dimension::viscosity, "mPa s", 1e-3, true},
+    {Dimension::viscosity, "uPa s", 1e-6, true},
+    {Dimension::temperature, "K", 1.0, true},
 };
 
 bool is_space(char ch) {
@@ -147,6 +152,8 @@ std::string_view dimension_name(Dimension d) {
         case Dimension::mass_damping: return "a mass-proportional damping rate";
         case Dimension::voltage: return "a voltage";
         case Dimension::surface_energy: return "an energy per area";
+        case Dimension::viscosity: return "a viscosity";
+        case Dimension::temperature: return "a temperature";
     }
     return "a quantity";
 }

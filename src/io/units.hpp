@@ -21,6 +21,8 @@ enum class Dimension {
     mass_damping,   // 1/s (Rayleigh alpha)
     voltage,        // V
     surface_energy, // J/m^2 (work of adhesion)
+    viscosity,      // Pa s
+    temperature,    // K
 };
 
 // Human-readable list of the units accepted for a dimension, e.g. "m, mm, um, nm".

@@ -20,3 +20,12 @@ double Support::pull_off_force() const {
 }
 
 }  // namespace vi
+
+namespace vi {
+
+double Air::lambda() const {
+    if (mean_free_path) return *mean_free_path;
+    return kMeanFreePath0 * (kAirPressure0 / pressure) * (temperature / kAirTemperature0);
+}
+
+}  // namespace vi

@@ -134,6 +134,32 @@ struct Electrode {
     TimeFunction time;                     // g(t) (ramps and pulses are tables)
 };
 
+// The gas around the beam (docs/squeeze-film.md). Its presence in a case ([air]) turns on the
+// squeeze film under every electrode and every [[films]] span; without it the beam is in vacuum.
+struct Air {
+    double pressure = 101325.0;   // p [Pa]
+    double temperature = 300.0;   // T [K]; enters the default mean free path only
+    double viscosity = 1.85e-5;   // mu [Pa s], air at 300 K
+    // lambda [m]; unset: kMeanFreePath0 (p0 / p) (T / T0) (kinetic theory's lambda ~ T / p).
+    std::optional<double> mean_free_path;
+    bool film = true;             // false: the gas is described but no film acts
+    // The mean free path in effect [m].
+    [[nodiscard]] double lambda() const;
+};
+
+// Mean free path of air at p0 = 101325 Pa, T0 = 300 K [m] (docs/squeeze-film.md §1).
+inline constexpr double kMeanFreePath0 = 68e-9;
+inline constexpr double kAirPressure0 = 101325.0;
+inline constexpr double kAirTemperature0 = 300.0;
+
+// A squeeze film where no electrode is: the span [from, to] (x/l) over a surface at `gap` [m].
+struct Film {
+    double from = 0.0;
+    double to = 1.0;
+    Side side = Side::below;
+    double gap = 0.0;  // beam to surface at rest [m]
+};
+
 // Transient solver settings.
 struct SolverSettings {
     // automatic: the exact solver when every force element is piecewise linear, else CVODE.
@@ -173,6 +199,8 @@ struct Case {
     InitialState initial;
     std::vector<PointLoad> loads;
     std::vector<Electrode> electrodes;
+    std::optional<Air> air;       // none: vacuum (no squeeze film)
+    std::vector<Film> films;      // explicit film spans (only with air)
     SolverSettings solver;
 };
 

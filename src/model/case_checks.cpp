@@ -162,15 +162,23 @@ void check_fringing_range(std::vector<CaseProblem>& out, const Case& c, std::siz
                        " and t/g = " + number_text(t) + " (g the electrical gap at rest): use \"none\" or another gap"});
 }
 
+// A span [from, to] (x/l) on the beam of nonzero length, keys under `at`; `what` names the thing
+// for the message ("an electrode").
+void check_span(std::vector<CaseProblem>& out, const std::string& at, double from, double to, const char* what) {
+    if (!std::isfinite(from) || from < 0.0 || from >= 1.0) out.push_back({at + "from", "must lie in [0, 1) (x/l)"});
+    if (!std::isfinite(to) || to <= 0.0 || to > 1.0) {
+        out.push_back({at + "to", "must lie in (0, 1] (x/l)"});
+    } else if (std::isfinite(from) && !(to > from)) {
+        std::string message = "must be greater than from (";
+        message.append(what).append(" of zero or negative length)");
+        out.push_back({at + "to", message});
+    }
+}
+
 void check_electrode(std::vector<CaseProblem>& out, const Case& c, std::size_t k) {
     const Electrode& e = c.electrodes[k];
     const std::string at = "electrodes[" + std::to_string(k) + "].";
-    if (!std::isfinite(e.from) || e.from < 0.0 || e.from >= 1.0) out.push_back({at + "from", "must lie in [0, 1) (x/l)"});
-    if (!std::isfinite(e.to) || e.to <= 0.0 || e.to > 1.0) {
-        out.push_back({at + "to", "must lie in (0, 1] (x/l)"});
-    } else if (std::isfinite(e.from) && !(e.to > e.from)) {
-        out.push_back({at + "to", "must be greater than from (an electrode of zero or negative length)"});
-    }
+    check_span(out, at, e.from, e.to, "an electrode");
     require_positive(out, at + "gap", e.gap);
     require_non_negative(out, at + "dielectric_thickness", e.dielectric_thickness);
     if (std::isfinite(e.dielectric_thickness) && std::isfinite(e.gap) && e.gap > 0.0 && e.dielectric_thickness >= e.gap) {
@@ -185,6 +193,30 @@ void check_electrode(std::vector<CaseProblem>& out, const Case& c, std::size_t k
     check_fringing_range(out, c, k);
     require_finite(out, at + "voltage", e.voltage);
     check_time_function(out, at, e.time);
+}
+
+// The gas and the explicit film spans (docs/squeeze-film.md §1). A film span must lie on the beam
+// with nonzero length, like an electrode's.
+void check_air(std::vector<CaseProblem>& out, const Case& c) {
+    if (c.air) {
+        require_positive(out, "air.pressure", c.air->pressure);
+        require_positive(out, "air.temperature", c.air->temperature);
+        require_positive(out, "air.viscosity", c.air->viscosity);
+        if (c.air->mean_free_path) require_positive(out, "air.mean_free_path", *c.air->mean_free_path);
+    }
+    if (c.films.size() > kMaxElectrodes) {
+        out.push_back({"films[" + std::to_string(kMaxElectrodes) + "]",
+                       "a case may have at most " + std::to_string(kMaxElectrodes) + " films"});
+    }
+    for (std::size_t k = 0; k < std::min(c.films.size(), kMaxElectrodes); ++k) {
+        const Film& m = c.films[k];
+        const std::string at = "films[" + std::to_string(k) + "].";
+        if (!c.air) {
+            out.push_back({"films[" + std::to_string(k) + "]", "needs an [air] table (the gas the film is made of)"});
+        }
+        check_span(out, at, m.from, m.to, "a film");
+        require_positive(out, at + "gap", m.gap);
+    }
 }
 
 // Residual stress and mid-plane stretching need both ends to hold the axis: at a free end an axial
@@ -342,6 +374,7 @@ std::vector<CaseProblem> check_case(const Case& c) {
                        "a case may have at most " + std::to_string(kMaxElectrodes) + " electrodes"});
     }
     for (std::size_t k = 0; k < std::min(c.electrodes.size(), kMaxElectrodes); ++k) check_electrode(out, c, k);
+    check_air(out, c);
     check_solver(out, c.solver);
     if (c.supports.size() <= kMaxSupports) check_magnitudes(out, c);
     return out;

@@ -89,6 +89,16 @@ nlohmann::json resolved_case_json(const Case& c, const BuiltProblem& b, const Im
                    {"max_events", c.solver.max_events},
                    {"max_steps", c.solver.max_steps}};
     j["omega1_rad_s"] = b.omega1;
+    if (c.air) {
+        nlohmann::json films = nlohmann::json::array();
+        for (const FilmRegime& f : b.films) {
+            films.push_back({{"name", f.name}, {"gap_m", f.gap}, {"knudsen", f.knudsen},
+                             {"viscosity_ratio", f.viscosity_ratio}, {"squeeze_number", f.squeeze_number}});
+        }
+        j["air"] = {{"pressure_pa", c.air->pressure}, {"temperature_k", c.air->temperature},
+                    {"viscosity_pa_s", c.air->viscosity}, {"mean_free_path_m", c.air->lambda()},
+                    {"film", c.air->film}, {"films", films}};
+    }
     return j;
 }
 

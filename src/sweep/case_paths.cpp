@@ -73,6 +73,8 @@ const char* needs_dielectric(const Case& c, std::size_t i) {
     return c.electrodes[i].dielectric_thickness > 0.0 ? nullptr : "only with a dielectric_thickness above 0";
 }
 
+const char* needs_air(const Case& c, std::size_t) { return c.air ? nullptr : "only with an [air] table"; }
+
 // The number as an int; the caller has checked that it is whole and in range.
 int whole(double v) { return static_cast<int>(v); }
 
@@ -150,6 +152,13 @@ const FieldSpec kFields[] = {
      VI_SET(c.electrodes[i].time.t_on = v), needs_electrode_step},
     {"electrodes", "frequency", "Hz", false, false, VI_GET(c.electrodes[i].time.frequency_hz),
      VI_SET(c.electrodes[i].time.frequency_hz = v), needs_electrode_sine},
+    {"air", "pressure", "Pa", false, false, VI_GET(c.air ? c.air->pressure : 0.0), VI_SET(c.air->pressure = v), needs_air},
+    {"air", "temperature", "K", false, false, VI_GET(c.air ? c.air->temperature : 0.0), VI_SET(c.air->temperature = v),
+     needs_air},
+    {"air", "viscosity", "Pa s", false, false, VI_GET(c.air ? c.air->viscosity : 0.0), VI_SET(c.air->viscosity = v),
+     needs_air},
+    {"air", "mean_free_path", "m", false, false, VI_GET(c.air ? c.air->lambda() : 0.0),
+     VI_SET(c.air->mean_free_path = v), needs_air},
     {"solver", "horizon", "s", false, false, VI_GET(c.solver.horizon), VI_SET(c.solver.horizon = v), always},
     {"solver", "output_step", "s", false, false, VI_GET(c.solver.output_step), VI_SET(c.solver.output_step = v), always},
     {"solver", "group_gap", "s", false, false, VI_GET(c.solver.group_gap), VI_SET(c.solver.group_gap = v), always},

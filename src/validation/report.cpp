@@ -85,7 +85,7 @@ std::string validation_report(const ValidationOptions& o) {
          "rho = 8902 kg/m^3, clamped at x = 0, free at x = l.\n\n";
     s << section_static(o) << section_frequencies(o) << section_shapes(o) << section_supported(o)
       << section_single_dof(o) << section_energy(o) << section_exact_vs_cvode(o) << section_mesh(o)
-      << section_loads(o) << section_electrostatics(o);
+      << section_loads(o) << section_electrostatics(o) << section_elsewhere();
     return s.str();
 }
 

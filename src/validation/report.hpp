@@ -65,6 +65,8 @@ std::string section_exact_vs_cvode(const ValidationOptions& o);
 std::string section_mesh(const ValidationOptions& o);
 std::string section_loads(const ValidationOptions& o);
 std::string section_electrostatics(const ValidationOptions& o);
+// Section 11: the checks that run in the test suite only, with their references (static text).
+std::string section_elsewhere();
 
 void report_progress(const ValidationOptions& o, const std::string& line);
 

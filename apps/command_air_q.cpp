@@ -1,0 +1,77 @@
+// `vibroimpact air-q CASE --out DIR`: the quality factor of the first mode against air pressure, from
+// the squeeze film's modal damping and from ring-down transients; a CSV and a figure.
+
+#include <cstdio>
+#include <memory>
+#include <stdexcept>
+#include <string>
+
+#include "commands.hpp"
+#include "io/case_reader.hpp"
+#include "io/output_files.hpp"
+#include "io/units.hpp"
+#include "model/input_error.hpp"
+#include "model/run_control.hpp"
+#include "plot/figure_gnuplot.hpp"
+#include "stop_signals.hpp"
+#include "study/air/air_q.hpp"
+
+namespace vi::cli {
+
+CommandBody add_air_q_command(CLI::App& app) {
+    struct Options {
+        std::string case_path;
+        std::string out = "out/air-q";
+        std::string gap = "1 um";
+        std::string gnuplot = "gnuplot";
+    };
+    auto opt = std::make_shared<Options>();
+    CLI::App* sub = app.add_subcommand("air-q", "Quality factor of mode 1 against air pressure (squeeze film), 1 atm to 1 Pa");
+    sub->add_option("case", opt->case_path, "Case file (TOML): the beam; its [air], electrodes or [[films]] if any")
+        ->required();
+    sub->add_option("--out,-o", opt->out, "Folder for air_q.csv and the figure air_q.png/.svg")->capture_default_str();
+    sub->add_option("--gap", opt->gap, "Film gap under the whole beam when the case has no electrode or film")
+        ->capture_default_str();
+    sub->add_option("--gnuplot", opt->gnuplot, "gnuplot executable (name on PATH or path)")->capture_default_str();
+
+    return [opt]() {
+        const Case base = read_case_file(opt->case_path);
+        double gap = 0.0;
+        try {
+            gap = parse_quantity(opt->gap, Dimension::length);
+        } catch (const std::invalid_argument& e) {
+            throw InputError(std::string("--gap: ") + e.what());
+        }
+        if (!(gap > 0.0)) throw InputError("--gap: must be positive");
+        const auto gnuplot = find_gnuplot(opt->gnuplot);
+        if (!gnuplot) throw std::runtime_error("gnuplot: '" + opt->gnuplot + "' not found; the figure needs it");
+        std::vector<AirQPoint> points;
+        try {
+            const Case c = air_q_case(base, gap);
+            for (double p : air_q_pressures()) {
+                check_run();
+                points.push_back(air_q_point(c, p));
+            }
+        } catch (const InputError& e) {
+            throw locate_in_case(base, e);
+        }
+        const std::vector<FigureSpec> figures{air_q_figure(points, base.name)};
+        const std::vector<RenderedFigure> rendered = render_figures(*gnuplot, figures, 1);
+        OutputFiles files = figure_files(figures, rendered);
+        check_run();
+        {
+            const CommitSection commit;
+            write_output_files(opt->out, files);
+        }
+        std::printf("%12s %10s %12s %10s %12s %12s\n", "pressure_Pa", "Kn", "mu_eff/mu", "sigma", "Q_modal", "Q_ringdown");
+        for (const AirQPoint& x : points) {
+            std::printf("%12.4g %10.4g %12.4g %10.4g %12.5g %12s\n", x.pressure, x.knudsen, x.viscosity_ratio,
+                        x.squeeze_number, x.q_modal,
+                        x.q_ringdown ? std::to_string(*x.q_ringdown).c_str() : "overdamped");
+        }
+        std::printf("Written to %s/ (air_q.csv, air_q.png, air_q.svg)\n", opt->out.c_str());
+        return kExitOk;
+    };
+}
+
+}  // namespace vi::cli

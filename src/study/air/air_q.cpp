@@ -1,0 +1,148 @@
+#include "study/air/air_q.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "dynamics/cvode_solver.hpp"
+#include "dynamics/problem_builder.hpp"
+#include "modal/eigen_solver.hpp"
+#include "report/csv_text.hpp"
+
+namespace vi {
+namespace {
+
+// Tip maxima of a sampled history, each refined by the parabola through it and its neighbours.
+struct Maximum {
+    double t = 0.0, v = 0.0;
+};
+
+std::vector<Maximum> tip_maxima(const TimeHistory& h) {
+    std::vector<Maximum> out;
+    double largest = 0.0;
+    for (double v : h.tip_v) largest = std::max(largest, std::abs(v));
+    for (std::size_t i = 1; i + 1 < h.t.size(); ++i) {
+        const double a = h.tip_v[i - 1], b = h.tip_v[i], c = h.tip_v[i + 1];
+        // Maxima below 1e-6 of the largest excursion are at the solver's tolerance, not the film's decay.
+        if (!(b > a && b >= c && b > 1e-6 * largest)) continue;
+        const double curvature = a - 2.0 * b + c;
+        const double shift = curvature < 0.0 ? 0.5 * (a - c) / curvature : 0.0;  // in samples, |shift| <= 1/2
+        const double dt = h.t[i + 1] - h.t[i];
+        out.push_back({h.t[i] + shift * dt, b - 0.25 * (a - c) * shift});
+    }
+    return out;
+}
+
+// Modes the ring-down keeps.
+constexpr int kAirQModes = 4;
+
+}  // namespace
+
+Case air_q_case(const Case& base, double gap) {
+    Case c = base;
+    if (!c.air) c.air = Air{};
+    c.air->film = true;
+    for (Electrode& e : c.electrodes) {
+        e.voltage = 0.0;
+        e.time = TimeFunction{};
+    }
+    if (c.electrodes.empty() && c.films.empty()) c.films.push_back(Film{0.0, 1.0, Side::below, gap});
+    c.supports.clear();
+    c.loads.clear();
+    c.damping = RayleighDamping{};
+    c.initial = InitialState{};
+    c.initial.kind = InitialState::Kind::rest;
+    c.solver.method = SolverSettings::Method::cvode;
+    c.solver.reduced_modes = 0;
+    return c;
+}
+
+AirQPoint air_q_point(const Case& base, double pressure, const AirQOptions& o) {
+    Case c = base;
+    // A mean free path the case states holds at its own pressure; kinetic theory scales it as 1/p.
+    if (c.air->mean_free_path) c.air->mean_free_path = *c.air->mean_free_path * c.air->pressure / pressure;
+    c.air->pressure = pressure;
+    BuiltProblem b = build_transient_problem(c);
+    TransientProblem& p = b.problem;
+    const double w1 = b.omega1;
+    const ModeSet modes = lowest_modes(p.K, p.M, 1);
+    Eigen::VectorXd phi = modes.shapes.col(0);
+    const double m1 = phi.dot(p.M * phi);
+    double c1 = 0.0;
+    for (const ForceElementPtr& e : p.forces) {
+        const std::size_t n = e->dofs().size();
+        std::vector<double> zero(n, 0.0), dq(n * n, 0.0), dv(n * n, 0.0);
+        e->add_tangent(ElementState{0.0, zero.data(), zero.data(), nullptr}, 0, dq.data(), dv.data());
+        for (std::size_t i = 0; i < n; ++i) {
+            for (std::size_t j = 0; j < n; ++j) c1 -= phi[e->dofs()[i]] * dv[i * n + j] * phi[e->dofs()[j]];
+        }
+    }
+    AirQPoint out;
+    out.pressure = pressure;
+    if (!b.films.empty()) {
+        out.knudsen = b.films.front().knudsen;
+        out.viscosity_ratio = b.films.front().viscosity_ratio;
+        out.squeeze_number = b.films.front().squeeze_number;
+    }
+    out.q_modal = w1 * m1 / c1;
+
+    // Ring-down: the first mode alone, its tip moving at amplitude x gap x omega1.
+    const double gap = b.films.empty() ? 1e-6 : b.films.front().gap;
+    phi *= o.amplitude * gap * w1 / std::abs(phi[p.tip_dof]);
+    p.v0 = phi;
+    const double period = 2.0 * std::numbers::pi / w1;
+    p.t_end = o.periods * period;
+    p.output_step = period / o.samples;
+    CvodeOptions co;
+    co.rtol = 1e-10;
+    // The first modes and the film's static corrections: without structural damping the full model's
+    // undamped high modes hold CVODE's BDF steps to their period (4 million steps for 20 us of the
+    // base case, measured), a stability limit, not accuracy. The uniform film's damping matrix is
+    // (c / rho A) M, so the modes do not couple except through the film's nonlinearity.
+    co.reduced_modes = kAirQModes;
+    const TransientResult r = solve_cvode(p, co);
+    const std::vector<Maximum> m = tip_maxima(r.history);
+    out.maxima = static_cast<int>(m.size());
+    if (m.size() >= 3) {
+        const double span = m.back().t - m.front().t;
+        const double decay = std::log(m.front().v / m.back().v) / span;
+        const double wd = 2.0 * std::numbers::pi * static_cast<double>(m.size() - 1) / span;
+        out.q_ringdown = std::sqrt(wd * wd + decay * decay) / (2.0 * decay);
+    }
+    return out;
+}
+
+std::vector<double> air_q_pressures() {
+    std::vector<double> p{101325.0};
+    for (int k = 15; k >= 0; --k) p.push_back(std::pow(10.0, k / 3.0));  // 1e5 .. 1 Pa
+    return p;
+}
+
+std::string air_q_csv(const std::vector<AirQPoint>& points) {
+    CsvText t;
+    t.header = {"pressure_pa", "knudsen", "viscosity_ratio", "squeeze_number", "q_modal", "q_ringdown", "maxima"};
+    for (const AirQPoint& x : points) {
+        t.add({cell(x.pressure), cell(x.knudsen), cell(x.viscosity_ratio), cell(x.squeeze_number), cell(x.q_modal),
+               cell(x.q_ringdown), std::to_string(x.maxima)});
+    }
+    return t.str();
+}
+
+FigureSpec air_q_figure(const std::vector<AirQPoint>& points, const std::string& case_name) {
+    FigureSpec f;
+    f.name = "air_q";
+    f.title = "Quality factor of mode 1 against air pressure";
+    f.caption = "Case ";
+    f.caption.append(case_name).append(
+                ": Q of the first bending mode with the squeeze film alone (no structural damping), from the film's "
+                "modal damping at rest (line) and from ring-down transients (points; none where the beam is "
+                "overdamped). docs/squeeze-film.md");
+    f.data = {{"air_q.csv", air_q_csv(points)}};
+    f.plot = "set grid\nset logscale xy\nset format x '10^{%T}'\nset xlabel 'pressure  [Pa]'\n"
+             "set ylabel 'Q of mode 1'\nset key top right\n"
+             "plot 'air_q.csv' using 1:5 with lines lw 2 lc rgb '#1f77b4' title 'modal: {/Symbol w}_1 m_1 / c_1', "
+             "'' using 1:6 with points pt 7 ps 1.2 lc rgb '#d62728' title 'ring-down transient'\n";
+    return f;
+}
+
+}  // namespace vi

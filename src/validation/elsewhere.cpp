@@ -1,0 +1,38 @@
+// Section 11 of the validation report: the checks that run in the test suite only (their measured
+// figures are in the documents named), with the published formulas they test against. Static text:
+// nothing here is computed, so nothing here can go stale against the code's output.
+
+#include "validation/report.hpp"
+
+namespace vi::validation_detail {
+
+std::string section_elsewhere() {
+    return "## 11. Validated in the test suite (figures in the documents named)\n\n"
+           "These checks run in `ctest`; their measured figures are in the documents named, not recomputed here.\n\n"
+           "- **Beams held at both ends** (`tests/axial_stress_test.cpp`; docs/electrostatics.md §8): frequencies "
+           "under residual stress against the pinned-pinned closed form omega_n = (n pi / l)^2 sqrt(EI / (rho A)) "
+           "sqrt(1 + N0 l^2 / (n^2 pi^2 EI)) (S. S. Rao, *Vibration of Continuous Systems*, 2007, ch. 11) and the "
+           "clamped-clamped characteristic equation of EI w'''' - N0 w'' = rho A omega^2 w; pull-in with mid-plane "
+           "stretching against an independent shooting solution.\n"
+           "- **Adhesion** (`tests/adhesion_test.cpp`; docs/adhesion.md §8): pull-off forces 2 pi R w (DMT: "
+           "Derjaguin, Muller and Toporov, *J. Colloid Interface Sci.* 53 (1975) 314) and 1.5 pi R w (JKR: "
+           "Johnson, Kendall and Roberts, *Proc. R. Soc. Lond. A* 324 (1971) 301); the release threshold "
+           "P* = F_po (1 + k / Kc) of a one-degree-of-freedom contact, static and transient; the detached length "
+           "l_d = (3 E t^3 h^2 / (2 gamma))^(1/4) of the S-shaped stuck cantilever (Mastrangelo and Hsu, "
+           "*J. Microelectromech. Syst.* 2 (1993) 33 and 44) against the FE energy balance; the energy ledger through "
+           "adhesive impacts.\n"
+           "- **Squeeze-film damping** (`tests/squeeze_film_test.cpp`; docs/squeeze-film.md §8): the long rigid "
+           "strip c = mu w^3 L / g^3 (Reynolds equation across a narrow plate); the rarefied viscosity "
+           "mu / (1 + 9.638 Kn^1.159) (Veijola et al., *Sens. Actuators A* 48 (1995) 239) against Burgdorfer's "
+           "1 + 6 Kn (1959) and Hsia and Domoto's 1 + 6 Kn + 6 Kn^2 (1983) at small Kn; the finite-plate factor "
+           "(Blech, *J. Lubr. Technol.* 105 (1983) 615); the quality factor of the paper's cantilever in air from a "
+           "ring-down against the modal estimate omega_1 m / c.\n"
+           "- **Calibration** (`tests/fit_test.cpp`; docs/calibration.md): synthetic recovery of Kc, zeta_c and "
+           "zeta_1 from a noisy tip trajectory inside the 95 % intervals, intervals that scale with the noise, and an "
+           "exact trade-off (E and nu through E / (1 - nu^2)) reported as undetermined.\n"
+           "- **Optimisation** (`tests/optimize_test.cpp`; docs/optimization.md): the lowest rebound z_max over the "
+           "support position against a 141-point grid search of the paper's study, and a binding constraint "
+           "held on its boundary.\n";
+}
+
+}  // namespace vi::validation_detail
