@@ -11,6 +11,7 @@
 
 #include "calibration/trajectory_fit.hpp"
 #include "commands.hpp"
+#include "figure_output.hpp"
 #include "io/case_reader.hpp"
 #include "io/number_text.hpp"
 #include "io/output_files.hpp"
@@ -103,8 +104,7 @@ CommandBody add_fit_command(CLI::App& app) {
     sub->add_flag("--json", opt->json, "Print fit.json on stdout instead of text");
 
     return [opt]() {
-        const auto gnuplot = find_gnuplot(opt->gnuplot);
-        if (!gnuplot) throw std::runtime_error("gnuplot: '" + opt->gnuplot + "' not found; the fit figure needs it");
+        const std::string gnuplot = require_gnuplot(opt->gnuplot, "the fit figure");
         const Case c = read_case_file(opt->case_path);
         std::vector<FitParameter> params;
         for (const std::string& f : opt->fit) params.push_back(parse_fit_parameter(f, c));
@@ -127,12 +127,7 @@ CommandBody add_fit_command(CLI::App& app) {
         files["fit.json"] = j.dump(2) + "\n";
         files["fit_residuals.csv"] = residuals_csv(data, r);
         const std::vector<FigureSpec> figures = {fit_figure(data, r)};
-        for (auto& [name, text] : figure_files(figures, render_figures(*gnuplot, figures, 1))) files[name] = text;
-        check_run();
-        {
-            const CommitSection commit;
-            write_output_files(opt->out, files);
-        }
+        write_with_figures(opt->out, std::move(files), figures, gnuplot);
         if (opt->json) {
             std::printf("%s\n", j.dump(2).c_str());
         } else {

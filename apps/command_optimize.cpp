@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "figure_output.hpp"
 #include "design/optimizer.hpp"
 #include "io/case_reader.hpp"
 #include "io/number_text.hpp"
@@ -125,11 +126,7 @@ CommandBody add_optimize_command(CLI::App& app) {
 
     return [opt]() {
         if (opt->minimize.empty() == opt->maximize.empty()) throw InputError("optimize: give one of --minimize or --maximize");
-        const auto gnuplot = find_gnuplot(opt->gnuplot);
-        if (!gnuplot) {
-            throw std::runtime_error("gnuplot: '" + opt->gnuplot +
-                                     "' not found; the convergence figure needs it (Debian: apt-get install gnuplot-nox)");
-        }
+        const std::string gnuplot = require_gnuplot(opt->gnuplot, "the convergence figure");
         DesignProblem p;
         p.base = read_case_file(opt->case_path);
         p.columns = sweep_result_columns(SweepAnalysis::simulate, 0);
@@ -154,12 +151,7 @@ CommandBody add_optimize_command(CLI::App& app) {
         files["optimize.json"] = j.dump(2) + "\n";
         files["evaluations.csv"] = evaluations_csv(p, r);
         const std::vector<FigureSpec> figures = {convergence_figure(p, r)};
-        for (auto& [name, text] : figure_files(figures, render_figures(*gnuplot, figures, 1))) files[name] = text;
-        check_run();
-        {
-            const CommitSection commit;
-            write_output_files(opt->out, files);
-        }
+        write_with_figures(opt->out, std::move(files), figures, gnuplot);
         if (opt->json) {
             std::printf("%s\n", j.dump(2).c_str());
         } else {

@@ -3,28 +3,19 @@
 #include <ceres/ceres.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <stdexcept>
 
 #include "impacts/simulation.hpp"
+#include "io/range_spec.hpp"
 #include "model/case_checks.hpp"
 #include "model/input_error.hpp"
 #include "model/run_control.hpp"
 
 namespace vi {
 namespace {
-
-std::optional<double> number(const std::string& text) {
-    if (text.empty()) return std::nullopt;
-    errno = 0;
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (errno != 0 || end != text.c_str() + text.size() || !std::isfinite(v)) return std::nullopt;
-    return v;
-}
 
 // The step scale of parameter i: its bound range, else the size of its start.
 double scale_of(const FitParameter& p) {
@@ -109,13 +100,11 @@ FitParameter parse_fit_parameter(const std::string& text, const Case& c) {
     if (is_integer_path(p.path)) throw fail(p.path.text() + " takes whole numbers, which a least-squares fit cannot vary");
     p.start = get_case_value(c, p.path);
     if (eq != std::string::npos) {
-        const std::string bounds = text.substr(eq + 1);
-        const std::size_t colon = bounds.find(':');
-        if (colon == std::string::npos) throw fail("expected PATH or PATH=LOW:HIGH (SI units)");
-        p.low = number(bounds.substr(0, colon));
-        p.high = number(bounds.substr(colon + 1));
-        if (!p.low || !p.high) throw fail("LOW and HIGH must be finite numbers (SI units)");
-        if (!(*p.low < *p.high)) throw fail("LOW must be below HIGH");
+        const auto bounds = parse_bounds(text.substr(eq + 1));
+        if (!bounds) throw fail("expected PATH or PATH=LOW:HIGH, two finite numbers (SI units)");
+        if (!(bounds->first < bounds->second)) throw fail("LOW must be below HIGH");
+        p.low = bounds->first;
+        p.high = bounds->second;
         if (p.start < *p.low || p.start > *p.high) {
             throw fail("the case's value " + std::to_string(p.start) + " (the start) lies outside the bounds");
         }

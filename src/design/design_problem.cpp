@@ -1,25 +1,14 @@
 #include "design/design_problem.hpp"
 
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <variant>
 
+#include "io/range_spec.hpp"
 #include "model/input_error.hpp"
 #include "sweep/grid.hpp"
 
 namespace vi {
 namespace {
-
-// A whole-text SI number, or nullopt.
-std::optional<double> number(const std::string& text) {
-    if (text.empty()) return std::nullopt;
-    errno = 0;
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (errno != 0 || end != text.c_str() + text.size() || !std::isfinite(v)) return std::nullopt;
-    return v;
-}
 
 // Columns that hold text (why T_p ended, which support an impact hit), not numbers.
 bool is_text_column(const std::string& name) {
@@ -48,16 +37,11 @@ DesignVariable parse_design_variable(const std::string& text, const Case& c) {
     if (is_integer_path(v.path)) {
         throw fail(v.path.text() + " takes whole numbers, which a continuous optimiser cannot vary; sweep it with --set");
     }
-    const std::string bounds = text.substr(eq + 1);
-    const std::size_t colon = bounds.find(':');
-    if (colon == std::string::npos || bounds.find(':', colon + 1) != std::string::npos) {
-        throw fail("expected LOW:HIGH after '=' (SI units)");
-    }
-    const std::optional<double> low = number(bounds.substr(0, colon)), high = number(bounds.substr(colon + 1));
-    if (!low || !high) throw fail("LOW and HIGH must be finite numbers (SI units)");
-    if (!(*low < *high)) throw fail("LOW must be below HIGH");
-    v.low = *low;
-    v.high = *high;
+    const auto bounds = parse_bounds(text.substr(eq + 1));
+    if (!bounds) throw fail("expected LOW:HIGH after '=', two finite numbers (SI units)");
+    if (!(bounds->first < bounds->second)) throw fail("LOW must be below HIGH");
+    v.low = bounds->first;
+    v.high = bounds->second;
     return v;
 }
 
@@ -89,7 +73,7 @@ DesignConstraint parse_design_constraint(const std::string& text, const std::vec
     } catch (const InputError& e) {
         throw fail(e.what());
     }
-    const std::optional<double> bound = number(text.substr(at + 2));
+    const std::optional<double> bound = finite_number(text.substr(at + 2));
     if (!bound) throw fail("VALUE must be a finite number in the quantity's SI unit");
     c.bound = *bound;
     return c;

@@ -10,15 +10,6 @@
 #include "io/units.hpp"
 
 namespace vi {
-namespace {
-
-std::string trimmed(std::string_view s) {
-    const auto b = s.find_first_not_of(" \t\r");
-    if (b == std::string_view::npos) return {};
-    return std::string(s.substr(b, s.find_last_not_of(" \t\r") - b + 1));
-}
-
-}  // namespace
 
 void parse_load_table(const std::string& text, const std::string& file, TimeFunction& g) {
     parse_time_table(text, file, "g", g);

@@ -11,12 +11,6 @@
 namespace vi {
 namespace {
 
-std::string trimmed(std::string_view s) {
-    const auto b = s.find_first_not_of(" \t\r");
-    if (b == std::string_view::npos) return {};
-    return std::string(s.substr(b, s.find_last_not_of(" \t\r") - b + 1));
-}
-
 std::vector<std::string> cells(std::string_view line) {
     std::vector<std::string> out;
     std::size_t begin = 0;

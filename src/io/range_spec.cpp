@@ -1,5 +1,6 @@
 #include "io/range_spec.hpp"
 
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
@@ -71,6 +72,24 @@ std::vector<double> parse_range_spec(std::string_view spec) {
     std::vector<double> v;
     for (const std::string& item : split(spec, ',')) v.push_back(number(item));
     return v;
+}
+
+std::optional<double> finite_number(std::string_view text) {
+    const std::string s(text);
+    if (s.empty()) return std::nullopt;
+    errno = 0;
+    char* end = nullptr;
+    const double v = std::strtod(s.c_str(), &end);
+    if (errno != 0 || end != s.c_str() + s.size() || !std::isfinite(v)) return std::nullopt;
+    return v;
+}
+
+std::optional<std::pair<double, double>> parse_bounds(std::string_view text) {
+    const std::size_t colon = text.find(':');
+    if (colon == std::string_view::npos || text.find(':', colon + 1) != std::string_view::npos) return std::nullopt;
+    const auto low = finite_number(text.substr(0, colon)), high = finite_number(text.substr(colon + 1));
+    if (!low || !high) return std::nullopt;
+    return std::make_pair(*low, *high);
 }
 
 }  // namespace vi

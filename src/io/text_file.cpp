@@ -61,4 +61,10 @@ std::optional<std::string> file_text(const std::string& path, std::string& reaso
     return text;
 }
 
+std::string trimmed(std::string_view s) {
+    const auto b = s.find_first_not_of(" \t\r");
+    if (b == std::string_view::npos) return {};
+    return std::string(s.substr(b, s.find_last_not_of(" \t\r") - b + 1));
+}
+
 }  // namespace vi

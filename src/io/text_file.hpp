@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 
 namespace vi {
 
@@ -16,5 +17,8 @@ std::optional<std::string> file_text(const std::string& path, std::string& reaso
 
 // s with line breaks written as \n and \r, so an error message stays one line.
 std::string one_line(std::string s);
+
+// s without leading and trailing blanks, tabs and carriage returns.
+std::string trimmed(std::string_view s);
 
 }  // namespace vi

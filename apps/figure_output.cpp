@@ -1,0 +1,27 @@
+#include "figure_output.hpp"
+
+#include <stdexcept>
+
+#include "model/run_control.hpp"
+#include "stop_signals.hpp"
+
+namespace vi::cli {
+
+std::string require_gnuplot(const std::string& requested, const std::string& what) {
+    const auto found = find_gnuplot(requested);
+    if (!found) {
+        throw std::runtime_error("gnuplot: '" + requested + "' not found; " + what +
+                                 " needs it (Debian: apt-get install gnuplot-nox, or bash scripts/install-deps)");
+    }
+    return *found;
+}
+
+void write_with_figures(const std::string& dir, OutputFiles files, const std::vector<FigureSpec>& figures,
+                        const std::string& gnuplot) {
+    for (auto& [name, text] : figure_files(figures, render_figures(gnuplot, figures, 1))) files[name] = std::move(text);
+    check_run();
+    const CommitSection commit;
+    write_output_files(dir, files);
+}
+
+}  // namespace vi::cli
