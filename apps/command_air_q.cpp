@@ -7,6 +7,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "figure_output.hpp"
 #include "io/case_reader.hpp"
 #include "io/output_files.hpp"
 #include "io/units.hpp"
@@ -43,8 +44,7 @@ CommandBody add_air_q_command(CLI::App& app) {
             throw InputError(std::string("--gap: ") + e.what());
         }
         if (!(gap > 0.0)) throw InputError("--gap: must be positive");
-        const auto gnuplot = find_gnuplot(opt->gnuplot);
-        if (!gnuplot) throw std::runtime_error("gnuplot: '" + opt->gnuplot + "' not found; the figure needs it");
+        const std::string gnuplot = require_gnuplot(opt->gnuplot, "the Q figure");
         std::vector<AirQPoint> points;
         try {
             const Case c = air_q_case(base, gap);
@@ -56,7 +56,7 @@ CommandBody add_air_q_command(CLI::App& app) {
             throw locate_in_case(base, e);
         }
         const std::vector<FigureSpec> figures{air_q_figure(points, base.name)};
-        const std::vector<RenderedFigure> rendered = render_figures(*gnuplot, figures, 1);
+        const std::vector<RenderedFigure> rendered = render_figures(gnuplot, figures, 1);
         OutputFiles files = figure_files(figures, rendered);
         check_run();
         {

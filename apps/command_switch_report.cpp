@@ -7,6 +7,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "figure_output.hpp"
 #include "io/case_reader.hpp"
 #include "io/output_files.hpp"
 #include "model/input_error.hpp"
@@ -33,11 +34,7 @@ CommandBody add_switch_report_command(CLI::App& app) {
 
     return [opt]() {
         const Case c = read_case_file(opt->case_path);
-        const auto gnuplot = find_gnuplot(opt->gnuplot);
-        if (!gnuplot) {
-            throw std::runtime_error("gnuplot: '" + opt->gnuplot +
-                                     "' not found; the figures need it (Debian: apt-get install gnuplot-nox, or bash scripts/install-deps)");
-        }
+        const std::string gnuplot = require_gnuplot(opt->gnuplot, "the figures");
         SwitchStudy study;
         try {
             study = run_switch_study(c);
@@ -45,7 +42,7 @@ CommandBody add_switch_report_command(CLI::App& app) {
             throw locate_in_case(c, e);
         }
         const std::vector<FigureSpec> figures = switch_figures(study);
-        const std::vector<RenderedFigure> rendered = render_figures(*gnuplot, figures, 2);
+        const std::vector<RenderedFigure> rendered = render_figures(gnuplot, figures, 2);
         std::string command = "vibroimpact switch-report ";
         command += opt->case_path;
         command += " --out ";

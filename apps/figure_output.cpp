@@ -10,8 +10,8 @@ namespace vi::cli {
 std::string require_gnuplot(const std::string& requested, const std::string& what) {
     const auto found = find_gnuplot(requested);
     if (!found) {
-        throw std::runtime_error("gnuplot: '" + requested + "' not found; " + what +
-                                 " needs it (Debian: apt-get install gnuplot-nox, or bash scripts/install-deps)");
+        throw std::runtime_error("gnuplot: '" + requested + "' not found; it draws " + what +
+                                 " (Debian: apt-get install gnuplot-nox, or bash scripts/install-deps)");
     }
     return *found;
 }

@@ -10,7 +10,7 @@
 
 namespace vi::cli {
 
-// The gnuplot to run; throws std::runtime_error naming what needs it and how to install it.
+// The gnuplot to run; throws std::runtime_error naming what it draws and how to install it.
 std::string require_gnuplot(const std::string& requested, const std::string& what);
 
 // Renders `figures`, adds their files to `files`, checks for a stop, and writes everything into dir
