@@ -2,6 +2,8 @@
 
 #include <nvector/nvector_serial.h>
 
+#include <Eigen/SparseCore>
+
 #include <cmath>
 #include <new>
 
@@ -54,9 +56,10 @@ struct Factors {
     double a = 0.0, b = 1.0;
     Eigen::VectorXd inv_delta;             // 1 / (b^2 + a^2 w^2 - a b D)
     std::vector<int> active;               // elements with a tangent
-    Eigen::MatrixXd P;                     // their basis rows, stacked (s x r)
-    Eigen::MatrixXd W;                     // -a^2 dfdq + a b dfdv, block diagonal (s x s)
-    Eigen::MatrixXd Fq;                    // dfdq, block diagonal (s x s), for the right-hand side
+    std::vector<int> slot;                 // per DOF of the system's union: its row in P, or -1
+    Eigen::MatrixXd P;                     // the basis rows of the active elements' DOFs, each once (s x r)
+    Eigen::MatrixXd W;                     // sum over elements of -a^2 dfdq + a b dfdv (s x s)
+    Eigen::MatrixXd Fq;                    // sum of dfdq (s x s), for the right-hand side
     Eigen::PartialPivLU<Eigen::MatrixXd> capacitance;  // I + W P Delta^-1 P^T (s x s)
     Eigen::PartialPivLU<Eigen::MatrixXd> dense;        // the whole Delta + P^T W P (r x r) when s is large
     bool use_dense = false;
@@ -93,29 +96,43 @@ int solver_setup(SUNLinearSolver S, SUNMatrix A) {
         if (!(delta.abs() > 0.0).all()) return f.last_flag = 1, 1;  // recoverable: CVODE retries smaller
         f.inv_delta = delta.inverse().matrix();
         f.active.clear();
-        int s = 0;
         for (int e = 0; e < static_cast<int>(j.dfdq.size()); ++e) {
             const std::size_t ue = static_cast<std::size_t>(e);
-            if (nonzero(j.dfdq[ue]) || nonzero(j.dfdv[ue])) {
-                f.active.push_back(e);
-                s += static_cast<int>(j.dfdq[ue].rows());
-            }
+            if (nonzero(j.dfdq[ue]) || nonzero(j.dfdv[ue])) f.active.push_back(e);
         }
+        // The active elements' DOFs, each once: elements that share DOFs (a pad and its film) add
+        // their tangents into one block instead of stacking copies of the same basis rows.
+        f.slot.assign(static_cast<std::size_t>(sys.union_rows().rows()), -1);
+        int s = 0;
+        for (int e : f.active)
+            for (int u : sys.union_positions(e))
+                if (f.slot[static_cast<std::size_t>(u)] < 0) f.slot[static_cast<std::size_t>(u)] = s++;
         f.P.resize(s, r);
+        for (std::size_t u = 0; u < f.slot.size(); ++u)
+            if (f.slot[u] >= 0) f.P.row(f.slot[u]) = sys.union_rows().row(static_cast<Eigen::Index>(u));
         f.W = Eigen::MatrixXd::Zero(s, s);
         f.Fq = Eigen::MatrixXd::Zero(s, s);
-        int at = 0;
         for (int e : f.active) {
             const std::size_t ue = static_cast<std::size_t>(e);
+            const std::vector<int>& at = sys.union_positions(e);
             const Eigen::Index m = j.dfdq[ue].rows();
-            f.P.middleRows(at, m) = sys.rows(e);
-            f.W.block(at, at, m, m) = -f.a * f.a * j.dfdq[ue] + f.a * f.b * j.dfdv[ue];
-            f.Fq.block(at, at, m, m) = j.dfdq[ue];
-            at += static_cast<int>(m);
+            for (Eigen::Index a = 0; a < m; ++a) {
+                const int ia = f.slot[static_cast<std::size_t>(at[static_cast<std::size_t>(a)])];
+                for (Eigen::Index b = 0; b < m; ++b) {
+                    const int ib = f.slot[static_cast<std::size_t>(at[static_cast<std::size_t>(b)])];
+                    const double q = j.dfdq[ue](a, b), v = j.dfdv[ue](a, b);
+                    f.W(ia, ib) += -f.a * f.a * q + f.a * f.b * v;
+                    f.Fq(ia, ib) += q;
+                }
+            }
         }
         f.use_dense = s > r / 4;
         if (f.use_dense) {
-            Eigen::MatrixXd full = f.P.transpose() * f.W * f.P;
+            // W is banded (each element couples neighbouring DOFs): the sparse product costs O(nnz r)
+            // where the dense one costs O(s^2 r).
+            const Eigen::SparseMatrix<double> Ws = f.W.sparseView();
+            const Eigen::MatrixXd WP = Ws * f.P;
+            Eigen::MatrixXd full = f.P.transpose() * WP;
             full.diagonal() += delta.matrix();
             f.dense.compute(full);
         } else if (s > 0) {

@@ -26,6 +26,17 @@ ModalSystem::ModalSystem(const TransientProblem& p, ModalBasis basis)
     w2_ = basis_.omega.cwiseAbs2();
     d_ = (p.alpha + p.beta * w2_.array()).matrix();
     for (const ForceElementPtr& e : p.forces) rows_.push_back(rows_of(basis_.phi, e->dofs()));
+    std::vector<int> all;
+    for (const ForceElementPtr& e : p.forces) all.insert(all.end(), e->dofs().begin(), e->dofs().end());
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    union_rows_ = rows_of(basis_.phi, all);
+    for (const ForceElementPtr& e : p.forces) {
+        std::vector<int> at;
+        for (int d : e->dofs()) at.push_back(static_cast<int>(std::lower_bound(all.begin(), all.end(), d) - all.begin()));
+        local_.push_back(std::move(at));
+    }
+    uf_.resize(union_rows_.rows());
     tip_row_ = basis_.phi.row(p.tip_dof);
     int root = 0;
     for (const ForceElementPtr& e : p.forces) {
@@ -66,6 +77,26 @@ void ModalSystem::gather(int e, const double* y, const double* acc, Gathered& g)
     }
 }
 
+void ModalSystem::gather_union(const double* y, const double* acc) const {
+    uq_.noalias() = union_rows_ * ConstVec(y, r_);
+    uv_.noalias() = union_rows_ * ConstVec(y + r_, r_);
+    if (acc) ua_.noalias() = union_rows_ * ConstVec(acc, r_);
+}
+
+void ModalSystem::pick(int e, bool acc, Gathered& g) const {
+    const std::vector<int>& at = local_[static_cast<std::size_t>(e)];
+    g.q.resize(at.size());
+    g.v.resize(at.size());
+    for (std::size_t k = 0; k < at.size(); ++k) {
+        g.q[k] = uq_[at[k]];
+        g.v[k] = uv_[at[k]];
+    }
+    if (acc) {
+        g.a.resize(at.size());
+        for (std::size_t k = 0; k < at.size(); ++k) g.a[k] = ua_[at[k]];
+    }
+}
+
 void ModalSystem::rhs(double t, const double* y, double* ydot) const {
     const ConstVec eta(y, r_), vel(y + r_, r_);
     Eigen::Map<Eigen::VectorXd>(ydot, r_) = vel;
@@ -74,18 +105,21 @@ void ModalSystem::rhs(double t, const double* y, double* ydot) const {
     const double te = element_time(t);
     double dissipated = 0.0, work = 0.0;
     std::vector<double> f;
+    gather_union(y, nullptr);
+    uf_.setZero();
     for (int e = 0; e < elements(); ++e) {
         const ForceElement& el = element(e);
-        gather(e, y, nullptr, scratch_);
+        pick(e, false, scratch_);
         const ElementState s{te, scratch_.q.data(), scratch_.v.data(), nullptr};
         const int mode = modes_[static_cast<std::size_t>(e)];
         f.assign(scratch_.q.size(), 0.0);
         el.add_force(s, mode, f.data());
-        acc.noalias() += rows_[static_cast<std::size_t>(e)].transpose() *
-                         Eigen::Map<const Eigen::VectorXd>(f.data(), static_cast<Eigen::Index>(f.size()));
+        const std::vector<int>& at = local_[static_cast<std::size_t>(e)];
+        for (std::size_t k = 0; k < at.size(); ++k) uf_[at[k]] += f[k];
         dissipated += el.dissipated_power(s, mode);
         work += el.input_power(s, mode);
     }
+    acc.noalias() += union_rows_.transpose() * uf_;
     ydot[rayleigh_index()] = vel.dot(d_.cwiseProduct(vel));
     ydot[dissipation_index()] = dissipated;
     ydot[work_index()] = work;
@@ -94,7 +128,7 @@ void ModalSystem::rhs(double t, const double* y, double* ydot) const {
         const ForceElement& el = element(e);
         double rate = 0.0;
         if (modes_[static_cast<std::size_t>(e)] == el.contact_mode()) {
-            gather(e, y, nullptr, scratch_);
+            pick(e, false, scratch_);
             rate = el.contact_reading(ElementState{te, scratch_.q.data(), scratch_.v.data(), nullptr}).force;
         }
         ydot[impulse_index(static_cast<int>(j))] = rate;
@@ -110,11 +144,12 @@ void ModalSystem::acceleration(double t, const double* y, Eigen::VectorXd& acc) 
 void ModalSystem::root_functions(double t, const double* y, double* g) const {
     const double te = element_time(t);
     if (needs_acceleration_) acceleration(t, y, acc_);
+    gather_union(y, needs_acceleration_ ? acc_.data() : nullptr);
     for (int e = 0; e < elements(); ++e) {
         const ForceElement& el = element(e);
         const std::size_t ue = static_cast<std::size_t>(e);
         if (switch_root_[ue] < 0 && el.watch_count() == 0) continue;
-        gather(e, y, needs_acceleration_ ? acc_.data() : nullptr, scratch_);
+        pick(e, needs_acceleration_, scratch_);
         const ElementState s{te, scratch_.q.data(), scratch_.v.data(), needs_acceleration_ ? scratch_.a.data() : nullptr};
         if (switch_root_[ue] >= 0) g[switch_root_[ue]] = el.switching_function(s, modes_[ue]);
         if (el.watch_count() > 0) el.watch_functions(s, modes_[ue], g + watch_root_[ue]);
@@ -123,7 +158,7 @@ void ModalSystem::root_functions(double t, const double* y, double* g) const {
     if (contacts_.empty()) {
         g[extreme_root() + 1] = 1.0;
     } else {
-        gather(contacts_.front(), y, nullptr, scratch_);
+        pick(contacts_.front(), false, scratch_);
         g[extreme_root() + 1] =
             element(contacts_.front()).contact_reading(ElementState{te, scratch_.q.data(), scratch_.v.data(), nullptr}).point_velocity;
     }
@@ -134,9 +169,10 @@ void ModalSystem::tangents(double t, const double* y, std::vector<Eigen::MatrixX
     const double te = element_time(t);
     dfdq.resize(p_.forces.size());
     dfdv.resize(p_.forces.size());
+    gather_union(y, nullptr);
     for (int e = 0; e < elements(); ++e) {
         const std::size_t ue = static_cast<std::size_t>(e);
-        gather(e, y, nullptr, scratch_);
+        pick(e, false, scratch_);
         const Eigen::Index m = static_cast<Eigen::Index>(scratch_.q.size());
         // Row-major blocks as the elements write them; Eigen's default is column-major.
         Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> q = Eigen::MatrixXd::Zero(m, m);

@@ -37,6 +37,10 @@ public:
     [[nodiscard]] const ModalBasis& basis() const { return basis_; }
     [[nodiscard]] const Eigen::VectorXd& rayleigh() const { return d_; }  // alpha + beta w^2 per vector
     [[nodiscard]] const Eigen::MatrixXd& rows(int e) const { return rows_[static_cast<std::size_t>(e)]; }
+    // The union of the elements' DOFs (elements overlap: a pad and its film share every DOF): its
+    // basis rows (|U| x r), and the position in it of each of element e's DOFs.
+    [[nodiscard]] const Eigen::MatrixXd& union_rows() const { return union_rows_; }
+    [[nodiscard]] const std::vector<int>& union_positions(int e) const { return local_[static_cast<std::size_t>(e)]; }
 
     [[nodiscard]] int rayleigh_index() const { return 2 * r_; }
     [[nodiscard]] int dissipation_index() const { return 2 * r_ + 1; }
@@ -93,6 +97,10 @@ private:
         std::vector<double> q, v, a;
     };
     void gather(int e, const double* y, const double* acc, Gathered& g) const;
+    // q, v (and a) at every DOF of the union once, then element e's share of them: each shared DOF
+    // is projected once per call instead of once per element.
+    void gather_union(const double* y, const double* acc) const;
+    void pick(int e, bool acc, Gathered& g) const;
     [[nodiscard]] double element_time(double t) const;
     void acceleration(double t, const double* y, Eigen::VectorXd& acc) const;
 
@@ -101,6 +109,8 @@ private:
     int r_ = 0;
     Eigen::VectorXd w2_, d_;                 // omega^2, alpha + beta omega^2
     std::vector<Eigen::MatrixXd> rows_;      // per element: basis rows of its DOFs (|D_e| x r)
+    Eigen::MatrixXd union_rows_;             // basis rows of the union of the elements' DOFs (|U| x r)
+    std::vector<std::vector<int>> local_;    // per element: positions of its DOFs in the union
     Eigen::RowVectorXd tip_row_;
     std::vector<int> contacts_;
     std::vector<int> modes_;
@@ -109,6 +119,7 @@ private:
     bool needs_acceleration_ = false;
     double t_limit_ = 0.0;
     mutable Gathered scratch_;
+    mutable Eigen::VectorXd uq_, uv_, ua_, uf_;  // on the union: q, v, a, summed element forces
     mutable Eigen::VectorXd acc_;
 };
 
