@@ -175,7 +175,8 @@ TEST(CaseReaderErrors, TomlSyntax) {
 }
 
 TEST(CaseReaderErrors, UnknownKeys) {
-    expect_error(with_line(1, "nmae = \"t\""), "bad.toml:1: nmae: unknown key (accepted here: name, beam,");
+    expect_error(with_line(1, "nmae = \"t\""), "bad.toml:1: nmae: unknown key 'nmae' (did you mean 'name'?)");
+    expect_error(with_line(1, "zzzz = \"t\""), "bad.toml:1: zzzz: unknown key (accepted here: name, beam,");
     expect_error(kBase + "[output]\ntip = \"1 um\"\n", "bad.toml:11: output: unknown key");
     expect_error(kBase + "[initial]\nkind = \"rest\"\ntip = \"1 um\"\n", "bad.toml:13: initial.tip: unknown key");
     expect_error(insert_line(6, "colour = \"red\""), "bad.toml:6: beam.colour: unknown key");
@@ -183,6 +184,19 @@ TEST(CaseReaderErrors, UnknownKeys) {
     expect_error(kBase + support("0.5") + support("1.0", "\"a\\nb\" = 1\n"),
                  "bad.toml:17: supports[1].\"a\\nb\": unknown key");
     expect_error(kBase + "[damping]\nratio = [0.01, 0.02]\n", "bad.toml:12: damping.ratio: unknown key");
+}
+
+// A misspelled key is reported as such at its own line, not as the required key it stands for
+// (which would point at the table's first line and leave the user searching).
+TEST(CaseReaderErrors, MisspelledKeyIsNamedWithTheKeyItMeans) {
+    expect_error(kBase + "[[supports]]\nposition = 1.0\nstifness = 1e3\n",
+                 "bad.toml:13: supports[0].stifness: unknown key 'stifness' (did you mean 'stiffness'?)");
+    expect_error(with_line(3, "lenght = \"100 um\""), "bad.toml:3: beam.lenght: unknown key 'lenght' (did you mean 'length'?)");
+    const std::string no_beam = kBase.substr(0, kBase.find("[beam]")) + "[bem]" + kBase.substr(kBase.find("[beam]") + 6);
+    expect_error(no_beam, "bad.toml:2: bem: unknown key 'bem' (did you mean 'beam'?)");
+    // A key already present is not suggested again: a second "stiffness" would be a duplicate.
+    expect_error(kBase + "[[supports]]\nposition = 1.0\nstiffness = 1e3\nstifness = 1e3\n",
+                 "bad.toml:14: supports[0].stifness: unknown key (accepted here:");
 }
 
 TEST(CaseReaderErrors, MissingRequired) {

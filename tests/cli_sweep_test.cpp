@@ -284,8 +284,8 @@ TEST_F(SweepCli, BadSetExitsTwoBeforeAnyPointAndWritesNothing) {
         std::vector<std::string> args;
         const char* message;
     } cases[] = {
-        {{"--set", "supports[0].foo=0.5"}, "--set supports[0].foo=0.5: unknown key \"foo\" in supports[i]"},
-        {{"--set", "foo.position=0.5"}, "--set foo.position=0.5: unknown key \"foo\""},
+        {{"--set", "supports[0].foo=0.5"}, "--set supports[0].foo=0.5: unknown key 'foo' in supports[i]"},
+        {{"--set", "foo.position=0.5"}, "--set foo.position=0.5: unknown key 'foo'"},
         {{"--set", "supports[1].position=0.5"}, "supports[1]: index out of range (the case has 1 support)"},
         {{"--set", "supports[0].position="}, "--set supports[0].position=: empty range"},
         {{"--set", "supports[0].position=0.5:1:0"}, "count '0' must be a whole number"},
@@ -312,7 +312,7 @@ TEST_F(SweepCli, BadSetExitsTwoBeforeAnyPointAndWritesNothing) {
     // adds its own notice that a rank returned non-zero).
     const CommandResult mpi = run_mpi(sweep({"--set", "supports[0].foo=0.5", "--out", out}));
     EXPECT_EQ(mpi.exit_code, 2) << mpi.err;
-    const std::string line = "vibroimpact: error: --set supports[0].foo=0.5: unknown key \"foo\"";
+    const std::string line = "vibroimpact: error: --set supports[0].foo=0.5: unknown key 'foo'";
     const auto first = mpi.err.find(line);
     EXPECT_NE(first, std::string::npos) << mpi.err;
     EXPECT_EQ(mpi.err.find(line, first + 1), std::string::npos) << mpi.err;

@@ -63,7 +63,7 @@ TEST(SweepGrid, BadSettingsNameTheSettingAndTheReason) {
         const char* message;
     } cases[] = {
         {{"supports[0].position"}, "--set supports[0].position: expected PATH=SPEC"},
-        {{"supports[0].foo=1"}, "--set supports[0].foo=1: unknown key \"foo\""},
+        {{"supports[0].foo=1"}, "--set supports[0].foo=1: unknown key 'foo'"},
         {{"supports[3].position=1"}, "--set supports[3].position=1: supports[3]: index out of range"},
         {{"supports[0].position="}, "--set supports[0].position=: empty range"},
         {{"supports[0].position=0:1:0"}, "--set supports[0].position=0:1:0: count '0' must be a whole number"},

@@ -150,8 +150,10 @@ TEST(SweepCasePaths, BadPathsSayWhatIsWrong) {
         const Case* on;
         const char* reason;
     } cases[] = {
-        {"supports[0].foo", &full, "unknown key \"foo\" in supports[i] (accepted: position, gap,"},
-        {"foo.bar", &full, "unknown key \"foo\" (accepted: beam, material, supports[i],"},
+        {"supports[0].foo", &full, "unknown key 'foo' in supports[i] (accepted: position, gap,"},
+        {"foo.bar", &full, "unknown key 'foo' (accepted: beam, material, supports[i],"},
+        {"supports[0].stifness", &full, "unknown key 'stifness' in supports[i] (did you mean 'stiffness'?)"},
+        {"suports[0].gap", &full, "unknown key 'suports' (did you mean 'supports'?)"},
         {"supports[2].position", &full, "supports[2]: index out of range (the case has 2 supports)"},
         {"loads[0].amplitude", &alpha, "loads[0]: index out of range (the case has 0 loads)"},
         {"supports.position", &full, "supports: needs an index, like supports[0].position"},

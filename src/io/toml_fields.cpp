@@ -1,5 +1,7 @@
 #include "io/toml_fields.hpp"
 
+#include "io/spelling.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -60,6 +62,10 @@ Position element_position(const FieldReader& f, std::string_view key, const toml
 
 void ReadLog::problem(Position at, std::string key, std::string message) {
     problems_.push_back({at, std::move(key), std::move(message)});
+}
+
+void ReadLog::withdraw(const std::string& key) {
+    std::erase_if(problems_, [&](const SourceProblem& p) { return p.key == key && p.message.starts_with("missing required"); });
 }
 
 void ReadLog::locate(const std::string& key, Position at) { positions_[key] = at; }
@@ -265,8 +271,18 @@ void FieldReader::finish() {
     for (auto&& [key, value] : table_) {
         (void)value;
         if (std::find(accepted_.begin(), accepted_.end(), key.str()) != accepted_.end()) continue;
-        log_.problem(position_of(key.source(), at_), child_path(path_, key.str()),
-                     "unknown key (accepted here: " + join(accepted_) + ")");
+        std::vector<std::string_view> absent;
+        for (std::string_view a : accepted_)
+            if (!has(a)) absent.push_back(a);
+        const Position at = position_of(key.source(), at_);
+        if (const auto guess = closest_spelling(key.str(), absent)) {
+            // The misspelling is the cause of the missing key it stands for: report it, not that.
+            log_.withdraw(child_path(path_, *guess));
+            log_.problem(at, child_path(path_, key.str()),
+                         "unknown key '" + std::string(key.str()) + "' (did you mean '" + *guess + "'?)");
+        } else {
+            log_.problem(at, child_path(path_, key.str()), "unknown key (accepted here: " + join(accepted_) + ")");
+        }
     }
 }
 

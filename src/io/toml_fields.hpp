@@ -34,6 +34,8 @@ struct SourceProblem {
 class ReadLog {
 public:
     void problem(Position at, std::string key, std::string message);
+    // Drops the "missing required" problem of key (a misspelled key present explains it).
+    void withdraw(const std::string& key);
     void locate(const std::string& key, Position at);
     // Position of key; else of its nearest recorded parent ("beam.right" -> "beam"); else line 1.
     [[nodiscard]] Position where(std::string key) const;

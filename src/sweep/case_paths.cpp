@@ -1,9 +1,11 @@
 #include "sweep/case_paths.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <climits>
 #include <cmath>
 
+#include "io/spelling.hpp"
 #include "model/input_error.hpp"
 
 namespace vi {
@@ -218,6 +220,20 @@ std::string known_fields(std::string_view section) {
     return out;
 }
 
+// " (did you mean 'x'?)" when name is a near misspelling of a section (field empty: sections) or of
+// a field of section; else " (accepted: ...)".
+std::string spelling_hint(std::string_view name, std::string_view section) {
+    std::vector<std::string_view> names;
+    for (const FieldSpec& f : kFields) names.push_back(section.empty() ? f.section : f.field);
+    std::vector<std::string_view> candidates;
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        const bool ours = section.empty() || kFields[k].section == section;
+        if (ours && std::find(candidates.begin(), candidates.end(), names[k]) == candidates.end()) candidates.push_back(names[k]);
+    }
+    if (const auto guess = closest_spelling(name, candidates)) return " (did you mean '" + *guess + "'?)";
+    return " (accepted: " + (section.empty() ? known_sections() : known_fields(section)) + ")";
+}
+
 // Reads "name" or "name[digits]" from the front of s.
 struct Part {
     std::string name;
@@ -273,7 +289,7 @@ CasePath resolve_case_path(std::string_view text, const Case& c) {
     p.section = section.name;
     p.section_index = section.index;
     if (known_fields(p.section).empty()) {
-        throw InputError("unknown key \"" + p.section + "\" (accepted: " + known_sections() + ")");
+        throw InputError("unknown key '" + p.section + "'" + spelling_hint(p.section, ""));
     }
     if (rest.empty() || rest.front() != '.') {
         if (rest.empty() && !p.section_index && indexed_section(p.section)) {
@@ -292,7 +308,7 @@ CasePath resolve_case_path(std::string_view text, const Case& c) {
     if (!indexed_section(p.section) && p.section_index) throw InputError(p.section + ": takes no index");
     const FieldSpec* f = find_field(p);
     if (!f) {
-        throw InputError("unknown key \"" + p.field + "\" in " + where + " (accepted: " + known_fields(p.section) + ")");
+        throw InputError("unknown key '" + p.field + "' in " + where + spelling_hint(p.field, p.section));
     }
     if (indexed_section(p.section)) {
         if (!p.section_index) throw InputError(p.section + ": needs an index, like " + p.section + "[0]." + p.field);
