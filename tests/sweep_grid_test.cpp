@@ -57,6 +57,26 @@ TEST(SweepGrid, SpecFormsExpand) {
     EXPECT_EQ(parse_sweep_setting("supports[0].gap=-1e-6", c).values, (std::vector<double>{-1e-6}));
 }
 
+// Values on the command line may carry the units of case files; plain numbers stay SI.
+TEST(SweepGrid, ValuesMayCarryTheUnitsOfCaseFiles) {
+    const Case c = support_case();
+    const auto gaps = parse_sweep_setting("supports[0].gap=0.5um:2um:4", c).values;
+    ASSERT_EQ(gaps.size(), 4u);
+    EXPECT_NEAR(gaps[0], 0.5e-6, 1e-20);
+    EXPECT_NEAR(gaps[1], 1.0e-6, 1e-20);
+    EXPECT_NEAR(gaps[3], 2.0e-6, 1e-20);
+    EXPECT_EQ(parse_sweep_setting("supports[0].gap=0.5e-6,1 um", c).values, (std::vector<double>{0.5e-6, 1e-6}));
+    const auto k = parse_sweep_setting("supports[0].stiffness=log:10 N/m:1 kN/m:3", c).values;
+    ASSERT_EQ(k.size(), 3u);
+    EXPECT_EQ(k[0], 10.0);
+    EXPECT_EQ(k[2], 1000.0);
+    EXPECT_EQ(parse_sweep_setting("material.youngs_modulus=200GPa", c).values, (std::vector<double>{200e9}));
+    EXPECT_EQ(error_of({"supports[0].gap=1GPa:2um:3"}),
+              "--set supports[0].gap=1GPa:2um:3: '1GPa': unit \"GPa\" is a pressure, expected a length: m, mm, um, µm, nm");
+    // A position along the beam is x/l, a plain number: no unit makes sense there.
+    EXPECT_EQ(error_of({"supports[0].position=0.5um"}), "--set supports[0].position=0.5um: '0.5um' is not a number");
+}
+
 TEST(SweepGrid, BadSettingsNameTheSettingAndTheReason) {
     const struct {
         std::vector<std::string> settings;

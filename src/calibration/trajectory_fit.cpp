@@ -100,8 +100,8 @@ FitParameter parse_fit_parameter(const std::string& text, const Case& c) {
     if (is_integer_path(p.path)) throw fail(p.path.text() + " takes whole numbers, which a least-squares fit cannot vary");
     p.start = get_case_value(c, p.path);
     if (eq != std::string::npos) {
-        const auto bounds = parse_bounds(text.substr(eq + 1));
-        if (!bounds) throw fail("expected PATH or PATH=LOW:HIGH, two finite numbers (SI units)");
+        const auto bounds = parse_bounds(text.substr(eq + 1), case_path_dimension(p.path));
+        if (!bounds) throw fail("expected PATH or PATH=LOW:HIGH, two finite numbers (SI, or with units as in case files)");
         if (!(bounds->first < bounds->second)) throw fail("LOW must be below HIGH");
         p.low = bounds->first;
         p.high = bounds->second;

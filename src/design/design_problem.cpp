@@ -37,8 +37,8 @@ DesignVariable parse_design_variable(const std::string& text, const Case& c) {
     if (is_integer_path(v.path)) {
         throw fail(v.path.text() + " takes whole numbers, which a continuous optimiser cannot vary; sweep it with --set");
     }
-    const auto bounds = parse_bounds(text.substr(eq + 1));
-    if (!bounds) throw fail("expected LOW:HIGH after '=', two finite numbers (SI units)");
+    const auto bounds = parse_bounds(text.substr(eq + 1), case_path_dimension(v.path));
+    if (!bounds) throw fail("expected LOW:HIGH after '=', two finite numbers (SI, or with units as in case files)");
     if (!(bounds->first < bounds->second)) throw fail("LOW must be below HIGH");
     v.low = bounds->first;
     v.high = bounds->second;

@@ -21,14 +21,23 @@ std::vector<std::string> split(std::string_view s, char sep) {
     return parts;
 }
 
-double number(const std::string& text) {
+double number(const std::string& text, std::optional<Dimension> unit_of = std::nullopt) {
     const std::size_t b = text.find_first_not_of(" \t");
     const std::size_t e = text.find_last_not_of(" \t");
     if (b == std::string::npos) throw std::invalid_argument("empty value in range");
     const std::string t = text.substr(b, e - b + 1);
     char* end = nullptr;
     const double v = std::strtod(t.c_str(), &end);
-    if (end != t.c_str() + t.size()) throw std::invalid_argument("'" + t + "' is not a number");
+    if (end != t.c_str() + t.size()) {
+        if (unit_of && *unit_of != Dimension::dimensionless && end != t.c_str()) {  // a number, then a unit
+            try {
+                return parse_quantity(t, *unit_of);
+            } catch (const std::invalid_argument& err) {
+                throw std::invalid_argument("'" + t + "': " + err.what());
+            }
+        }
+        throw std::invalid_argument("'" + t + "' is not a number");
+    }
     if (!std::isfinite(v)) throw std::invalid_argument("'" + t + "' is not a finite number");
     return v;
 }
@@ -50,13 +59,13 @@ std::vector<double> linear(double a, double b, int n) {
 
 }  // namespace
 
-std::vector<double> parse_range_spec(std::string_view spec) {
+std::vector<double> parse_range_spec(std::string_view spec, std::optional<Dimension> unit_of) {
     if (spec.find_first_not_of(" \t") == std::string_view::npos) throw std::invalid_argument("empty range");
     if (spec.substr(0, 4) == "log:") {
         const auto p = split(spec.substr(4), ':');
         if (p.size() != 3) throw std::invalid_argument("a log range is log:start:stop:count");
-        const double a = number(p[0]);
-        const double b = number(p[1]);
+        const double a = number(p[0], unit_of);
+        const double b = number(p[1], unit_of);
         if (!(a > 0 && b > 0)) throw std::invalid_argument("a log range needs start and stop > 0");
         std::vector<double> v = linear(std::log(a), std::log(b), count_of(p[2]));
         for (double& x : v) x = std::exp(x);
@@ -67,10 +76,10 @@ std::vector<double> parse_range_spec(std::string_view spec) {
     if (spec.find(':') != std::string_view::npos) {
         const auto p = split(spec, ':');
         if (p.size() != 3) throw std::invalid_argument("a linear range is start:stop:count");
-        return linear(number(p[0]), number(p[1]), count_of(p[2]));
+        return linear(number(p[0], unit_of), number(p[1], unit_of), count_of(p[2]));
     }
     std::vector<double> v;
-    for (const std::string& item : split(spec, ',')) v.push_back(number(item));
+    for (const std::string& item : split(spec, ',')) v.push_back(number(item, unit_of));
     return v;
 }
 
@@ -84,12 +93,17 @@ std::optional<double> finite_number(std::string_view text) {
     return v;
 }
 
-std::optional<std::pair<double, double>> parse_bounds(std::string_view text) {
+double parse_value(std::string_view text, std::optional<Dimension> unit_of) { return number(std::string(text), unit_of); }
+
+std::optional<std::pair<double, double>> parse_bounds(std::string_view text, std::optional<Dimension> unit_of) {
     const std::size_t colon = text.find(':');
     if (colon == std::string_view::npos || text.find(':', colon + 1) != std::string_view::npos) return std::nullopt;
-    const auto low = finite_number(text.substr(0, colon)), high = finite_number(text.substr(colon + 1));
-    if (!low || !high) return std::nullopt;
-    return std::make_pair(*low, *high);
+    try {
+        return std::make_pair(number(std::string(text.substr(0, colon)), unit_of),
+                              number(std::string(text.substr(colon + 1)), unit_of));
+    } catch (const std::invalid_argument&) {
+        return std::nullopt;
+    }
 }
 
 }  // namespace vi

@@ -333,6 +333,19 @@ bool is_integer_path(const CasePath& p) { return field_of(p).integer; }
 
 std::string case_path_unit(const CasePath& p) { return field_of(p).unit; }
 
+std::optional<Dimension> case_path_dimension(const CasePath& p) {
+    static constexpr std::pair<std::string_view, Dimension> kBySi[] = {
+        {"m", Dimension::length},         {"Pa", Dimension::pressure},       {"kg/m^3", Dimension::density},
+        {"N/m", Dimension::stiffness},    {"N s/m", Dimension::damping},     {"N", Dimension::force},
+        {"s", Dimension::time},           {"m/s", Dimension::velocity},      {"Hz", Dimension::frequency},
+        {"1/s", Dimension::mass_damping}, {"V", Dimension::voltage},         {"J/m^2", Dimension::surface_energy},
+        {"Pa s", Dimension::viscosity},   {"K", Dimension::temperature}};
+    const std::string_view unit = field_of(p).unit;
+    for (const auto& [si, d] : kBySi)
+        if (si == unit) return d;
+    return std::nullopt;
+}
+
 double get_case_value(const Case& c, const CasePath& p) {
     return field_of(p).get(c, p.section_index.value_or(0), p.field_index.value_or(0));
 }

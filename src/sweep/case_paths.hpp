@@ -7,6 +7,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/units.hpp"
 #include "model/case.hpp"
 
 namespace vi {
@@ -35,6 +36,9 @@ bool is_integer_path(const CasePath& p);
 // SI unit of the value at p: "m", "Pa", "kg/m^3", "N/m", "N s/m", "N", "s", "m/s", "Hz", "1/s",
 // "rad", "x/l" for positions along the beam, or "-" for other dimensionless values.
 std::string case_path_unit(const CasePath& p);
+// The dimension of the value at p, whose units a command line may use ("0.5um"); nullopt for
+// positions x/l, angles and other plain numbers.
+std::optional<Dimension> case_path_dimension(const CasePath& p);
 
 // The value at p (a path from resolve_case_path on a case of the same shape). gap reads as
 // -surface and prestress as +surface, whichever key the case file used.

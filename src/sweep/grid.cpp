@@ -23,7 +23,7 @@ SweepAxis parse_sweep_setting(const std::string& setting, const Case& c) {
     }
     const std::string spec = setting.substr(eq + 1);
     try {
-        axis.values = parse_range_spec(spec);
+        axis.values = parse_range_spec(spec, case_path_dimension(axis.path));
     } catch (const std::invalid_argument& e) {
         throw fail(e.what());
     }
