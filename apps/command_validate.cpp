@@ -23,6 +23,7 @@ CommandBody add_validate_command(CLI::App& app) {
         bool quick = false;
         bool paper_parameters = false;
         bool quiet = false;
+        int threads = 0;
         std::string example = "examples/paper/free_impact_tip.toml";
     };
     auto opt = std::make_shared<Options>();
@@ -34,12 +35,16 @@ CommandBody add_validate_command(CLI::App& app) {
                   "Write docs/paper-parameters.md instead: the parameters the paper does not give, and the Kc scan");
     sub->add_option("--case", opt->example, "The default example the transient sections run")->capture_default_str();
     sub->add_flag("--quiet,-q", opt->quiet, "No progress lines on stderr");
+    sub->add_option("--threads,-j", opt->threads, "Worker threads for the sections (0: every CPU this process may use)")
+        ->check(CLI::Range(0, 1024))
+        ->capture_default_str();
 
     return [opt]() {
         std::filesystem::path out_path(opt->out);
         if (!opt->out.empty() && out_path.filename().empty()) throw InputError("--out: expected a file name, got a folder");
         ValidationOptions vo;
         vo.quick = opt->quick;
+        vo.threads = opt->threads;
         vo.example = read_case_file(opt->example);
         vo.example_path = opt->example;
         const auto t0 = std::chrono::steady_clock::now();

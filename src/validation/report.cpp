@@ -1,9 +1,13 @@
 #include "validation/report.hpp"
 
 #include <cmath>
+#include <memory>
+#include <mutex>
 #include <cstdio>
 #include <sstream>
 
+#include "model/parallel_for.hpp"
+#include "model/run_control.hpp"
 #include "validation/closed_forms.hpp"
 #include "fem/system.hpp"
 
@@ -83,9 +87,29 @@ std::string validation_report(const ValidationOptions& o) {
          "the same quantity (`tests/`), or - where no test asserts one. Unless said otherwise the beam is "
          "the paper's nickel cantilever: l = 117 um, w = 30 um, t = 2 um, E = 207 GPa, "
          "rho = 8902 kg/m^3, clamped at x = 0, free at x = l.\n\n";
-    s << section_static(o) << section_frequencies(o) << section_shapes(o) << section_supported(o)
-      << section_single_dof(o) << section_energy(o) << section_exact_vs_cvode(o) << section_mesh(o)
-      << section_loads(o) << section_electrostatics(o) << section_elsewhere();
+    // The sections are independent: they run on worker threads (the slowest first, so that two
+    // threads finish together) and are written in document order.
+    ValidationOptions shared = o;
+    if (o.progress) {
+        auto lock = std::make_shared<std::mutex>();
+        shared.progress = [lock, print = o.progress](const std::string& line) {
+            const std::lock_guard<std::mutex> guard(*lock);
+            print(line);
+        };
+    }
+    using Section = std::string (*)(const ValidationOptions&);
+    const std::vector<Section> order = {section_static,   section_frequencies, section_shapes,
+                                        section_supported, section_single_dof, section_energy,
+                                        section_exact_vs_cvode, section_mesh,   section_loads,
+                                        section_electrostatics};
+    const std::vector<std::size_t> slowest_first = {6, 7, 5, 9, 8, 3, 1, 2, 4, 0};
+    std::vector<std::string> text(order.size());
+    parallel_for(
+        order.size(), resolve_thread_count(o.threads),
+        [&](std::size_t k) { text[slowest_first[k]] = order[slowest_first[k]](shared); }, &stop_flag());
+    check_run();
+    for (const std::string& t : text) s << t;
+    s << section_elsewhere();
     return s.str();
 }
 

@@ -23,6 +23,7 @@ struct ValidationOptions {
     // Called with one line after each step that takes noticeable time (the command prints it on
     // stderr); may be empty.
     std::function<void(const std::string&)> progress;
+    int threads = 0;             // worker threads for the sections (0: every usable CPU)
 };
 
 // docs/validation.md.
