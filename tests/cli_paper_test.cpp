@@ -292,5 +292,27 @@ TEST(CliPaperErrors, BadCaseInExamplesFolderIsBadInputWithFileAndLine) {
     fs::remove_all(tmp);
 }
 
+// With --examples the report says whose choice the unstated parameters are: the case files', not
+// the paper's and not ours.
+TEST(CliPaperExamples, ValuesAreLabelledAsTheFilesChoice) {
+    const fs::path tmp = test::make_temp_dir();
+    for (const char* f : {"cantilever.toml", "free_impact_tip.toml", "free_impact_prestress.toml"}) {
+        fs::copy_file(test::source_path(std::string("examples/paper/") + f), tmp / f);
+    }
+    std::string text = read_text(tmp / "free_impact_tip.toml");
+    const auto pos = text.find("stiffness = \"1000 N/m\"");
+    ASSERT_NE(pos, std::string::npos);
+    text.replace(pos, 22, "stiffness = \"2000 N/m\"");
+    std::ofstream(tmp / "free_impact_tip.toml") << text;
+    const auto r = test::run_vibroimpact({"paper", "--out", (tmp / "out").string(), "--examples", tmp.string(), "--positions",
+                                          "3", "--modal-positions", "3", "--prestress-points", "3", "-q"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string report = read_text(tmp / "out" / "report.md");
+    EXPECT_NE(report.find("The values used are those chosen in the case files of " + tmp.string()), std::string::npos);
+    EXPECT_NE(report.find("| contact stiffness Kc | 2000 N/m |"), std::string::npos);
+    EXPECT_EQ(report.find("The values used are our choice"), std::string::npos);
+    fs::remove_all(tmp);
+}
+
 }  // namespace
 }  // namespace vi
