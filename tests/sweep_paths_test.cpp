@@ -63,11 +63,14 @@ std::string error_of(const std::string& path, const Case& c) {
 TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
     const Case full = full_case();
     const Case alpha = alpha_case();
+    Case by_velocity = full;  // solver.settle_velocity means something only with the velocity rule
+    by_velocity.solver.settle_rule = SolverSettings::SettleRule::velocity;
+    by_velocity.solver.settle_velocity = 1e-3;
     int checked = 0;
     for (const std::string& form : case_path_forms()) {
         std::string text = instance(form);
         const bool needs_alpha = text == "damping.alpha" || text == "damping.beta" || text == "initial.force";
-        const Case& base = needs_alpha ? alpha : full;
+        const Case& base = needs_alpha ? alpha : text == "solver.settle_velocity" ? by_velocity : full;
         if (text.rfind("loads[1].", 0) == 0 && (text.find("frequency") != std::string::npos ||
                                                 text.find("phase") != std::string::npos ||
                                                 text.find("offset") != std::string::npos)) {
@@ -84,7 +87,7 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
         EXPECT_FALSE(case_path_unit(p).empty());
         ++checked;
     }
-    EXPECT_EQ(checked, 54);  // 47, the adhesion keys (3) and the air keys (4)
+    EXPECT_EQ(checked, 55);  // 47, the adhesion keys (3), the air keys (4) and solver.settle_velocity
 }
 
 TEST(SweepCasePaths, ValuesLandWhereTheCaseFileWouldPutThem) {

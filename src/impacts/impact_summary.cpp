@@ -46,7 +46,7 @@ std::vector<Impact> group_episodes(const std::vector<ContactEpisode>& episodes, 
 
 ImpactSummary summarize_impacts(const TransientResult& r, const ImpactSettings& s) {
     ImpactSummary out;
-    out.group_gap = s.group_gap > 0.0 ? s.group_gap : 0.25 * 2.0 * std::numbers::pi / s.omega1;
+    out.group_gap = !s.group ? 0.0 : s.group_gap > 0.0 ? s.group_gap : 0.25 * 2.0 * std::numbers::pi / s.omega1;
     out.impacts = group_episodes(r.episodes, out.group_gap);
     if (out.impacts.empty()) {
         out.Tp_reason = "no_impact";
@@ -68,17 +68,26 @@ ImpactSummary summarize_impacts(const TransientResult& r, const ImpactSettings& 
     if (!out.T1.empty()) out.T1_first = out.T1.front();
     if (!out.T2.empty()) out.T2_first = out.T2.front();
 
-    // T_p: end of the last impact whose peak penetration is still above the settle tolerance.
+    // T_p: end of the last impact still above the settle threshold: its peak penetration against a
+    // fraction of the first impact's, or its approach speed against settle_velocity.
     const double threshold = s.settle_tolerance * out.impacts.front().peak_penetration;
+    const auto big = [&](const Impact& im) {
+        return s.settle_by_velocity ? std::abs(im.v_in) >= s.settle_velocity : im.peak_penetration > threshold;
+    };
     const Impact* last_big = nullptr;
     for (const Impact& im : out.impacts) {
-        if (im.peak_penetration > threshold) last_big = &im;
+        if (big(im)) last_big = &im;
     }
     const Impact& final_impact = out.impacts.back();
     // A bounce lasts a fraction of a period; contact held for a whole first period is lasting.
     const double period1 = 2.0 * std::numbers::pi / s.omega1;
     const bool lasting = final_impact.closed_at_end && final_impact.t_off - final_impact.t_on > period1;
-    if (lasting) {
+    if (last_big == nullptr) {
+        // Only with the velocity rule: no impact came in at settle_velocity, so the process was
+        // settled from the first contact on.
+        out.Tp = out.impacts.front().t_on;
+        out.Tp_reason = "below_threshold";
+    } else if (lasting) {
         // Contact never lost again (prestress, or a beam come to rest on its support): T_p is the
         // onset of that lasting contact, provided the bouncing before it had settled.
         out.Tp = final_impact.t_on;

@@ -11,7 +11,7 @@
 namespace vi {
 
 // One impact in the paper's sense: episodes of one support separated by flights shorter than
-// group_gap. Onset and pre-impact velocity of the first episode, end of the last, largest peaks,
+// group_gap (or each episode alone, without grouping). Onset and pre-impact velocity of the first episode, end of the last, largest peaks,
 // summed impulse.
 struct Impact {
     int support = 0;
@@ -29,6 +29,9 @@ struct ImpactSettings {
     double omega1 = 0.0;             // first circular frequency of the unsupported beam [rad/s]
     double group_gap = 0.0;          // [s]; 0 = a quarter of 2 pi / omega1
     double settle_tolerance = 0.01;  // fraction of the first impact's peak penetration
+    bool group = true;               // false: every contact episode is an impact (no grouping)
+    bool settle_by_velocity = false; // T_p by approach speed |v_in| >= settle_velocity instead
+    double settle_velocity = 0.0;    // [m/s]
     double length = 0.0;             // l [m], for z_max
     double tip_equilibrium = 0.0;    // final static v of the watched point [m]
     double contact_equilibrium = 0.0;  // final static v at support 0 [m]
@@ -41,7 +44,8 @@ struct ImpactSummary {
     std::vector<double> T, T1, T2;      // per cycle [s]
     std::optional<double> T_first, T1_first, T2_first;
     std::optional<double> Tp;           // [s]; empty when the horizon ended first or nothing hit
-    std::string Tp_reason;              // "settled", "persistent_contact", "horizon", "no_impact", "at_rest"
+    std::string Tp_reason;              // "settled", "persistent_contact", "horizon", "no_impact", "at_rest",
+                                        // "below_threshold" (velocity rule: no impact as fast as settle_velocity)
     std::optional<double> y_max, z_max, y_max_contact, tip_min;  // [m], [-], [m], [m]
 };
 

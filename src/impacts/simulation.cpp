@@ -73,6 +73,9 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
     s.omega1 = run.built.omega1;
     s.group_gap = c.solver.group_gap;
     s.settle_tolerance = c.solver.settle_tolerance;
+    s.group = c.solver.grouping == SolverSettings::Grouping::flights;
+    s.settle_by_velocity = c.solver.settle_rule == SolverSettings::SettleRule::velocity;
+    s.settle_velocity = c.solver.settle_velocity;
     s.length = c.beam.length;
     if (p.tip_dof >= 0) s.tip_equilibrium = run.built.q_equilibrium[p.tip_dof];
     if (!contacts.empty()) {

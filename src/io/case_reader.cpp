@@ -254,8 +254,9 @@ PointLoad read_load(const toml::table& t, const std::string& path, Position at, 
 
 void read_solver(const toml::table& t, Position at, Reading& r, SolverSettings& s) {
     FieldReader f(t, "solver", at, r.log,
-                  {"method", "horizon", "output_step", "group_gap", "settle_tolerance", "rtol", "min_search_step",
-                   "max_events", "max_steps", "max_static_iterations", "reduced_modes"});
+                  {"method", "horizon", "output_step", "group_gap", "grouping", "settle_tolerance", "settle_rule",
+                   "settle_velocity", "rtol", "min_search_step", "max_events", "max_steps", "max_static_iterations",
+                   "reduced_modes"});
     if (auto v = f.choice("method", {"auto", "exact", "cvode"}, false)) {
         s.method = *v == "cvode"   ? SolverSettings::Method::cvode
                    : *v == "exact" ? SolverSettings::Method::exact
@@ -272,6 +273,24 @@ void read_solver(const toml::table& t, Position at, Reading& r, SolverSettings& 
     positive_time("output_step", s.output_step);
     if (auto v = f.quantity("group_gap", Dimension::time, false)) s.group_gap = *v;
     if (auto v = f.quantity("settle_tolerance", Dimension::dimensionless, false)) s.settle_tolerance = *v;
+    if (auto v = f.choice("grouping", {"flights", "none"}, false)) {
+        s.grouping = *v == "none" ? SolverSettings::Grouping::none : SolverSettings::Grouping::flights;
+        if (s.grouping == SolverSettings::Grouping::none && f.has("group_gap")) {
+            f.reject("group_gap", "only with solver.grouping = \"flights\" (with \"none\" no episodes are joined)");
+        }
+    }
+    if (auto v = f.choice("settle_rule", {"penetration", "velocity"}, false)) {
+        s.settle_rule = *v == "velocity" ? SolverSettings::SettleRule::velocity : SolverSettings::SettleRule::penetration;
+    }
+    const bool by_velocity = s.settle_rule == SolverSettings::SettleRule::velocity;
+    if (auto v = f.quantity("settle_velocity", Dimension::velocity, by_velocity)) {
+        s.settle_velocity = *v;
+        if (!by_velocity) f.reject("settle_velocity", "only with solver.settle_rule = \"velocity\"");
+        else if (!(*v > 0.0)) r.value_problems.push_back({"solver.settle_velocity", "must be positive"});
+    }
+    if (by_velocity && f.has("settle_tolerance")) {
+        f.reject("settle_tolerance", "only with solver.settle_rule = \"penetration\" (the velocity rule uses settle_velocity)");
+    }
     if (auto v = f.quantity("rtol", Dimension::dimensionless, false)) s.rtol = *v;
     if (auto v = f.quantity("min_search_step", Dimension::dimensionless, false)) s.min_search_step = *v;
     if (auto v = f.integer("max_events", false)) s.max_events = static_cast<long>(*v);

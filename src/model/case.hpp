@@ -170,6 +170,15 @@ struct SolverSettings {
     double group_gap = 0.0;          // flights shorter than this join episodes into one impact [s];
                                      // 0 = a quarter of the first unsupported period
     double settle_tolerance = 0.01;  // impacts below this fraction of the first peak penetration end T_p
+    // How contact episodes form impacts: flights shorter than group_gap join them (the paper's
+    // impacts I, II, III), or none: every episode is an impact of its own.
+    enum class Grouping { flights, none };
+    Grouping grouping = Grouping::flights;
+    // What ends T_p: the last impact whose peak penetration exceeds settle_tolerance times the
+    // first's (penetration), or whose approach speed |v_in| reaches settle_velocity (velocity).
+    enum class SettleRule { penetration, velocity };
+    SettleRule settle_rule = SettleRule::penetration;
+    double settle_velocity = 0.0;    // [m/s], > 0 with settle_rule = velocity
     double rtol = 1e-10;             // CVODE relative tolerance
     // CVODE's basis: 0 = every bending mode (the full FE model); N > 0 = a reduced-order model on the
     // first N unsupported modes plus static corrections at the force elements (docs/model.md §13).

@@ -259,6 +259,9 @@ void check_solver(std::vector<CaseProblem>& out, const SolverSettings& s) {
     if (!(s.settle_tolerance > 0.0 && s.settle_tolerance < 1.0)) {
         out.push_back({"solver.settle_tolerance", "must lie in (0, 1)"});
     }
+    if (s.settle_rule == SolverSettings::SettleRule::velocity && !(s.settle_velocity > 0.0)) {
+        out.push_back({"solver.settle_velocity", "must be positive"});
+    }
     if (!(s.rtol > 0.0 && s.rtol <= 1e-3)) out.push_back({"solver.rtol", "must lie in (0, 1e-3]"});
     // Below 1e-15 periods a step no longer moves the time of a piece (t + h rounds to t).
     if (!(s.min_search_step >= 1e-15 && s.min_search_step <= 1e-3)) {

@@ -104,6 +104,7 @@ void check_values(std::vector<CaseProblem>& out, const Case& c) {
     value(out, "solver.output_step", s.output_step);
     value(out, "solver.group_gap", s.group_gap);
     value(out, "solver.settle_tolerance", s.settle_tolerance);
+    value(out, "solver.settle_velocity", s.settle_velocity);
     value(out, "solver.rtol", s.rtol);
 }
 

@@ -31,6 +31,17 @@ struct FieldSpec {
 
 const char* always(const Case&, std::size_t) { return nullptr; }
 
+const char* needs_grouping(const Case& c, std::size_t) {
+    return c.solver.grouping == SolverSettings::Grouping::flights ? nullptr : "the case sets solver.grouping = \"none\"";
+}
+const char* needs_penetration_rule(const Case& c, std::size_t) {
+    return c.solver.settle_rule == SolverSettings::SettleRule::penetration ? nullptr
+                                                                           : "the case sets solver.settle_rule = \"velocity\"";
+}
+const char* needs_velocity_rule(const Case& c, std::size_t) {
+    return c.solver.settle_rule == SolverSettings::SettleRule::velocity ? nullptr
+                                                                        : "only with solver.settle_rule = \"velocity\"";
+}
 const char* needs_ratios(const Case& c, std::size_t) {
     return c.damping.from_ratios ? nullptr : "the case gives no damping.ratios (add them to the case file to sweep them)";
 }
@@ -163,9 +174,11 @@ const FieldSpec kFields[] = {
      VI_SET(c.air->mean_free_path = v), needs_air},
     {"solver", "horizon", "s", false, false, VI_GET(c.solver.horizon), VI_SET(c.solver.horizon = v), always},
     {"solver", "output_step", "s", false, false, VI_GET(c.solver.output_step), VI_SET(c.solver.output_step = v), always},
-    {"solver", "group_gap", "s", false, false, VI_GET(c.solver.group_gap), VI_SET(c.solver.group_gap = v), always},
+    {"solver", "group_gap", "s", false, false, VI_GET(c.solver.group_gap), VI_SET(c.solver.group_gap = v), needs_grouping},
     {"solver", "settle_tolerance", "-", false, false, VI_GET(c.solver.settle_tolerance),
-     VI_SET(c.solver.settle_tolerance = v), always},
+     VI_SET(c.solver.settle_tolerance = v), needs_penetration_rule},
+    {"solver", "settle_velocity", "m/s", false, false, VI_GET(c.solver.settle_velocity),
+     VI_SET(c.solver.settle_velocity = v), needs_velocity_rule},
     {"solver", "rtol", "-", false, false, VI_GET(c.solver.rtol), VI_SET(c.solver.rtol = v), always},
     {"solver", "min_search_step", "periods", false, false, VI_GET(c.solver.min_search_step),
      VI_SET(c.solver.min_search_step = v), always},
