@@ -116,7 +116,7 @@ void CliPaper::check_files() {
         EXPECT_FALSE(csv.header.empty()) << stem;
         EXPECT_FALSE(csv.rows.empty()) << stem;
     }
-    for (const char* extra : {"fig2_points.csv", "fig3_impacts.csv", "report.html", "report.md", "claims.json"}) {
+    for (const char* extra : {"fig2_points.csv", "fig3_impacts.csv", "fig7_lines.csv", "report.html", "report.md", "claims.json"}) {
         EXPECT_TRUE(fs::is_regular_file(dir() / extra)) << extra;
     }
     // Nothing but those: no temporary or partial files left behind.
@@ -130,7 +130,10 @@ void CliPaper::check_report() {
     // Self-contained: nothing to fetch, from the network or from beside the file, to render the page.
     EXPECT_EQ(count(html, "src=\"http"), 0u);
     EXPECT_EQ(count(html, "<link"), 0u);
-    EXPECT_EQ(count(html, "<script"), 0u);
+    // Scripts only inline: each figure's chart data, the page script and the vendored uPlot.
+    EXPECT_EQ(count(html, "<script src"), 0u);
+    EXPECT_EQ(count(html, "<script type=\"application/json\" class=\"vi-chart-data\">"), 10u);
+    EXPECT_EQ(count(html, "<script"), 12u);
     EXPECT_EQ(count(html, "src=\"") , count(html, "src=\"data:"));
     const json c = claims();
     ASSERT_GE(c.size(), 15u);

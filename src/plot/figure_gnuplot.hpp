@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include "plot/chart_spec.hpp"
+
 namespace vi {
 
 // One figure. The plot commands name their data files as they are named here, relative to the
@@ -20,6 +22,7 @@ struct FigureSpec {
     std::string plot;     // gnuplot commands
     int width = 1000;     // [px]
     int height = 620;     // [px]
+    std::vector<ChartPanel> charts;  // the interactive form in report.html; empty: the PNG only
 };
 
 // What rendering produced for one figure.

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "plot/base64.hpp"
+#include "plot/report_assets.hpp"
 
 namespace vi {
 namespace {
@@ -80,6 +81,20 @@ code { font-family: "DejaVu Sans Mono", monospace; font-size: 0.92em; background
 .files { font-size: 0.85em; color: #555; }
 )css";
 
+// The interactive figures: the chart replaces the PNG on screen once drawn (a button shows it again);
+// on paper the PNG, which also carries gnuplot's annotations.
+constexpr const char* kChartStyle = R"css(
+.vi-chart { margin: 0.4em 0; }
+.vi-panel { margin-bottom: 0.6em; }
+.vi-chart .u-title { font-size: 0.95em; font-weight: normal; }
+.vi-chart .u-legend { font-size: 0.82em; width: auto; margin: 0 auto; }
+.vi-chart .u-legend th, .vi-chart .u-legend td { border: none; background: none !important; padding: 0 0.3em; }
+.vi-toggle { font-size: 0.8em; margin: 0.2em 0 0.6em 0; }
+figure.vi-drawn:not(.vi-show-png) img.vi-png { display: none; }
+#vi-errors { display: none; }
+@media print { .vi-chart { display: none; } figure img.vi-png { display: block !important; } }
+)css";
+
 }  // namespace
 
 void ReportDocument::heading(int level, std::string text, std::string id) {
@@ -124,11 +139,15 @@ void ReportDocument::figure(std::string stem, std::string title, std::string cap
     blocks.push_back(std::move(b));
 }
 
-std::string render_html(const ReportDocument& doc, const std::map<std::string, std::string>& png) {
+std::string render_html(const ReportDocument& doc, const std::map<std::string, std::string>& png,
+                        const std::map<std::string, std::string>& charts) {
+    const bool interactive = !charts.empty();
     std::ostringstream s;
     s << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" << escape_html(doc.title)
-      << "</title>\n<style>" << kStyle << "</style>\n</head>\n<body>\n";
+      << "</title>\n<style>" << kStyle;
+    if (interactive) s << kChartStyle << "</style>\n<style>" << report_asset("uPlot.min.css");
+    s << "</style>\n</head>\n<body>\n";
     for (const ReportBlock& b : doc.blocks) {
         const std::string id = b.id.empty() ? "" : " id=\"" + escape_html(b.id) + "\"";
         switch (b.kind) {
@@ -158,14 +177,26 @@ std::string render_html(const ReportDocument& doc, const std::map<std::string, s
             case ReportBlock::Kind::figure: {
                 const auto it = png.find(b.figure);
                 if (it == png.end()) throw std::invalid_argument("report: no image for figure " + b.figure);
-                s << "<figure" << id << ">\n<h3>" << inline_html(b.text) << "</h3>\n<img alt=\"" << escape_html(b.text)
-                  << "\" src=\"data:image/png;base64," << base64_encode(it->second) << "\">\n<figcaption>"
+                s << "<figure" << id << ">\n<h3>" << inline_html(b.text) << "</h3>\n";
+                const auto chart = charts.find(b.figure);
+                if (chart != charts.end()) {
+                    // chart_json escapes '<', so the JSON cannot close this element early.
+                    s << "<div class=\"vi-chart\"></div>\n<script type=\"application/json\" class=\"vi-chart-data\">"
+                      << chart->second << "</script>\n";
+                }
+                s << "<img class=\"vi-png\" alt=\"" << escape_html(b.text) << "\" src=\"data:image/png;base64,"
+                  << base64_encode(it->second) << "\">\n<figcaption>"
                   << inline_html(b.caption) << "</figcaption>\n<p class=\"files\">Files beside this report:";
                 for (const std::string& f : b.items) s << " <a href=\"" << escape_html(f) << "\">" << escape_html(f) << "</a>";
                 s << "</p>\n</figure>\n";
                 break;
             }
         }
+    }
+    if (interactive) {
+        // The page script first, so that it records an error in uPlot's script too.
+        s << "<pre id=\"vi-errors\"></pre>\n<script>\n" << report_asset("report_charts.js") << "</script>\n<script>\n"
+          << report_asset("uPlot.iife.min.js") << "</script>\n";
     }
     s << "</body>\n</html>\n";
     return s.str();

@@ -1,6 +1,6 @@
 #pragma once
 // A report as a list of blocks (headings, paragraphs, lists, tables, figures), rendered to one
-// self-contained HTML page (images embedded) or to Markdown (images linked beside it).
+// self-contained HTML page (images embedded, figures optionally interactive) or to Markdown (images linked beside it).
 
 #include <map>
 #include <string>
@@ -34,8 +34,12 @@ struct ReportDocument {
 };
 
 // The whole page: inline CSS, figures as PNG data URIs from `png` (file stem -> bytes); a figure
-// without its PNG is an error (std::invalid_argument). Opens offline in any browser.
-std::string render_html(const ReportDocument& doc, const std::map<std::string, std::string>& png);
+// without its PNG is an error (std::invalid_argument). Opens offline in any browser. A figure with an
+// entry in `charts` (file stem -> chart_json text, plot/chart_json.hpp) is also drawn interactively by
+// the inlined uPlot and page script (plot/report_assets.hpp), its PNG then shown on request and in
+// print; without `charts` the page has no script.
+std::string render_html(const ReportDocument& doc, const std::map<std::string, std::string>& png,
+                        const std::map<std::string, std::string>& charts = {});
 
 // Markdown (GitHub flavour): figures as links to <stem>.png beside the file.
 std::string render_markdown(const ReportDocument& doc);

@@ -20,6 +20,33 @@ std::string particular_points() {
     return s;
 }
 
+std::string color(int i) {
+    std::vector<std::string> words;
+    std::string w;
+    for (const char* c = kColors;; ++c) {
+        if (*c == ' ' || *c == '\0') {
+            if (!w.empty()) words.push_back(w);
+            w.clear();
+            if (*c == '\0') break;
+        } else {
+            w += *c;
+        }
+    }
+    return words[static_cast<std::size_t>(i - 1) % words.size()];
+}
+
+ChartSeries series(std::string label, std::string x, std::string y, ChartSeries::Style style, std::string colour) {
+    ChartSeries s;
+    s.label = std::move(label);
+    s.x = std::move(x);
+    s.y = std::move(y);
+    s.style = style;
+    s.color = std::move(colour);
+    return s;
+}
+
+std::vector<double> particular_marks() { return {0.67, 0.78, 0.87}; }
+
 std::string scan_xrange(const PaperStudy& st) {
     return "set xrange [" + num(st.options.position_min - 0.02, 4) + ":1]\n";
 }

@@ -19,6 +19,14 @@ namespace figure_detail {
 inline constexpr const char* kColors = "#1f77b4 #d62728 #2ca02c #9467bd #ff7f0e";
 std::string colors_command();
 
+// The i-th of kColors (from 1, cycling), for the interactive charts.
+std::string color(int i);
+// One interactive series: column y against column x of the figure's first CSV.
+ChartSeries series(std::string label, std::string x, std::string y, ChartSeries::Style style = ChartSeries::Style::lines,
+                   std::string colour = "");
+// The paper's particular points x0/l = 0.67, 0.78, 0.87, as dashed lines of a chart.
+std::vector<double> particular_marks();
+
 // Vertical dashed lines at the paper's particular points x0/l = 0.67, 0.78, 0.87, labelled at the top.
 std::string particular_points();
 // The x range of the support-position transient scans.

@@ -42,7 +42,16 @@ FigureSpec fig9(const PaperStudy& st) {
                           num(st.options.cases.prestress.initial.displacement * 1e6, 3) +
                           " um above that equilibrium and released. The CSV also gives the equilibrium z_equilibrium (about Delta/l: "
                           "the paper's diagonal) and the highest point z_top above the unloaded axis." + failures(s);
-    return {"fig9", "Fig. 9: rebound against prestress", caption, {{"fig9.csv", t.str()}}, p.str(), 1000, 620};
+    FigureSpec fig{"fig9", "Fig. 9: rebound against prestress", caption, {{"fig9.csv", t.str()}}, p.str(), 1000, 620, {}};
+    ChartPanel c;
+    c.x_label = "prestress Δ/l [-]";
+    c.y_label = "z_max = y_max/l above the equilibrium [10⁻³]";
+    c.x_marks = {0.01};  // the paper's point B
+    ChartSeries z = series("z_max", "delta_over_l", "z_max", ChartSeries::Style::linespoints, "#1f77b4");
+    z.y_scale = 1e3;
+    c.series.push_back(z);
+    fig.charts.push_back(c);
+    return fig;
 }
 
 FigureSpec fig10(const PaperStudy& st) {
@@ -74,8 +83,29 @@ FigureSpec fig10(const PaperStudy& st) {
                           "(dashed, right axis) as the support moves; episodes closer than a quarter of the first period form one "
                           "impact, whose force is the largest of its episodes.";
     if (!st.position_scans.empty()) caption += failures(st.position_scans.front());
-    return {"fig10", "Fig. 10: impact velocity and contact force against support position", caption, {{"fig10.csv", t.str()}},
-            p.str(), 1000, 620};
+    FigureSpec fig{"fig10", "Fig. 10: impact velocity and contact force against support position", caption, {{"fig10.csv", t.str()}},
+                   p.str(), 1000, 620, {}};
+    ChartPanel c;
+    c.x_label = "support position x0/l [-]";
+    c.y_label = "pre-impact velocity |v_in| [m/s]";
+    c.y2_label = "peak contact force P [μN]";
+    c.x_marks = particular_marks();
+    const char* roman[] = {"I", "II", "III"};
+    for (int i = 1; i <= 3; ++i) {
+        ChartSeries v = series(std::string("|v_in|, impact ") + roman[i - 1], "x0_over_l", "v_in_" + std::to_string(i) + "_m_s",
+                               ChartSeries::Style::linespoints, color(i));
+        v.abs_y = true;
+        c.series.push_back(v);
+    }
+    for (int i = 1; i <= 3; ++i) {
+        ChartSeries f = series(std::string("P, impact ") + roman[i - 1], "x0_over_l", "peak_force_" + std::to_string(i) + "_uN",
+                               ChartSeries::Style::lines, color(i));
+        f.dashed = true;
+        f.right_axis = true;
+        c.series.push_back(f);
+    }
+    fig.charts.push_back(c);
+    return fig;
 }
 
 FigureSpec fig11(const PaperStudy& st) {
@@ -105,7 +135,18 @@ FigureSpec fig11(const PaperStudy& st) {
     }
     p << "\n";
     caption += "; sampled every 2.5 ns. Top axis: the same time made dimensionless with the first free frequency.";
-    return {"fig11", "Fig. 11: contact force during an impact", caption, {{"fig11.csv", t.str()}}, p.str(), 1000, 620};
+    FigureSpec fig{"fig11", "Fig. 11: contact force during an impact", caption, {{"fig11.csv", t.str()}}, p.str(), 1000, 620, {}};
+    ChartPanel c;
+    c.x_label = "time since the onset of the impact t [μs]";
+    c.y_label = "contact force P [μN]";
+    for (std::size_t k = 0; k < st.forces.size(); ++k) {
+        const ImpactForce& f = st.forces[k];
+        ChartSeries s = series("x0/l = " + num(f.x0, 4), "t_us", "force_uN", ChartSeries::Style::lines, color(static_cast<int>(k) + 1));
+        s.where = {{"x0_over_l", cell(f.x0)}};
+        c.series.push_back(s);
+    }
+    fig.charts.push_back(c);
+    return fig;
 }
 
 }  // namespace vi::figure_detail

@@ -118,8 +118,28 @@ FigureSpec fig3(const PaperStudy& st) {
                        " us, T2 = " + (s.T2_first ? us(*s.T2_first) : "n/a") + " us; T_p = " + (s.Tp ? us(*s.Tp) + " us (" + s.Tp_reason + ")" : "not reached (" + s.Tp_reason + ")") +
                        "; " + std::to_string(s.impacts.size()) + " impacts. The paper gives T = 5.1 us (see the claims). Sampled every " +
                        num(t.output_step * 1e9, 3) + " ns; events and y_max are located exactly, not sampled.";
-    return {"fig3", "Fig. 3: a typical free impact transient", text,
-            {{"fig3.csv", h.str()}, {"fig3_impacts.csv", im.str()}}, p.str(), 1100, 900};
+    FigureSpec fig{"fig3", "Fig. 3: a typical free impact transient", text,
+                   {{"fig3.csv", h.str()}, {"fig3_impacts.csv", im.str()}}, p.str(), 1100, 900, {}};
+    // (a) the whole transient, (b) the first cycles; grey: in contact; dashed: T_p.
+    for (const bool first_cycles : {false, true}) {
+        ChartPanel c;
+        c.title = first_cycles ? "(b) the first cycles (double-click: the whole transient)" : "(a) the whole transient";
+        c.x_label = "t [μs]";
+        c.y_label = "free-end displacement y [nm]";
+        for (const Impact& a : s.impacts) c.x_bands.emplace_back(a.t_on * 1e6, a.t_off * 1e6);
+        if (s.Tp) c.x_marks.push_back(*s.Tp * 1e6);
+        if (first_cycles && s.impacts.size() >= 2) {
+            const Impact& a = s.impacts[0];
+            const Impact& b = s.impacts[1];
+            c.x_min = 0.0;
+            c.x_max = std::min(b.t_off + 0.6 * (b.t_on - a.t_on), t.t.empty() ? b.t_off : t.t.back()) * 1e6;
+        } else if (first_cycles) {
+            continue;
+        }
+        c.series.push_back(series("free end", "t_us", "tip_nm", ChartSeries::Style::lines, "#1f77b4"));
+        fig.charts.push_back(c);
+    }
+    return fig;
 }
 
 FigureSpec fig4(const PaperStudy& st) {
@@ -161,7 +181,25 @@ FigureSpec fig4(const PaperStudy& st) {
                           num(st.typical.y0 * 1e6, 4) + " um at the free end, zero gap, Kc and Cc fixed. " +
                           std::to_string(n) + " positions per mesh.";
     for (const TransientScan& s : st.position_scans) caption += failures(s);
-    return {"fig4", "Fig. 4: rebound against support position", caption, {{"fig4.csv", t.str()}}, p.str(), 1000, 620};
+    FigureSpec fig{"fig4", "Fig. 4: rebound against support position", caption, {{"fig4.csv", t.str()}}, p.str(), 1000, 620, {}};
+    ChartPanel c;
+    c.x_label = "support position x0/l [-]";
+    c.y_label = "z = y/l [10⁻³]";
+    c.x_marks = particular_marks();
+    for (std::size_t k = 0; k < st.position_scans.size(); ++k) {
+        const std::string m = std::to_string(st.position_scans[k].elements);
+        const int kk = static_cast<int>(k);
+        for (const bool during : {false, true}) {
+            ChartSeries s = series(during ? "free end during impact, m = " + m : "z_max, m = " + m, "x0_over_l",
+                                   (during ? "z_min_m" : "z_max_m") + m,
+                                   k == 0 ? ChartSeries::Style::linespoints : ChartSeries::Style::lines, color(kk + (during ? 3 : 1)));
+            s.y_scale = 1e3;
+            s.dashed = k > 0;
+            c.series.push_back(s);
+        }
+    }
+    fig.charts.push_back(c);
+    return fig;
 }
 
 FigureSpec fig5(const PaperStudy& st) {
@@ -220,7 +258,33 @@ FigureSpec fig5(const PaperStudy& st) {
                    std::to_string(s.elements) + ",";
     }
     caption.back() = '.';
-    return {"fig5", "Fig. 5: temporal characteristics against support position", caption, {{"fig5.csv", t.str()}}, p.str(), 1000, 900};
+    FigureSpec fig{"fig5", "Fig. 5: temporal characteristics against support position", caption, {{"fig5.csv", t.str()}}, p.str(),
+                   1000, 900, {}};
+    ChartPanel a;
+    a.title = "(a) duration of the transient (gaps: not settled within the horizon)";
+    a.x_label = "support position x0/l [-]";
+    a.y_label = "τ_p = ω_1 T_p [-]";
+    a.x_marks = particular_marks();
+    for (std::size_t k = 0; k < ns; ++k) {
+        const std::string m = std::to_string(st.position_scans[k].elements);
+        ChartSeries s = series("τ_p, m = " + m, "x0_over_l", "tau_p_m" + m, ChartSeries::Style::linespoints, color(static_cast<int>(k) + 1));
+        s.dashed = k > 0;
+        a.series.push_back(s);
+    }
+    fig.charts.push_back(a);
+    if (ns) {
+        const std::string m = std::to_string(st.position_scans.front().elements);
+        ChartPanel b;
+        b.title = "(b) period τ, flight τ_1 and impact τ_2 of the first cycle, m = " + m;
+        b.x_label = a.x_label;
+        b.y_label = "τ, τ_1, τ_2 [-]";
+        b.x_marks = particular_marks();
+        b.series = {series("τ", "x0_over_l", "tau_m" + m, ChartSeries::Style::linespoints, color(3)),
+                    series("τ_1", "x0_over_l", "tau1_m" + m, ChartSeries::Style::linespoints, color(4)),
+                    series("τ_2", "x0_over_l", "tau2_m" + m, ChartSeries::Style::linespoints, color(5))};
+        fig.charts.push_back(b);
+    }
+    return fig;
 }
 
 }  // namespace vi::figure_detail

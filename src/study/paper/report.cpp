@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "plot/chart_json.hpp"
 #include "study/paper/study.hpp"
 #include "study/paper/figures.hpp"
 
@@ -57,7 +58,10 @@ void figures(ReportDocument& d, const std::vector<FigureSpec>& figs) {
     d.paragraph("Each figure as drawn by gnuplot from the CSV beside it (numbered as in the paper; the paper's Fig. 1 is its "
                 "sketch of the model). SVG versions and the gnuplot scripts that redraw them are in the same folder. In the "
                 "CSVs `nan` marks a value the run does not define (a transient that had not settled by the end of its horizon "
-                "has no T_p), and the status columns say why.");
+                "has no T_p), and the status columns say why. In a browser each figure is drawn from the same data as an "
+                "interactive chart: drag to zoom (double-click to zoom out), hover for values, click a legend entry to hide "
+                "or show its curves; the button under a chart shows gnuplot's drawing, which also carries the annotations "
+                "(and is what prints).");
     for (const FigureSpec& f : figs) {
         std::vector<std::string> files{f.name + ".svg"};
         for (const auto& dat : f.data) files.push_back(dat.first);
@@ -169,7 +173,7 @@ OutputFiles paper_output_files(const PaperStudy& st, const std::vector<Claim>& c
     std::map<std::string, std::string> png;
     OutputFiles files = figure_files(figs, rendered, &png);
     const ReportDocument doc = paper_report(st, claims, figs, run);
-    files["report.html"] = render_html(doc, png);
+    files["report.html"] = render_html(doc, png, figure_charts(figs));
     files["report.md"] = render_markdown(doc);
     files["claims.json"] = claims_json(claims);
     return files;

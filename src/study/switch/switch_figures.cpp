@@ -26,6 +26,16 @@ std::string branch_csv(const PullinResult& r) {
     return t.str();
 }
 
+ChartSeries chart_series(std::string label, std::string x, std::string y, std::string colour, bool dashed) {
+    ChartSeries c;
+    c.label = std::move(label);
+    c.x = std::move(x);
+    c.y = std::move(y);
+    c.color = std::move(colour);
+    c.dashed = dashed;
+    return c;
+}
+
 std::string marker(int id, const char* what, const PullinPoint& p, double x_um, const char* colour) {
     std::ostringstream s;
     s << "set label " << id << " sprintf('" << what << " %.2f V', " << p.voltage << ") at first " << x_um << ", first "
@@ -52,6 +62,12 @@ FigureSpec pullin_figure(const SwitchStudy& s) {
     p << "plot 'switch_pullin.csv' using 1:3 with lines lw 2 lc rgb '#1f77b4' title 'stable', "
          "'' using 1:4 with lines lw 2 dt 2 lc rgb '#ff7f0e' title 'unstable'\n";
     f.plot = p.str();
+    ChartPanel c;
+    c.x_label = "travel of the watched point toward the electrode [μm]";
+    c.y_label = "voltage [V]";
+    c.series = {chart_series("stable", "watched_travel_um", "voltage_stable_V", "#1f77b4", false),
+                chart_series("unstable", "watched_travel_um", "voltage_unstable_V", "#ff7f0e", true)};
+    f.charts = {c};
     return f;
 }
 
@@ -65,6 +81,12 @@ FigureSpec cv_figure(const SwitchStudy& s) {
     f.plot = std::string(kGrid) + "set xlabel 'voltage  [V]'\nset ylabel 'capacitance  [fF]'\n"
              "plot 'switch_cv.csv' using 3:5 with lines lw 2 lc rgb '#1f77b4' title 'stable', "
              "'' using 4:5 with lines lw 2 dt 2 lc rgb '#ff7f0e' title 'unstable'\n";
+    ChartPanel c;
+    c.x_label = "voltage [V]";
+    c.y_label = "capacitance [fF]";
+    c.series = {chart_series("stable", "voltage_stable_V", "capacitance_fF", "#1f77b4", false),
+                chart_series("unstable", "voltage_unstable_V", "capacitance_fF", "#ff7f0e", true)};
+    f.charts = {c};
     return f;
 }
 
@@ -106,6 +128,16 @@ FigureSpec fv_figure(const SwitchStudy& s) {
         p << "\n";
     }
     f.plot = p.str();
+    ChartPanel c;
+    c.x_label = "DC bias [V]";
+    c.y_label = "frequency [kHz]";
+    c.log_y = true;
+    for (std::size_t k = 0; k < modes; ++k) {
+        ChartSeries m = chart_series("f_" + std::to_string(k + 1), "voltage_V", t.header[k + 1], "", false);
+        m.style = ChartSeries::Style::linespoints;
+        c.series.push_back(m);
+    }
+    f.charts = {c};
     return f;
 }
 
@@ -143,6 +175,22 @@ FigureSpec transient_figure(const SwitchStudy& s) {
          "set title '(b) contact force'\nset ylabel 'force  [μN]'\n"
          "plot 'switch_transient.csv' using 1:3 with lines lw 1.5 lc rgb '#d62728' notitle\nunset multiplot\n";
     f.plot = p.str();
+    ChartPanel a;
+    a.title = "(a) watched point (x/l = " + cell(s.pullin.watched_x) + ") and voltage; grey: in contact";
+    a.x_label = "t [μs]";
+    a.y_label = "displacement [μm]";
+    a.y2_label = "voltage [V]";
+    for (const ContactEpisode& c : s.transient.result.episodes) a.x_bands.emplace_back(c.t_on * 1e6, c.t_off * 1e6);
+    ChartSeries v = chart_series("voltage", "t_us", "voltage_V", "#7f7f7f", true);
+    v.right_axis = true;
+    a.series = {chart_series("displacement", "t_us", "watched_um", "#1f77b4", false), v};
+    ChartPanel b;
+    b.title = "(b) contact force";
+    b.x_label = a.x_label;
+    b.y_label = "force [μN]";
+    b.x_bands = a.x_bands;
+    b.series = {chart_series("contact force", "t_us", "contact_force_uN", "#d62728", false)};
+    f.charts = {a, b};
     return f;
 }
 

@@ -8,6 +8,7 @@
 
 #include "model/input_error.hpp"
 #include "model/run_control.hpp"
+#include "plot/chart_json.hpp"
 #include "report/csv_text.hpp"
 #include "report/pullin_output.hpp"
 #include "report/transient_output.hpp"
@@ -140,7 +141,7 @@ OutputFiles switch_report_files(const SwitchStudy& s, const std::vector<FigureSp
             if (b.kind == ReportBlock::Kind::figure && b.figure == f.name) b.caption = f.caption;
         }
     }
-    files["report.html"] = render_html(doc, png);
+    files["report.html"] = render_html(doc, png, figure_charts(figures));
     files["report.md"] = render_markdown(doc);
     return files;
 }

@@ -1,0 +1,212 @@
+// report.html's page script: draws each figure's interactive charts with uPlot from the JSON beside
+// it (plot/chart_json.hpp), and records what happened on the page for the browser test
+// (tests/browser/check_report.sh): each figure element gets data-drawn="1" once every panel of it has
+// been drawn, the body element gets data-vi-figures / data-vi-drawn (counts) and data-vi-errors
+// (errors and console.error calls; their text in the element #vi-errors). Runs before uPlot's own
+// script, so that an error there is recorded too; draws on DOMContentLoaded. Writes nothing to the
+// console itself but what it forwards from console.error.
+(function () {
+  'use strict';
+
+  var errors = [];
+  function note(text) {
+    errors.push(String(text));
+    if (document.body) {
+      document.body.setAttribute('data-vi-errors', String(errors.length));
+      var pre = document.getElementById('vi-errors');
+      if (pre) pre.textContent = errors.join('\n');
+    }
+  }
+  window.addEventListener('error', function (e) { note('error: ' + (e.message || e)); });
+  window.addEventListener('unhandledrejection', function (e) { note('unhandled rejection: ' + e.reason); });
+  var consoleError = console.error;
+  console.error = function () {
+    note('console.error: ' + Array.prototype.join.call(arguments, ' '));
+    return consoleError.apply(console, arguments);
+  };
+
+  // The gnuplot figures' colours first (figures.hpp kColors), then more.
+  var palette = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e', '#8c564b', '#e377c2', '#7f7f7f', '#bcbd22', '#17becf'];
+  var panelHeight = 380;   // [CSS px] of the plotting area and axes, without title and legend
+
+  function fmt(v) {
+    if (v === null || v === undefined || !isFinite(v)) return '–';
+    var a = Math.abs(v);
+    return (a !== 0 && (a < 1e-3 || a >= 1e6)) ? v.toExponential(4) : String(Number(v.toPrecision(5)));
+  }
+
+  // A tick label; a log axis passes null for the ticks it leaves unlabelled.
+  function tick(v) { return v === null || v === undefined ? '' : fmt(v); }
+
+  // Width of a y axis: room for its longest tick label and the axis label.
+  function axisSize(u, values) {
+    var longest = 0;
+    (values || []).forEach(function (s) { longest = Math.max(longest, String(s).length); });
+    return Math.max(50, 7 * longest + 30);
+  }
+
+  // Dashed vertical lines (marks) on top, shaded x intervals (bands) below the curves.
+  function xDecor(panel, marks) {
+    return function (u) {
+      var list = marks ? panel.marks : panel.bands;
+      if (!list.length) return;
+      var ctx = u.ctx, top = u.bbox.top, h = u.bbox.height;
+      ctx.save();
+      ctx.beginPath();
+      ctx.rect(u.bbox.left, top, u.bbox.width, h);
+      ctx.clip();
+      if (marks) {
+        ctx.strokeStyle = '#777';
+        ctx.lineWidth = uPlot.pxRatio;
+        ctx.setLineDash([5 * uPlot.pxRatio, 4 * uPlot.pxRatio]);
+        list.forEach(function (x) {
+          var px = Math.round(u.valToPos(x, 'x', true));
+          ctx.beginPath();
+          ctx.moveTo(px, top);
+          ctx.lineTo(px, top + h);
+          ctx.stroke();
+        });
+      } else {
+        ctx.fillStyle = 'rgba(0, 0, 0, 0.08)';
+        list.forEach(function (b) {
+          var x0 = u.valToPos(b[0], 'x', true), x1 = u.valToPos(b[1], 'x', true);
+          ctx.fillRect(x0, top, Math.max(1, x1 - x0), h);
+        });
+      }
+      ctx.restore();
+    };
+  }
+
+  // One uPlot chart for one panel; calls `drawn` after its first complete draw.
+  function drawPanel(panel, box, width, drawn) {
+    var tables = [], series = [{ label: panel.xLabel || 'x', value: function (u, v) { return fmt(v); } }];
+    var groupColor = {}, groupFirst = {}, groupOf = [null], next = 0, points = 0;
+    panel.series.forEach(function (s, k) {
+      tables.push([s.x, s.y]);
+      s.y.forEach(function (v) { if (v !== null) points++; });
+      var color = s.color || (s.group && groupColor[s.group]) || palette[next++ % palette.length];
+      if (s.group && !groupColor[s.group]) groupColor[s.group] = color;
+      var onlyPoints = s.style === 'points';
+      var opt = {
+        label: s.label,
+        stroke: color,
+        width: onlyPoints ? 0 : 1.6,
+        scale: s.right ? 'y2' : 'y',
+        value: function (u, v) { return fmt(v); },
+        points: { show: s.style !== 'lines', size: 4.5, width: 1, stroke: color, fill: color }
+      };
+      if (onlyPoints) opt.paths = function () { return null; };
+      if (s.dash) opt.dash = [8, 5];
+      series.push(opt);
+      groupOf.push(s.group || null);
+      if (s.group && groupFirst[s.group] === undefined) groupFirst[s.group] = k + 1;
+    });
+    if (tables.length === 0) throw new Error('a panel without series');
+    var data = uPlot.join(tables);
+    var axes = [
+      { label: panel.xLabel, values: function (u, splits) { return splits.map(tick); } },
+      { label: panel.yLabel, size: axisSize, values: function (u, splits) { return splits.map(tick); } }
+    ];
+    var scales = { x: { time: false }, y: {} };
+    if (panel.logX) { scales.x.distr = 3; scales.x.log = 10; }
+    if (panel.logY) { scales.y.distr = 3; scales.y.log = 10; }
+    if (panel.y2Label) {
+      scales.y2 = {};
+      axes.push({ scale: 'y2', side: 1, label: panel.y2Label, size: axisSize, grid: { show: false },
+                  values: function (u, splits) { return splits.map(tick); } });
+    }
+    var first = true, syncing = false;
+    var opts = {
+      title: panel.title || undefined,
+      width: width,
+      height: panelHeight,
+      scales: scales,
+      axes: axes,
+      series: series,
+      cursor: { drag: { x: true, y: true, uni: 40 } },
+      hooks: {
+        drawClear: [xDecor(panel, false)],
+        draw: [xDecor(panel, true), function () { if (first) { first = false; drawn(points); } }],
+        // Series of one group share a legend entry: showing or hiding it applies to all of them.
+        setSeries: [function (u, idx, o) {
+          if (syncing || !o || o.show === undefined || !groupOf[idx]) return;
+          syncing = true;
+          for (var i = 1; i < groupOf.length; i++) {
+            if (i !== idx && groupOf[i] === groupOf[idx]) u.setSeries(i, { show: o.show });
+          }
+          syncing = false;
+        }]
+      }
+    };
+    var u = new uPlot(opts, data, box);
+    var rows = u.root.querySelectorAll('.u-legend .u-series');
+    for (var i = 1; i < groupOf.length; i++) {
+      if (groupOf[i] && groupFirst[groupOf[i]] !== i && rows[i]) rows[i].style.display = 'none';
+    }
+    if (panel.xMin !== null || panel.xMax !== null) {
+      var x = data[0];
+      u.setScale('x', { min: panel.xMin !== null ? panel.xMin : x[0], max: panel.xMax !== null ? panel.xMax : x[x.length - 1] });
+    }
+    return u;
+  }
+
+  function drawFigure(fig, plots) {
+    var source = fig.querySelector('script.vi-chart-data');
+    var box = fig.querySelector('div.vi-chart');
+    var spec = JSON.parse(source.textContent);
+    var pending = spec.panels.length, total = 0;
+    var width = Math.max(320, box.clientWidth || fig.clientWidth || 900);
+    spec.panels.forEach(function (panel) {
+      var holder = document.createElement('div');
+      holder.className = 'vi-panel';
+      box.appendChild(holder);
+      plots.push(drawPanel(panel, holder, width, function (points) {
+        total += points;
+        if (--pending === 0) {
+          fig.setAttribute('data-drawn', '1');
+          fig.setAttribute('data-points', String(total));
+          fig.classList.add('vi-drawn');
+          var done = document.querySelectorAll('figure[data-drawn="1"]').length;
+          document.body.setAttribute('data-vi-drawn', String(done));
+        }
+      }));
+    });
+    var toggle = document.createElement('button');
+    toggle.type = 'button';
+    toggle.className = 'vi-toggle';
+    toggle.textContent = 'gnuplot drawing (PNG)';
+    toggle.addEventListener('click', function () { fig.classList.toggle('vi-show-png'); });
+    box.appendChild(toggle);
+  }
+
+  function start() {
+    var body = document.body;
+    var figures = document.querySelectorAll('figure');
+    body.setAttribute('data-vi-figures', String(figures.length));
+    body.setAttribute('data-vi-drawn', '0');
+    body.setAttribute('data-vi-errors', String(errors.length));
+    if (typeof uPlot === 'undefined') { note('uPlot did not load'); return; }
+    var plots = [];
+    Array.prototype.forEach.call(figures, function (fig) {
+      if (!fig.querySelector('script.vi-chart-data')) return;   // a figure without charts: its PNG alone
+      try {
+        drawFigure(fig, plots);
+      } catch (e) {
+        note('figure ' + fig.id + ': ' + e);
+      }
+    });
+    var timer = null;
+    window.addEventListener('resize', function () {
+      clearTimeout(timer);
+      timer = setTimeout(function () {
+        plots.forEach(function (u) {
+          var w = u.root.parentNode.parentNode.clientWidth;
+          if (w > 0) u.setSize({ width: Math.max(320, w), height: panelHeight });
+        });
+      }, 150);
+    });
+  }
+
+  if (document.readyState === 'loading') document.addEventListener('DOMContentLoaded', start);
+  else start();
+})();
