@@ -32,5 +32,6 @@ CommandBody add_fit_command(CLI::App& app);
 CommandBody add_new_command(CLI::App& app);
 CommandBody add_stiction_command(CLI::App& app);
 CommandBody add_air_q_command(CLI::App& app);
+CommandBody add_plot_command(CLI::App& app);
 
 }  // namespace vi::cli
