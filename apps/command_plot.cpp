@@ -43,6 +43,11 @@ CommandBody add_plot_command(CLI::App& app) {
         }
         std::printf("Wrote %zu figures of a %s folder (PNG, SVG, their data and gnuplot scripts) to %s/\n", plots.figures.size(),
                     run_kind_name(plots.kind), out.c_str());
+        if (!plots.skipped.empty()) {
+            std::string list;
+            for (const std::string& s : plots.skipped) list += (list.empty() ? "" : ", ") + s;
+            std::printf("Not drawn: %s\n", list.c_str());
+        }
         return kExitOk;
     };
 }

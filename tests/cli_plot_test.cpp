@@ -46,11 +46,12 @@ protected:
 
     void SetUp() override { ASSERT_TRUE(runs_ok_) << "simulate, modes or sweep failed in " << root_; }
 
-    // Runs plot on a folder and expects success.
-    static void plot(const std::string& dir) {
+    // Runs plot on a folder and expects success; returns what it printed.
+    static std::string plot(const std::string& dir) {
         const auto r = run_vibroimpact({"plot", dir});
-        ASSERT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_EQ(r.exit_code, 0) << r.err;
         EXPECT_NE(r.out.find(dir + "/plots/"), std::string::npos) << r.out;
+        return r.out;
     }
 
     // Checks one figure's files: a PNG at least 2000 px wide and of a drawn figure's size, an SVG
@@ -119,14 +120,16 @@ TEST_F(CliPlot, ModesFolderGivesShapesWithNodalPoints) {
 }
 
 TEST_F(CliPlot, OneAxisSweepGivesEachQuantityAgainstTheAxis) {
-    plot(root_ + "/sweep1");
+    const std::string said = plot(root_ + "/sweep1");
     const std::string out = root_ + "/sweep1/plots";
     expect_figure(out, "sweep_T_s", {"supports[0].position  [x/l]", "T  [µs]"});
     expect_figure(out, "sweep_impact1_peak_force_n", {"supports[0].position  [x/l]", "impact1 peak force  [µN]"});
     EXPECT_TRUE(fs::exists(out + "/sweep_impacts.png"));
-    // Text columns are not drawn.
+    // Text columns are not drawn, and the command says so.
     EXPECT_FALSE(fs::exists(out + "/sweep_status.png"));
     EXPECT_FALSE(fs::exists(out + "/sweep_Tp_reason.png"));
+    EXPECT_NE(said.find("Not drawn: Tp_reason (text)"), std::string::npos) << said;
+    EXPECT_NE(said.find("status (text)"), std::string::npos) << said;
 }
 
 TEST_F(CliPlot, TwoAxisSweepGivesHeatMaps) {

@@ -40,9 +40,9 @@ RunPlots run_plots(const std::string& dir) {
     RunPlots p;
     p.kind = run_kind(dir);
     switch (p.kind) {
-        case RunKind::transient: p.figures = transient_figures(dir); break;
+        case RunKind::transient: p.figures = transient_figures(dir, p.skipped); break;
         case RunKind::modes: p.figures = modes_figures(dir); break;
-        case RunKind::sweep: p.figures = sweep_figures(dir); break;
+        case RunKind::sweep: p.figures = sweep_figures(dir, p.skipped); break;
     }
     return p;
 }

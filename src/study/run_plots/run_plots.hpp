@@ -21,6 +21,7 @@ RunKind run_kind(const std::string& dir);
 struct RunPlots {
     RunKind kind = RunKind::transient;
     std::vector<FigureSpec> figures;  // 2400 px wide, with units on every axis
+    std::vector<std::string> skipped; // columns not drawn and why: "status (text)", "Tp_s (no finite value)"
 };
 
 // Reads the folder and builds its figures (not yet rendered). Throws InputError("FILE:LINE: reason")

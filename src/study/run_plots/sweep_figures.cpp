@@ -153,7 +153,7 @@ FigureSpec heat_figure(const RunTable& t, const SweepAxis& ax, const SweepAxis& 
 
 }  // namespace
 
-std::vector<FigureSpec> sweep_figures(const std::string& dir) {
+std::vector<FigureSpec> sweep_figures(const std::string& dir, std::vector<std::string>& skipped) {
     const std::string json_file = dir + "/sweep.json";
     const RunTable t = read_run_table(dir + "/sweep.csv", false);
     const nlohmann::json j = read_run_json(json_file);
@@ -176,7 +176,11 @@ std::vector<FigureSpec> sweep_figures(const std::string& dir) {
         const std::string& name = t.header[k];
         const bool axis = std::any_of(axes.begin(), axes.end(), [&](const SweepAxis& a) { return a.column == static_cast<int>(k); });
         const auto& c = t.columns[k];
-        if (axis || t.text[k] || !std::any_of(c.begin(), c.end(), [](double v) { return std::isfinite(v); })) continue;
+        if (axis) continue;
+        if (t.text[k] || !std::any_of(c.begin(), c.end(), [](double v) { return std::isfinite(v); })) {
+            skipped.push_back(name + (t.text[k] ? " (text)" : " (no finite value)"));
+            continue;
+        }
         Quantity q{static_cast<int>(k), name, ""};
         const ColumnUnit cu = column_unit(name);
         const auto u = units.find(name);

@@ -67,7 +67,10 @@ GroupText group_text(const std::string& unit) {
         return {"transient_displacement", "Displacement of the tip and the contact points", "displacement",
                 "Transverse displacement against time (history.csv); dotted lines: the supports' surfaces (summary.json)."};
     }
-    if (unit == "m/s") return {"transient_velocity", "Velocity of the tip and the contact points", "velocity", "Transverse velocity against time (history.csv)."};
+    if (unit == "m/s") {
+        return {"transient_velocity", "Velocity of the tip and the contact points", "velocity",
+                "Transverse velocity against time (history.csv)."};
+    }
     if (unit == "N") return {"transient_force", "Contact forces", "force", "Force of each support on the beam against time (history.csv)."};
     if (unit == "J") {
         return {"transient_energy", "Energy ledger", "energy",
@@ -157,7 +160,7 @@ bool has_finite(const std::vector<double>& c) {
 
 }  // namespace
 
-std::vector<FigureSpec> transient_figures(const std::string& dir) {
+std::vector<FigureSpec> transient_figures(const std::string& dir, std::vector<std::string>& skipped) {
     const RunTable h = read_run_table(dir + "/history.csv", true);
     const int it = h.find("t_s");
     if (it < 0) throw InputError(h.file + ":1: no column t_s (time) in the header: not a simulate history");
@@ -171,7 +174,11 @@ std::vector<FigureSpec> transient_figures(const std::string& dir) {
     std::vector<UnitGroup> groups;
     for (std::size_t k = 0; k < h.header.size(); ++k) {
         // A column without a finite value has nothing to draw (and gnuplot would warn about it).
-        if (static_cast<int>(k) == it || !has_finite(h.columns[k])) continue;
+        if (static_cast<int>(k) == it) continue;
+        if (!has_finite(h.columns[k])) {
+            skipped.push_back(h.header[k] + " (no finite value)");
+            continue;
+        }
         const std::string unit = column_unit(h.header[k]).unit;
         auto g = std::find_if(groups.begin(), groups.end(), [&](const UnitGroup& x) { return x.unit == unit; });
         if (g == groups.end()) g = groups.insert(groups.end(), UnitGroup{unit, {}});
@@ -180,7 +187,9 @@ std::vector<FigureSpec> transient_figures(const std::string& dir) {
     std::vector<FigureSpec> figures;
     for (const UnitGroup& g : groups) figures.push_back(group_figure(h, it, g, supports));
     const int iy = h.find("tip_m"), iv = h.find("tip_velocity_m_s");
-    if (iy >= 0 && iv >= 0) figures.push_back(phase_figure(h, iy, iv));
+    if (iy >= 0 && iv >= 0 && has_finite(h.columns[static_cast<std::size_t>(iy)]) && has_finite(h.columns[static_cast<std::size_t>(iv)])) {
+        figures.push_back(phase_figure(h, iy, iv));
+    }
     return figures;
 }
 
