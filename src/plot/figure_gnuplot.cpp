@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -143,16 +144,20 @@ std::optional<std::string> find_gnuplot(const std::string& requested) {
 }
 
 std::string gnuplot_script(const FigureSpec& f) {
+    // The terminals' font and line widths; the defaults (11 pt, width 1) are those of the paper's figures.
+    std::ostringstream term;
+    term << " font 'DejaVu Sans," << std::lround(11.0 * f.scale) << "'";
+    if (f.scale != 1.0) term << " linewidth " << f.scale;
     std::ostringstream s;
-    s << "# " << f.title << "\n# Drawn by `vibroimpact paper` from ";
+    s << "# " << f.title << "\n# Drawn by vibroimpact from ";
     for (std::size_t i = 0; i < f.data.size(); ++i) s << (i ? ", " : "") << f.data[i].first;
     s << "; rerun in this folder with: gnuplot " << f.name << ".gp\n"
       << "reset\nset encoding utf8\nset datafile separator comma\n"
       << "# The pngcairo terminal: anti-aliased PNG, DejaVu Sans (fonts-dejavu-core).\n"
-      << "set terminal pngcairo size " << f.width << "," << f.height << " font 'DejaVu Sans,11' enhanced\n"
+      << "set terminal pngcairo size " << f.width << "," << f.height << term.str() << " enhanced\n"
       << "set output " << gp_quote(f.name + ".png") << "\n"
       << f.plot << "\nunset output\nreset\nset datafile separator comma\n"
-      << "set terminal svg size " << f.width << "," << f.height << " font 'DejaVu Sans,11' enhanced background rgb 'white'\n"
+      << "set terminal svg size " << f.width << "," << f.height << term.str() << " enhanced background rgb 'white'\n"
       << "set output " << gp_quote(f.name + ".svg") << "\n"
       << f.plot << "\nunset output\nreset\n";
     return s.str();

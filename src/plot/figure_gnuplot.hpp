@@ -22,6 +22,7 @@ struct FigureSpec {
     std::string plot;     // gnuplot commands
     int width = 1000;     // [px]
     int height = 620;     // [px]
+    double scale = 1.0;   // font size (11 pt) and line widths times this: 2.4 keeps a 2400 px figure readable in print
     std::vector<ChartPanel> charts;  // the interactive form in report.html; empty: the PNG only
 };
 
@@ -36,7 +37,7 @@ struct RenderedFigure {
 // "gnuplot" on PATH; nullopt when it cannot be found or run.
 std::optional<std::string> find_gnuplot(const std::string& requested = "gnuplot");
 
-// The stand-alone gnuplot script of a figure: PNG (pngcairo, DejaVu Sans 11) then SVG.
+// The stand-alone gnuplot script of a figure: PNG (pngcairo, DejaVu Sans 11 × scale) then SVG.
 std::string gnuplot_script(const FigureSpec& f);
 
 // Renders every figure with `gnuplot` in a temporary folder that is removed afterwards: one gnuplot

@@ -1,0 +1,144 @@
+#include "study/run_plots/plot_style.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <utility>
+
+#include "report/csv_text.hpp"
+
+namespace vi {
+namespace {
+
+// Column-name endings and their units, longest first so that "_m_s" wins over "_s".
+const std::vector<std::pair<std::string, std::string>>& unit_suffixes() {
+    static const std::vector<std::pair<std::string, std::string>> s{
+        {"_kg_m3", "kg/m³"}, {"_rad_s", "rad/s"}, {"_n_s_m", "N s/m"}, {"_pa_s", "Pa s"}, {"_m_s", "m/s"},
+        {"_n_s", "N s"},     {"_n_m", "N/m"},     {"_hz", "Hz"},       {"_pa", "Pa"},     {"_m", "m"},
+        {"_s", "s"},         {"_n", "N"},         {"_j", "J"},         {"_w", "W"},       {"_v", "V"},
+        {"_V", "V"},         {"_fF", "fF"}};
+    return s;
+}
+
+bool ends_with(const std::string& s, const std::string& tail) {
+    return s.size() > tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+std::string spaced(std::string s) {
+    std::replace(s.begin(), s.end(), '_', ' ');
+    return s;
+}
+
+}  // namespace
+
+ColumnUnit column_unit(const std::string& name) {
+    for (const auto& [tail, unit] : unit_suffixes()) {
+        if (ends_with(name, tail)) return {spaced(name.substr(0, name.size() - tail.size())), unit};
+    }
+    return {spaced(name), ""};
+}
+
+DisplayUnit display_unit(const std::string& unit, double largest) {
+    static const std::vector<std::string> prefixable{"m", "s", "N", "J", "W", "Pa", "V", "F", "C", "A", "Hz", "m/s"};
+    if (std::find(prefixable.begin(), prefixable.end(), unit) == prefixable.end() || !(largest > 0.0) || !std::isfinite(largest)) {
+        return {1.0, unit == "-" ? "" : unit};
+    }
+    // The small slack keeps 9.9999999e-7 m (a rounded 1 µm) in µm rather than 999.99999 nm.
+    const int e3 = std::clamp(static_cast<int>(std::floor((std::log10(largest) + 1e-3) / 3.0)) * 3, -15, 9);
+    static const char* prefix[] = {"f", "p", "n", "µ", "m", "", "k", "M", "G"};
+    return {std::pow(10.0, -e3), std::string(prefix[(e3 + 15) / 3]) + unit};
+}
+
+double largest_magnitude(const std::vector<const std::vector<double>*>& columns) {
+    double m = 0.0;
+    for (const auto* c : columns) {
+        for (double v : *c) {
+            if (std::isfinite(v)) m = std::max(m, std::fabs(v));
+        }
+    }
+    return m;
+}
+
+std::string axis_label(const std::string& quantity, const DisplayUnit& u) {
+    return u.text.empty() ? quantity : quantity + "  [" + u.text + "]";
+}
+
+FigureSpec run_figure(const std::string& name, const std::string& title, const std::string& caption) {
+    FigureSpec f;
+    f.name = name;
+    f.title = title;
+    f.caption = caption;
+    f.width = 2400;
+    f.height = 1500;
+    f.scale = 2.4;
+    return f;
+}
+
+std::string gp_frame(const std::string& xlabel, const std::string& ylabel) {
+    return "set grid lc rgb '#dddddd'\nset key top right noenhanced\nset format y '%g'\nset format x '%g'\n"
+           "set xlabel " + gp_quote(xlabel) + " noenhanced\nset ylabel " + gp_quote(ylabel) + " noenhanced\n";
+}
+
+std::string gp_range(const std::string& axis, double lo, double hi) {
+    if (!std::isfinite(lo) || !std::isfinite(hi)) return "set " + axis + "range [-1:1]\n";
+    if (hi > lo) return "";
+    const double half = lo == 0.0 ? 1.0 : 0.1 * std::fabs(lo);
+    return "set " + axis + "range [" + cell(lo - half) + ":" + cell(hi + half) + "]\n";
+}
+
+void finite_range(const std::vector<const std::vector<double>*>& columns, double& lo, double& hi) {
+    lo = std::numeric_limits<double>::infinity();
+    hi = -lo;
+    for (const auto* c : columns) {
+        for (double v : *c) {
+            if (!std::isfinite(v)) continue;
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+    }
+    if (lo > hi) lo = hi = std::numeric_limits<double>::quiet_NaN();
+}
+
+std::vector<std::size_t> rows_to_draw(const std::vector<const std::vector<double>*>& columns, std::size_t rows, std::size_t limit) {
+    std::vector<std::size_t> keep;
+    if (rows <= limit) {
+        keep.resize(rows);
+        for (std::size_t i = 0; i < rows; ++i) keep[i] = i;
+        return keep;
+    }
+    const std::size_t slices = std::max<std::size_t>(1, limit / 4);
+    for (std::size_t s = 0; s < slices; ++s) {
+        const std::size_t a = rows * s / slices, b = rows * (s + 1) / slices;
+        if (a >= b) continue;
+        std::vector<std::size_t> part{a, b - 1};
+        for (const auto* c : columns) {
+            std::size_t lo = a, hi = a;
+            for (std::size_t i = a; i < b; ++i) {
+                if ((*c)[i] < (*c)[lo]) lo = i;
+                if ((*c)[i] > (*c)[hi]) hi = i;
+            }
+            part.insert(part.end(), {lo, hi});
+        }
+        std::sort(part.begin(), part.end());
+        part.erase(std::unique(part.begin(), part.end()), part.end());
+        keep.insert(keep.end(), part.begin(), part.end());
+    }
+    return keep;
+}
+
+std::string safe_name(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        const bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-';
+        if (ok) {
+            out += c;
+        } else if (!out.empty() && out.back() != '_') {
+            out += '_';
+        }
+    }
+    while (!out.empty() && out.back() == '_') out.pop_back();
+    return out.empty() ? "column" : out;
+}
+
+}  // namespace vi

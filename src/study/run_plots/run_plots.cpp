@@ -1,0 +1,63 @@
+#include "study/run_plots/run_plots.hpp"
+
+#include <filesystem>
+
+#include "io/text_file.hpp"
+#include "model/input_error.hpp"
+#include "study/run_plots/run_figures.hpp"
+
+namespace vi {
+namespace {
+namespace fs = std::filesystem;
+
+bool has(const fs::path& dir, const char* file) {
+    std::error_code ec;
+    return fs::is_regular_file(dir / file, ec);
+}
+
+}  // namespace
+
+const char* run_kind_name(RunKind k) {
+    switch (k) {
+        case RunKind::transient: return "simulate";
+        case RunKind::modes: return "modes";
+        case RunKind::sweep: return "sweep";
+    }
+    return "?";
+}
+
+RunKind run_kind(const std::string& dir) {
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec)) throw InputError(dir + ": no such folder");
+    if (has(dir, "sweep.csv")) return RunKind::sweep;
+    if (has(dir, "history.csv")) return RunKind::transient;
+    if (has(dir, "shapes_unsupported.csv") || has(dir, "shapes_supported.csv")) return RunKind::modes;
+    throw InputError(dir + ": not a run folder: it holds none of history.csv (simulate --out), shapes_*.csv (modes --out), "
+                           "sweep.csv (sweep --out)");
+}
+
+RunPlots run_plots(const std::string& dir) {
+    RunPlots p;
+    p.kind = run_kind(dir);
+    switch (p.kind) {
+        case RunKind::transient: p.figures = transient_figures(dir, p.skipped); break;
+        case RunKind::modes: p.figures = modes_figures(dir); break;
+        case RunKind::sweep: p.figures = sweep_figures(dir, p.skipped); break;
+    }
+    return p;
+}
+
+nlohmann::json read_run_json(const std::string& path) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) return nullptr;
+    std::string reason;
+    const auto text = file_text(path, reason);
+    if (!text) throw InputError(path + ": cannot read: " + reason);
+    try {
+        return nlohmann::json::parse(*text);
+    } catch (const nlohmann::json::parse_error& e) {
+        throw InputError(one_line(path + ": not valid JSON: " + e.what()));
+    }
+}
+
+}  // namespace vi

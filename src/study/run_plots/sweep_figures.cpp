@@ -1,0 +1,195 @@
+// The figures of a sweep folder: each numeric reported quantity of sweep.csv against the one varying
+// axis of sweep.json, or as a heat map over two. Points without a value (a failed point, a quantity
+// the run does not define) are left out: a gap in the line, a grey cell in the map.
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <sstream>
+
+#include "io/text_file.hpp"
+#include "model/input_error.hpp"
+#include "report/csv_text.hpp"
+#include "study/run_plots/plot_style.hpp"
+#include "study/run_plots/run_figures.hpp"
+#include "study/run_plots/run_table.hpp"
+
+namespace vi {
+namespace {
+
+// A varying axis of the grid: the case path, its unit, its values in grid order, its column in sweep.csv.
+struct SweepAxis {
+    std::string path, unit;
+    std::vector<double> values;  // sorted, distinct
+    bool log = false;            // a log:start:stop:count range: drawn on a log scale
+    int column = -1;
+    DisplayUnit shown;
+};
+
+std::vector<SweepAxis> varying_axes(const nlohmann::json& j, const RunTable& t, const std::string& json_file) {
+    std::vector<SweepAxis> out;
+    if (!j.is_object() || !j.contains("axes") || !j["axes"].is_array()) throw InputError(json_file + ": no \"axes\" list: not a sweep's description");
+    for (const nlohmann::json& a : j["axes"]) {
+        SweepAxis x;
+        x.path = a.at("path").get<std::string>();
+        x.unit = a.value("unit", std::string());
+        for (const nlohmann::json& v : a.at("values")) {
+            if (v.is_number()) x.values.push_back(v.get<double>());
+        }
+        std::sort(x.values.begin(), x.values.end());
+        x.values.erase(std::unique(x.values.begin(), x.values.end()), x.values.end());
+        if (x.values.size() < 2) continue;  // a value set once: not an axis of the figures
+        x.log = a.value("setting", std::string()).find("=log:") != std::string::npos && x.values.front() > 0.0;
+        x.column = t.find(x.path);
+        if (x.column < 0) throw InputError(t.file + ":1: no column " + x.path + " for the axis " + x.path + " of " + json_file);
+        x.shown = display_unit(x.unit, std::max(std::fabs(x.values.front()), std::fabs(x.values.back())));
+        out.push_back(std::move(x));
+    }
+    return out;
+}
+
+// The unit of each result column as sweep.json gives it.
+std::map<std::string, std::string> column_units(const nlohmann::json& j) {
+    std::map<std::string, std::string> out;
+    if (!j.contains("columns") || !j["columns"].is_array()) return out;
+    for (const nlohmann::json& c : j["columns"]) {
+        if (c.is_object() && c.contains("name") && c["name"].is_string()) out[c["name"].get<std::string>()] = c.value("unit", std::string());
+    }
+    return out;
+}
+
+// A quantity of sweep.csv with its name as a label and its unit.
+struct Quantity {
+    int column = -1;
+    std::string label, unit;
+};
+
+// The edges of the cells around sorted axis values: midway between neighbours (geometrically on a
+// log axis), the outer ones as far out as the inner ones.
+std::vector<double> cell_edges(const SweepAxis& a) {
+    const auto& v = a.values;
+    const auto mid = [&](double p, double q) { return a.log ? std::sqrt(p * q) : 0.5 * (p + q); };
+    std::vector<double> e(v.size() + 1);
+    for (std::size_t i = 1; i < v.size(); ++i) e[i] = mid(v[i - 1], v[i]);
+    e.front() = a.log ? v[0] * v[0] / e[1] : 2.0 * v[0] - e[1];
+    e.back() = a.log ? v.back() * v.back() / e[v.size() - 1] : 2.0 * v.back() - e[v.size() - 1];
+    return e;
+}
+
+// The grid value nearest x (sweep.csv and sweep.json write the same values to the last digit).
+std::size_t index_of(const SweepAxis& a, double x) {
+    std::size_t best = 0;
+    for (std::size_t i = 1; i < a.values.size(); ++i) {
+        if (std::fabs(a.values[i] - x) < std::fabs(a.values[best] - x)) best = i;
+    }
+    return best;
+}
+
+std::string axis_text(const SweepAxis& a) {
+    return axis_label(a.path, a.shown);
+}
+
+FigureSpec line_figure(const RunTable& t, const SweepAxis& a, const Quantity& q) {
+    const auto& x = t.columns[static_cast<std::size_t>(a.column)];
+    const auto& y = t.columns[static_cast<std::size_t>(q.column)];
+    const DisplayUnit yu = display_unit(q.unit, largest_magnitude({&y}));
+    FigureSpec f = run_figure("sweep_" + safe_name(t.header[static_cast<std::size_t>(q.column)]), q.label + " against " + a.path,
+                              t.header[static_cast<std::size_t>(q.column)] + " of sweep.csv against " + a.path +
+                                  "; a gap: a point without a value (failed, or the quantity undefined there).");
+    std::vector<std::size_t> order(t.rows);
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return x[i] < x[j]; });
+    CsvText data;
+    data.header = {a.path + " [" + a.shown.text + "]", t.header[static_cast<std::size_t>(q.column)] + " [" + yu.text + "]"};
+    for (std::size_t r : order) data.add({cell(x[r] * a.shown.factor), cell(y[r] * yu.factor)});
+    const std::string file = f.name + ".csv";
+    f.data = {{file, data.str()}};
+    double lo = 0.0, hi = 0.0;
+    finite_range({&y}, lo, hi);
+    std::ostringstream p;
+    p << gp_frame(axis_text(a), axis_label(q.label, yu)) << "set key off\n"
+      << "set xrange [" << cell(a.values.front() * a.shown.factor) << ":" << cell(a.values.back() * a.shown.factor) << "]\n"
+      << gp_range("y", lo * yu.factor, hi * yu.factor) << (a.log ? "set logscale x\n" : "")
+      << "plot " << gp_quote(file) << " using 1:2 with linespoints lw 2 pt 7 ps 1.6 lc rgb '#1f77b4'\n";
+    f.plot = p.str();
+    return f;
+}
+
+FigureSpec heat_figure(const RunTable& t, const SweepAxis& ax, const SweepAxis& ay, const Quantity& q) {
+    const auto& z = t.columns[static_cast<std::size_t>(q.column)];
+    const DisplayUnit zu = display_unit(q.unit, largest_magnitude({&z}));
+    FigureSpec f = run_figure("sweep_" + safe_name(t.header[static_cast<std::size_t>(q.column)]), q.label + " over " + ax.path + " and " + ay.path,
+                              t.header[static_cast<std::size_t>(q.column)] + " of sweep.csv, one cell per grid point; grey: a point "
+                                  "without a value (failed, or the quantity undefined there).");
+    const std::vector<double> ex = cell_edges(ax), ey = cell_edges(ay);
+    CsvText data;
+    data.header = {ax.path, ay.path, "x_low", "x_high", "y_low", "y_high", t.header[static_cast<std::size_t>(q.column)] + " [" + zu.text + "]"};
+    const auto& xs = t.columns[static_cast<std::size_t>(ax.column)];
+    const auto& ys = t.columns[static_cast<std::size_t>(ay.column)];
+    for (std::size_t r = 0; r < t.rows; ++r) {
+        if (!std::isfinite(z[r]) || !std::isfinite(xs[r]) || !std::isfinite(ys[r])) continue;
+        const std::size_t i = index_of(ax, xs[r]), k = index_of(ay, ys[r]);
+        data.add({cell(xs[r] * ax.shown.factor), cell(ys[r] * ay.shown.factor), cell(ex[i] * ax.shown.factor), cell(ex[i + 1] * ax.shown.factor),
+                  cell(ey[k] * ay.shown.factor), cell(ey[k + 1] * ay.shown.factor), cell(z[r] * zu.factor)});
+    }
+    const std::string file = f.name + ".csv";
+    f.data = {{file, data.str()}};
+    double lo = 0.0, hi = 0.0;
+    finite_range({&z}, lo, hi);
+    std::ostringstream p;
+    p << gp_frame(axis_text(ax), axis_text(ay)) << "set key off\nunset grid\n"
+      << "set cblabel " << gp_quote(axis_label(q.label, zu)) << " noenhanced\n"
+      << "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21908d', 3 '#5dc863', 4 '#fde725')\n"
+      << "set object 1 rectangle from graph 0, graph 0 to graph 1, graph 1 behind fillcolor rgb '#bbbbbb' fillstyle solid 1.0 noborder\n"
+      << "set xrange [" << cell(ex.front() * ax.shown.factor) << ":" << cell(ex.back() * ax.shown.factor) << "]\n"
+      << "set yrange [" << cell(ey.front() * ay.shown.factor) << ":" << cell(ey.back() * ay.shown.factor) << "]\n"
+      << (hi > lo ? std::string() : gp_range("cb", lo * zu.factor, hi * zu.factor)) << (ax.log ? "set logscale x\n" : "")
+      << (ay.log ? "set logscale y\n" : "")
+      << "plot " << gp_quote(file) << " using 1:2:3:4:5:6:7 with boxxyerror fillstyle solid 1.0 noborder linecolor palette\n";
+    f.plot = p.str();
+    return f;
+}
+
+}  // namespace
+
+std::vector<FigureSpec> sweep_figures(const std::string& dir, std::vector<std::string>& skipped) {
+    const std::string json_file = dir + "/sweep.json";
+    const RunTable t = read_run_table(dir + "/sweep.csv", false);
+    const nlohmann::json j = read_run_json(json_file);
+    if (j.is_null()) throw InputError(json_file + ": missing; it names the sweep's axes and units (sweep --out writes it)");
+    std::vector<SweepAxis> axes;
+    std::map<std::string, std::string> units;
+    try {
+        axes = varying_axes(j, t, json_file);
+        units = column_units(j);
+    } catch (const nlohmann::json::exception& e) {
+        throw InputError(one_line(json_file + ": " + e.what()));
+    }
+    if (axes.empty()) throw InputError(json_file + ": no axis takes two values or more: nothing varies to draw against");
+    if (axes.size() > 2) {
+        throw InputError(json_file + ": " + std::to_string(axes.size()) +
+                         " axes vary; plot draws a sweep over one axis (curves) or two (heat maps)");
+    }
+    std::vector<FigureSpec> figures;
+    for (std::size_t k = 0; k < t.header.size(); ++k) {
+        const std::string& name = t.header[k];
+        const bool axis = std::any_of(axes.begin(), axes.end(), [&](const SweepAxis& a) { return a.column == static_cast<int>(k); });
+        const auto& c = t.columns[k];
+        if (axis) continue;
+        if (t.text[k] || !std::any_of(c.begin(), c.end(), [](double v) { return std::isfinite(v); })) {
+            skipped.push_back(name + (t.text[k] ? " (text)" : " (no finite value)"));
+            continue;
+        }
+        Quantity q{static_cast<int>(k), name, ""};
+        const ColumnUnit cu = column_unit(name);
+        const auto u = units.find(name);
+        q.unit = u != units.end() ? u->second : cu.unit;
+        if (cu.unit == q.unit) q.label = cu.quantity;
+        figures.push_back(axes.size() == 1 ? line_figure(t, axes[0], q) : heat_figure(t, axes[0], axes[1], q));
+    }
+    if (figures.empty()) throw InputError(t.file + ": no column holds a number to draw (every point failed?)");
+    return figures;
+}
+
+}  // namespace vi
