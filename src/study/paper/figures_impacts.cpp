@@ -42,7 +42,7 @@ FigureSpec fig9(const PaperStudy& st) {
                           num(st.options.cases.prestress.initial.displacement * 1e6, 3) +
                           " um above that equilibrium and released. The CSV also gives the equilibrium z_equilibrium (about Delta/l: "
                           "the paper's diagonal) and the highest point z_top above the unloaded axis." + failures(s);
-    FigureSpec fig{"fig9", "Fig. 9: rebound against prestress", caption, {{"fig9.csv", t.str()}}, p.str(), 1000, 620, {}};
+    FigureSpec fig{"fig9", "Fig. 9: rebound against prestress", caption, {{"fig9.csv", t.str()}}, p.str(), 1000, 620, 1.0, {}};
     ChartPanel c;
     c.x_label = "prestress Δ/l [-]";
     c.y_label = "z_max = y_max/l above the equilibrium [10⁻³]";
@@ -84,7 +84,7 @@ FigureSpec fig10(const PaperStudy& st) {
                           "impact, whose force is the largest of its episodes.";
     if (!st.position_scans.empty()) caption += failures(st.position_scans.front());
     FigureSpec fig{"fig10", "Fig. 10: impact velocity and contact force against support position", caption, {{"fig10.csv", t.str()}},
-                   p.str(), 1000, 620, {}};
+                   p.str(), 1000, 620, 1.0, {}};
     ChartPanel c;
     c.x_label = "support position x0/l [-]";
     c.y_label = "pre-impact velocity |v_in| [m/s]";
@@ -135,7 +135,7 @@ FigureSpec fig11(const PaperStudy& st) {
     }
     p << "\n";
     caption += "; sampled every 2.5 ns. Top axis: the same time made dimensionless with the first free frequency.";
-    FigureSpec fig{"fig11", "Fig. 11: contact force during an impact", caption, {{"fig11.csv", t.str()}}, p.str(), 1000, 620, {}};
+    FigureSpec fig{"fig11", "Fig. 11: contact force during an impact", caption, {{"fig11.csv", t.str()}}, p.str(), 1000, 620, 1.0, {}};
     ChartPanel c;
     c.x_label = "time since the onset of the impact t [μs]";
     c.y_label = "contact force P [μN]";

@@ -72,7 +72,7 @@ FigureSpec fig2(const PaperStudy& st) {
                    "The first " + std::to_string(n) + " bending modes of the unsupported cantilever, mass-normalised and made "
                    "dimensionless, (a) displacement Y and (b) rotation Phi along the beam, with their nodal points (zeros, clamp "
                    "excluded). Dashed lines: the paper's particular points 0.67, 0.78, 0.87." + nodes,
-                   {{"fig2.csv", shapes.str()}, {"fig2_points.csv", points.str()}}, p.str(), 1000, 900, {}};
+                   {{"fig2.csv", shapes.str()}, {"fig2_points.csv", points.str()}}, p.str(), 1000, 900, 1.0, {}};
     for (const bool rotation : {false, true}) {
         ChartPanel c;
         c.title = rotation ? "(b) rotation Φ" : "(a) displacement Y";
@@ -197,7 +197,7 @@ FigureSpec fig6(const PaperStudy& st) {
                 " positions). The dotted diagonal is the support itself, the extra nodal point y_i0 of every supported mode. "
                 "Where the support sits on a nodal point of a free mode (0.78 for mode 2, 0.87 for mode 3), that mode is also a mode "
                 "of the supported beam and its other nodal points stay where they were.",
-            {{"fig6.csv", modal_points_csv(st, false).str()}}, p.str(), 1200, 640, {}};
+            {{"fig6.csv", modal_points_csv(st, false).str()}}, p.str(), 1200, 640, 1.0, {}};
     for (const bool rotation : {false, true}) {
         ChartPanel c;
         c.title = rotation ? "(b) rotation: zeros of θ" : "(a) displacement: zeros of v";
@@ -251,7 +251,7 @@ FigureSpec fig7(const PaperStudy& st) {
                        " supported modes (mass-normalised, dimensionless), against x0/l: the j-th peak of mode i (counted from "
                        "the clamp) is one line in the mode's colour. fig7_lines.csv holds these lines, fig7.csv each peak's "
                        "position x/l too.",
-                   {{"fig7.csv", modal_points_csv(st, true).str()}, {"fig7_lines.csv", lines.str()}}, p.str(), 1200, 600, {}};
+                   {{"fig7.csv", modal_points_csv(st, true).str()}, {"fig7_lines.csv", lines.str()}}, p.str(), 1200, 600, 1.0, {}};
     for (const bool rotation : {false, true}) {
         ChartPanel c;
         c.title = rotation ? "(b) rotation peaks" : "(a) displacement peaks";
@@ -301,7 +301,7 @@ FigureSpec fig8(const PaperStudy& st) {
             "omega_i / omega_in for the first " + std::to_string(n) + " modes with a pin at x0/l (" + std::to_string(st.modal.size()) +
                 " positions); the circle marks the largest omega_1 ratio, " + num(st.ratio_peak.ratio) + " at x0/l = " +
                 num(st.ratio_peak.x0, 5) + " (golden-section search), where the paper puts it at 0.78.",
-            {{"fig8.csv", t.str()}}, p.str(), 1000, 620, {}};
+            {{"fig8.csv", t.str()}}, p.str(), 1000, 620, 1.0, {}};
     ChartPanel c;
     c.x_label = "support position x0/l [-]";
     c.y_label = "ω_i / ω_in [-]";

@@ -119,7 +119,7 @@ FigureSpec fig3(const PaperStudy& st) {
                        "; " + std::to_string(s.impacts.size()) + " impacts. The paper gives T = 5.1 us (see the claims). Sampled every " +
                        num(t.output_step * 1e9, 3) + " ns; events and y_max are located exactly, not sampled.";
     FigureSpec fig{"fig3", "Fig. 3: a typical free impact transient", text,
-                   {{"fig3.csv", h.str()}, {"fig3_impacts.csv", im.str()}}, p.str(), 1100, 900, {}};
+                   {{"fig3.csv", h.str()}, {"fig3_impacts.csv", im.str()}}, p.str(), 1100, 900, 1.0, {}};
     // (a) the whole transient, (b) the first cycles; grey: in contact; dashed: T_p.
     for (const bool first_cycles : {false, true}) {
         ChartPanel c;
@@ -181,7 +181,7 @@ FigureSpec fig4(const PaperStudy& st) {
                           num(st.typical.y0 * 1e6, 4) + " um at the free end, zero gap, Kc and Cc fixed. " +
                           std::to_string(n) + " positions per mesh.";
     for (const TransientScan& s : st.position_scans) caption += failures(s);
-    FigureSpec fig{"fig4", "Fig. 4: rebound against support position", caption, {{"fig4.csv", t.str()}}, p.str(), 1000, 620, {}};
+    FigureSpec fig{"fig4", "Fig. 4: rebound against support position", caption, {{"fig4.csv", t.str()}}, p.str(), 1000, 620, 1.0, {}};
     ChartPanel c;
     c.x_label = "support position x0/l [-]";
     c.y_label = "z = y/l [10⁻³]";
@@ -259,7 +259,7 @@ FigureSpec fig5(const PaperStudy& st) {
     }
     caption.back() = '.';
     FigureSpec fig{"fig5", "Fig. 5: temporal characteristics against support position", caption, {{"fig5.csv", t.str()}}, p.str(),
-                   1000, 900, {}};
+                   1000, 900, 1.0, {}};
     ChartPanel a;
     a.title = "(a) duration of the transient (gaps: not settled within the horizon)";
     a.x_label = "support position x0/l [-]";
