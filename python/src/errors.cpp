@@ -48,7 +48,7 @@ Located locate(const std::string& message) {
     const auto sep = rest.find(": ");
     if (sep != std::string::npos) {
         std::string key = rest.substr(0, sep);
-        if (key.rfind("--set ", 0) == 0) key = key.substr(6, key.find('=') == std::string::npos ? std::string::npos : key.find('=') - 6);
+        if (key.rfind("--set ", 0) == 0) key = key.substr(6, key.find('=') - 6);  // npos - 6: to the end
         if (!key.empty() && key.find(' ') == std::string::npos) {
             l.key = key;
             rest = rest.substr(sep + 2);

@@ -59,6 +59,9 @@ def test_a_run_that_cannot_start_names_the_key_in_the_file(small_case):
 def test_ctrl_c_stops_a_sweep_and_the_next_run_works(source_dir):
     case = vi.Case.from_file(str(source_dir / "examples/paper/free_impact_tip.toml"))
     # 100000 full-size points: far beyond the CTest timeout unless the interrupt stops the sweep.
+    # Python's own SIGINT handler, as in an interactive session (a process started in the background
+    # by a shell has SIGINT ignored, and then Python installs none).
+    previous = signal.signal(signal.SIGINT, signal.default_int_handler)
     timer = threading.Timer(0.5, os.kill, (os.getpid(), signal.SIGINT))
     timer.start()
     try:
@@ -66,5 +69,6 @@ def test_ctrl_c_stops_a_sweep_and_the_next_run_works(source_dir):
             vi.sweep(case, {"supports[0].position": "0.5:1:100000"}, threads=2)
     finally:
         timer.cancel()
+        signal.signal(signal.SIGINT, previous)
     small = vi.sweep(case, {"supports[0].position": "0.9,1"}, threads=1)["table"]
     assert (small["status"] == "ok").all()
