@@ -1,0 +1,47 @@
+#pragma once
+// The parts of the Python module _vibroimpact, each bound by its own file, and the helpers they share.
+
+#include <pybind11/pybind11.h>
+
+#include <functional>
+#include <set>
+#include <string>
+
+#include "fem/system.hpp"
+#include "io/output_files.hpp"
+#include "model/case.hpp"
+
+namespace vi::python {
+
+namespace py = pybind11;
+
+// errors.cpp: the exception classes InputError (file, line, key, reason) and SolverError, and the
+// translation of the library's exceptions into them.
+void bind_errors(py::module_& m);
+// case_binding.cpp: the class Case (from a file, a TOML string or a dict; get and set by path).
+void bind_case(py::module_& m);
+// analyses.cpp: modes, simulate, pullin.
+void bind_analyses(py::module_& m);
+// sweep_binding.cpp: sweep.
+void bind_sweep(py::module_& m);
+
+// convert.cpp: a CSV text as written by the command line -> dict of numpy arrays, one per column
+// in file order: int64 for integer_columns without empty cells, else float64 (NaN for an empty
+// cell), str for a column holding text.
+py::dict csv_columns(const std::string& csv, const std::set<std::string>& integer_columns = {});
+// convert.cpp: a JSON text -> the same Python value json.loads would give.
+py::object json_value(const std::string& json);
+// convert.cpp: result files (name -> text) -> dict keyed by the name without extension: CSV as
+// csv_columns, JSON as json_value.
+py::dict files_dict(const OutputFiles& files);
+
+// run_guard.cpp: runs work() on a worker thread with the GIL released; Ctrl-C (a pending
+// KeyboardInterrupt) sets the library's stop flag, and the interrupt is raised once work() has
+// stopped. Exceptions of work() are rethrown here. The stop flag is process-wide: a Ctrl-C stops
+// every run under way.
+void run_released(const std::function<void()>& work);
+
+// analyses.cpp: "pin" or "spring" (the --support-model option); InputError otherwise.
+SupportModel support_model_of(const std::string& name);
+
+}  // namespace vi::python
