@@ -15,8 +15,11 @@ if(VI_HAVE_MPI)
   add_library(vibroimpact::mpi ALIAS vibroimpact_mpi)
   list(APPEND VI_INSTALL_TARGETS vibroimpact_mpi)
 endif()
-# A library compiled with the sanitizers needs their run-time libraries in whatever links it.
+# A library compiled with the sanitizers needs them in whatever uses it: their run-time libraries at
+# link time, and the same compile flags, since Eigen allocates differently under AddressSanitizer
+# (__SANITIZE_ADDRESS__), so a matrix made in the library and freed in the consumer would not match.
 if(VI_SANITIZE)
+  target_compile_options(vibroimpact_lib INTERFACE $<INSTALL_INTERFACE:-fsanitize=address,undefined>)
   target_link_options(vibroimpact_lib INTERFACE $<INSTALL_INTERFACE:-fsanitize=address,undefined>)
 endif()
 
