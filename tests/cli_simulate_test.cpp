@@ -311,6 +311,29 @@ struct BadCase {
     const char* key;  // the key the message must name
 };
 
+// The watched point is named for what it is: the free end of a cantilever is its tip, a beam held at
+// both ends is watched at mid-span (examples/devices/bridge_relay.toml), never called a tip.
+TEST(CliSimulateWatchedPoint, CantileverTipAndBridgeMidspanAreNamedSo) {
+    const std::string dir = test::make_temp_dir();
+    const auto r = test::run_vibroimpact(
+        {"simulate", test::source_path("examples/devices/bridge_relay.toml"), "--out", dir + "/bridge"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto history = read_lines(dir + "/bridge/history.csv");
+    ASSERT_FALSE(history.empty());
+    EXPECT_EQ(history[0].rfind("t_s,midspan_m,midspan_velocity_m_s,", 0), 0u) << history[0];
+    EXPECT_EQ(history[0].find("tip"), std::string::npos) << history[0];
+    std::ifstream in(dir + "/bridge/summary.json");
+    const json summary = json::parse(in);
+    EXPECT_EQ(summary["watched_point"]["name"], "midspan");
+    EXPECT_DOUBLE_EQ(summary["watched_point"]["x_over_l"].get<double>(), 0.5);
+    const auto tip = test::run_vibroimpact({"simulate", test::source_path("examples/paper/free_impact_tip.toml"), "--json"});
+    ASSERT_EQ(tip.exit_code, 0) << tip.err;
+    const json j = json::parse(tip.out);
+    EXPECT_EQ(j["watched_point"]["name"], "tip");
+    EXPECT_DOUBLE_EQ(j["watched_point"]["x_over_l"].get<double>(), 1.0);
+    fs::remove_all(dir);
+}
+
 TEST(CliSimulateBadInput, EveryBadInputGivesOneLineExitTwoAndWritesNothing) {
     const std::string good = read_text(test::source_path(kExample));
     ASSERT_FALSE(good.empty());

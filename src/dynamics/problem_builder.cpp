@@ -145,7 +145,8 @@ void add_loads(const Case& c, const System& s, BuiltProblem& b) {
 
 // The watched DOF: v at the free end (the right end, else the left); when neither end is free, v at
 // the node nearest initial.position (mid-span when that point is held by an end condition).
-int watched_dof(const Case& c, const System& s, const std::vector<int>& pos) {
+// The watched point's v among the bending DOFs; x_out is where it sits [m].
+int watched_dof(const Case& c, const System& s, const std::vector<int>& pos, double& x_out) {
     const double l = s.length;
     double x = c.initial.position * l;
     if (c.beam.right == EndCondition::free) {
@@ -163,6 +164,7 @@ int watched_dof(const Case& c, const System& s, const std::vector<int>& pos) {
         if (r >= 0 && distance < best_distance) {
             best = pos[static_cast<std::size_t>(r)];
             best_distance = distance;
+            x_out = s.mesh.x[static_cast<std::size_t>(node)];
         }
     }
     return best;
@@ -234,7 +236,11 @@ BuiltProblem build_transient_problem(const Case& c) {
     b.y0_m = ic.lift;
     b.static_force_n = ic.force;
 
-    p.tip_dof = watched_dof(c, s, pos);
+    double x_watched = 0.0;
+    p.tip_dof = watched_dof(c, s, pos, x_watched);
+    b.watched_x_over_l = x_watched / s.length;
+    const bool free_end = c.beam.right == EndCondition::free || c.beam.left == EndCondition::free;
+    b.watched_name = free_end ? "tip" : std::abs(b.watched_x_over_l - 0.5) < 1e-9 ? "midspan" : "point";
     p.t_end = c.solver.horizon;
     p.output_step = c.solver.output_step > 0.0 ? c.solver.output_step : c.solver.horizon / 2000.0;
     return b;

@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <vector>
+#include <string>
 
 #include "dynamics/transient_problem.hpp"
 #include "fem/rayleigh.hpp"
@@ -25,6 +26,10 @@ struct BuiltProblem {
     double static_force_n = 0.0;           // static point force of the step [N] (0 at rest)
     Eigen::VectorXd q_equilibrium;         // static equilibrium over the bending DOFs [m, rad]
     std::vector<FilmRegime> films;         // each squeeze film's regime at rest, at omega1
+    // The watched point (history columns <name>_m, the rebound y_max): "tip" (a free end),
+    // "midspan" (a beam held at both ends) or "point" (initial.position on such a beam).
+    std::string watched_name = "tip";
+    double watched_x_over_l = 1.0;         // where it sits, x/l
 };
 
 // Builds the transient problem of c. Throws InputError ("key: reason") when the case fails

@@ -162,6 +162,8 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
     j["tau2"] = scaled(s.T2_first, w1);
     j["tau_p"] = scaled(s.Tp, w1);
     j["cycles"] = {{"support", s.cycle_support}, {"T_s", s.T}, {"T1_s", s.T1}, {"T2_s", s.T2}};
+    // y_max, z_max and tip_min are of this point (the free end, or mid-span of a bridge).
+    j["watched_point"] = {{"name", b.watched_name}, {"x_over_l", b.watched_x_over_l}};
     j["y_max_m"] = opt(s.y_max);
     j["z_max"] = opt(s.z_max);
     j["y_max_contact_m"] = opt(s.y_max_contact);
@@ -186,10 +188,10 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
     return j;
 }
 
-CsvTable history_csv(const TransientResult& r) {
+CsvTable history_csv(const TransientResult& r, const std::string& watched) {
     const TimeHistory& h = r.history;
     CsvTable t;
-    t.header = {"t_s", "tip_m", "tip_velocity_m_s"};
+    t.header = {"t_s", watched + "_m", watched + "_velocity_m_s"};
     for (std::size_t k = 0; k < h.contact_v.size(); ++k) {
         const std::string p = "contact" + std::to_string(k);
         t.header.insert(t.header.end(), {p + "_m", p + "_velocity_m_s", p + "_force_n"});
@@ -233,7 +235,7 @@ CsvTable events_csv(const TransientResult& r, const ImpactSummary& s) {
 
 OutputFiles transient_files(const Case& c, const BuiltProblem& b, const TransientResult& r, const ImpactSummary& s,
                             const SwitchingLedger* switching) {
-    return {{"history.csv", history_csv(r).str()},
+    return {{"history.csv", history_csv(r, b.watched_name).str()},
             {"events.csv", events_csv(r, s).str()},
             {"summary.json", transient_summary_json(c, b, r, s, switching).dump(2) + "\n"}};
 }

@@ -25,9 +25,9 @@ nlohmann::json switching_json(const SwitchingLedger& l);
 nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, const TransientResult& r,
                                       const ImpactSummary& s, const SwitchingLedger* switching = nullptr);
 
-// t_s, tip_m, tip_velocity_m_s, per support k: contact<k>_m, contact<k>_velocity_m_s,
-// contact<k>_force_n, then the energy terms in J.
-CsvTable history_csv(const TransientResult& r);
+// t_s, <watched>_m, <watched>_velocity_m_s (watched: "tip", "midspan" or "point", BuiltProblem),
+// per support k: contact<k>_m, contact<k>_velocity_m_s, contact<k>_force_n, then the energy terms in J.
+CsvTable history_csv(const TransientResult& r, const std::string& watched = "tip");
 
 // One row per contact episode with the index of the impact it belongs to.
 CsvTable events_csv(const TransientResult& r, const ImpactSummary& s);

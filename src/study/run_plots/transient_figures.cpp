@@ -128,22 +128,22 @@ FigureSpec group_figure(const RunTable& h, int it, const UnitGroup& g, const std
     return f;
 }
 
-FigureSpec phase_figure(const RunTable& h, int iy, int iv) {
-    FigureSpec f = run_figure("transient_phase", "Phase portrait of the tip",
-                              "Tip velocity against tip displacement (history.csv); the dot marks the start.");
+FigureSpec phase_figure(const RunTable& h, int iy, int iv, const std::string& point) {
+    FigureSpec f = run_figure("transient_phase", "Phase portrait of the " + point,
+                              "Velocity against displacement of the " + point + " (history.csv); the dot marks the start.");
     const auto& y = h.columns[static_cast<std::size_t>(iy)];
     const auto& v = h.columns[static_cast<std::size_t>(iv)];
     const DisplayUnit yu = display_unit("m", largest_magnitude({&y}));
     const DisplayUnit vu = display_unit("m/s", largest_magnitude({&v}));
     CsvText data;
-    data.header = {"tip [" + yu.text + "]", "tip velocity [" + vu.text + "]"};
+    data.header = {point + " [" + yu.text + "]", point + " velocity [" + vu.text + "]"};
     for (std::size_t r : rows_to_draw({&y, &v}, h.rows)) data.add({cell(y[r] * yu.factor), cell(v[r] * vu.factor)});
     f.data = {{"transient_phase.csv", data.str()}};
     double ylo = 0.0, yhi = 0.0, vlo = 0.0, vhi = 0.0;
     finite_range({&y}, ylo, yhi);
     finite_range({&v}, vlo, vhi);
     std::ostringstream p;
-    p << gp_frame(axis_label("tip displacement", yu), axis_label("tip velocity", vu)) << gp_range("x", ylo * yu.factor, yhi * yu.factor)
+    p << gp_frame(axis_label(point + " displacement", yu), axis_label(point + " velocity", vu)) << gp_range("x", ylo * yu.factor, yhi * yu.factor)
       << gp_range("y", vlo * vu.factor, vhi * vu.factor) << "set key off\n";
     if (std::isfinite(y[0]) && std::isfinite(v[0])) {
         p << "set label 1 '' at first " << cell(y[0] * yu.factor) << ", first " << cell(v[0] * vu.factor)
@@ -186,9 +186,18 @@ std::vector<FigureSpec> transient_figures(const std::string& dir, std::vector<st
     }
     std::vector<FigureSpec> figures;
     for (const UnitGroup& g : groups) figures.push_back(group_figure(h, it, g, supports));
-    const int iy = h.find("tip_m"), iv = h.find("tip_velocity_m_s");
+    // The watched point: the free end (tip), or mid-span / a point of a beam held at both ends.
+    int iy = -1, iv = -1;
+    std::string point;
+    for (const char* w : {"tip", "midspan", "point"}) {
+        if (iy < 0 || iv < 0) {
+            iy = h.find(std::string(w) + "_m");
+            iv = h.find(std::string(w) + "_velocity_m_s");
+            point = w;
+        }
+    }
     if (iy >= 0 && iv >= 0 && has_finite(h.columns[static_cast<std::size_t>(iy)]) && has_finite(h.columns[static_cast<std::size_t>(iv)])) {
-        figures.push_back(phase_figure(h, iy, iv));
+        figures.push_back(phase_figure(h, iy, iv, point == "point" ? "watched point" : point));
     }
     return figures;
 }
