@@ -62,7 +62,10 @@ extern "C" void on_stop_signal(int signal) {
 // mpirun end the job) it must not count as the second signal that ends the process at once.
 extern "C" void on_mpirun_continue(int) {
     long long first = 0;
-    if (g_first_ns.compare_exchange_strong(first, now_ns())) vi::request_stop(SIGTERM);
+    if (g_first_ns.compare_exchange_strong(first, now_ns())) {
+        vi::note_launcher_stop();
+        vi::request_stop(SIGTERM);
+    }
 }
 
 bool under_mpirun() { return std::getenv("OMPI_COMM_WORLD_SIZE") != nullptr; }

@@ -8,6 +8,7 @@ namespace {
 
 std::atomic<bool> g_stop{false};
 std::atomic<int> g_signal{0};
+std::atomic<bool> g_launcher{false};
 static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free,
               "a signal handler may only touch lock-free atomics");
 
@@ -31,9 +32,13 @@ void request_stop(int signal) noexcept {
 
 int stop_signal() noexcept { return g_signal.load(); }
 
+void note_launcher_stop() noexcept { g_launcher.store(true); }
+bool launcher_stop() noexcept { return g_launcher.load(); }
+
 void clear_stop() noexcept {
     g_stop.store(false);
     g_signal.store(0);
+    g_launcher.store(false);
 }
 
 ScopedTimeLimit::ScopedTimeLimit(double seconds, std::string setting)

@@ -40,6 +40,10 @@ std::atomic<bool>& stop_flag();
 void request_stop(int signal) noexcept;
 // The signal that requested the stop, or 0.
 int stop_signal() noexcept;
+// Marks the stop as the launcher's (mpirun ending the job: it will go on to SIGTERM and SIGKILL
+// the process); safe inside a signal handler. launcher_stop() tells.
+void note_launcher_stop() noexcept;
+bool launcher_stop() noexcept;
 // Clears the flag and the signal (start of a command, or of a test).
 void clear_stop() noexcept;
 
