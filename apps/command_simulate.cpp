@@ -97,6 +97,12 @@ CommandBody add_simulate_command(CLI::App& app) {
                          "solver.min_search_step)\n",
                          opt->case_path.c_str(), run.result.stats.unproven_excess);
         }
+        if (!run.result.stats.fallback_reason.empty()) {
+            std::fprintf(stderr,
+                         "vibroimpact: warning: %s: computed by CVODE, not the exact solver: %s (summary.json: "
+                         "solver.fallback_reason; solver.fallback = \"none\" makes this an error)\n",
+                         opt->case_path.c_str(), run.result.stats.fallback_reason.c_str());
+        }
         const OutputFiles files =
             transient_files(c, run.built, run.result, run.summary, run.switching ? &*run.switching : nullptr);
         // Last chance to stop: from here the results are complete and go out together.

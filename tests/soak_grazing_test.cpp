@@ -61,7 +61,11 @@ TEST(SoakGrazing, EveryPointOkWithoutChatterOrTimeout) {
             kLimitSeconds);
         ASSERT_FALSE(r.hung) << s.name << ": the sweep did not end within " << kLimitSeconds << " s";
         ASSERT_EQ(r.exit_code, 0) << s.name << ": " << r.err;
-        const std::vector<std::string> st = statuses(test::read_text(out + "/sweep.csv"));
+        const std::string csv = test::read_text(out + "/sweep.csv");
+        const std::vector<std::string> st = statuses(csv);
+        // Grazing is the exact solver's own business: no point may need the CVODE fallback either.
+        int fallbacks = 0;
+        for (std::size_t at = csv.find(",cvode_fallback,"); at != std::string::npos; at = csv.find(",cvode_fallback,", at + 1)) ++fallbacks;
         std::map<std::string, int> tally;
         int errors = 0, timeouts = 0, chatters = 0;
         for (const std::string& status : st) {
@@ -70,12 +74,13 @@ TEST(SoakGrazing, EveryPointOkWithoutChatterOrTimeout) {
             timeouts += status.find("timeout:") != std::string::npos ? 1 : 0;
             chatters += status.find("without end") != std::string::npos || status.find("chatter") != std::string::npos;
         }
-        std::printf("soak %s: %zu points in %.1f s: %d ok, %d error, %d timeout, %d chatter\n", s.name, st.size(),
-                    r.seconds, tally["ok"], errors, timeouts, chatters);
+        std::printf("soak %s: %zu points in %.1f s: %d ok, %d error, %d timeout, %d chatter, %d by the CVODE fallback\n",
+                    s.name, st.size(), r.seconds, tally["ok"], errors, timeouts, chatters, fallbacks);
         EXPECT_GE(st.size(), 200u) << s.name;
         EXPECT_EQ(errors, 0) << s.name;
         EXPECT_EQ(timeouts, 0) << s.name;
         EXPECT_EQ(chatters, 0) << s.name;
+        EXPECT_EQ(fallbacks, 0) << s.name;
         for (const auto& [status, n] : tally) EXPECT_EQ(status, "ok") << s.name << ": " << n << " points: " << status;
         fs::remove_all(dir);
     }

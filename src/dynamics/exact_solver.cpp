@@ -14,6 +14,7 @@
 #include "dynamics/event_search.hpp"
 #include "dynamics/exact_state.hpp"
 #include "dynamics/piecewise_linear_form.hpp"
+#include "dynamics/state_modes.hpp"
 #include "model/run_control.hpp"
 
 namespace vi {
@@ -123,6 +124,22 @@ std::string endless_switching_message(const PiecewiseLinearProblem& p, int only,
            "; give the supports some damping (damping_ratio) or move them apart";
 }
 
+// The piece of one contact state from t0; a state that cannot be decomposed is reported with the
+// time and the closed contacts, which is what the caller (or the user) needs to place it.
+const PieceSolution& piece_at(ExactModel& model, const std::vector<bool>& active, const Eigen::VectorXd& x, double t0,
+                              double t1) {
+    try {
+        return model.piece(active, x, t0, t1);
+    } catch (const NotDiagonalisable& e) {
+        std::string closed;
+        for (std::size_t c = 0; c < active.size(); ++c) {
+            if (active[c]) closed += (closed.empty() ? "" : ", ") + ("supports[" + std::to_string(c) + "]");
+        }
+        throw NotDiagonalisable(std::string(e.what()) + " at t = " + std::to_string(t0 * 1e6) + " us, closed: " +
+                                (closed.empty() ? std::string("none") : closed));
+    }
+}
+
 }  // namespace
 
 TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions& o) {
@@ -181,7 +198,7 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions&
     double last_switch_t = -1.0;
 
     {
-        const PieceSolution& first = model.piece(active, x, 0.0, p.t_end);
+        const PieceSolution& first = piece_at(model, active, x, 0.0, p.t_end);
         for (int c = 0; c < nc; ++c) {
             if (active[static_cast<std::size_t>(c)]) open_episode(c, 0.0, first.contact_velocity(c).value(0.0));
         }
@@ -199,7 +216,7 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions&
         const double piece_end = bit == breaks.end() ? p.t_end : std::min(p.t_end, *bit);
         const auto t_piece = Clock::now();
         const double dec_before = model.decomposition_seconds();
-        const PieceSolution& s = model.piece(active, x, t, piece_end);
+        const PieceSolution& s = piece_at(model, active, x, t, piece_end);
         res.stats.propagation_s += seconds_since(t_piece) - (model.decomposition_seconds() - dec_before);
         const double span = piece_end - t;
         // At rest: with nothing left to change the forcing, a motion whose energy about this piece's
@@ -313,7 +330,7 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions&
             // is so strong for the mesh (a plastic stop: Cc far above the nearest element's critical
             // damping) that the sign of its force at the opening is roundoff. Both are ill-posed.
             if (who >= 0) zero_length_support = zero_length_run == 0 || zero_length_support == who ? who : -2;
-            if (++zero_length_run > 50) throw std::runtime_error(endless_switching_message(p, zero_length_support, who, t));
+            if (++zero_length_run > 50) throw EndlessSwitching(endless_switching_message(p, zero_length_support, who, t));
         } else {
             zero_length_run = 0;
             zero_length_support = -1;

@@ -404,8 +404,8 @@ StateModes decompose_state(const BaseModes& b, const PiecewiseLinearProblem& p, 
         s.unit.clear();
         check_run();  // the dense eigen solve of 2n x 2n is one call: seconds on a fine mesh
         if (!dense_modes(b, state_matrix(b, p, active), s) || (s.residual = check_residual(b, p, s)) > kResidualLimit) {
-            throw std::runtime_error("transient: the system of one contact state is not diagonalisable "
-                                     "(defective eigenvalues); change the damping slightly");
+            throw NotDiagonalisable("transient: the system of one contact state is not diagonalisable "
+                                     "(defective eigenvalues)");
         }
     }
     return s;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/exact_give_up.hpp"
 #include "dynamics/piecewise_linear_problem.hpp"
 
 namespace vi {
@@ -85,7 +86,7 @@ Eigen::MatrixXd state_matrix(const BaseModes& b, const PiecewiseLinearProblem& p
 
 // Decomposes the contact set: closed form for no contact, a secular-equation (Aberth) solution of
 // the rank-one update for one contact, a dense eigen solve otherwise or when the fast path cannot
-// verify itself. Throws std::runtime_error when even the dense path is not diagonalisable.
+// verify itself. Throws NotDiagonalisable when even the dense path is not diagonalisable.
 StateModes decompose_state(const BaseModes& b, const PiecewiseLinearProblem& p, const std::vector<bool>& active);
 
 }  // namespace vi

@@ -66,6 +66,9 @@ struct SolverStats {
     int basis_modes = 0;
     double initial_projection_error = 0.0;
     std::string method;            // "exact" or "cvode"
+    // Why the exact solver handed the run to CVODE (a contact state it could not decompose), or
+    // empty when the method that ran is the one chosen.
+    std::string fallback_reason;
 };
 
 // Exact extremes of the watched point and of the first contact's point after the first contact

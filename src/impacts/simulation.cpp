@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "dynamics/cvode_solver.hpp"
+#include "dynamics/exact_give_up.hpp"
 #include "model/input_error.hpp"
 #include "model/run_estimate.hpp"
 
@@ -33,12 +35,12 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
     SimulationRun run;
     run.built = build_transient_problem(c);
     const TransientProblem& p = run.built.problem;
+    CvodeOptions co;
+    co.rtol = c.solver.rtol;
+    co.max_steps = c.solver.max_steps;
+    co.max_events = c.solver.max_events;
+    co.reduced_modes = c.solver.reduced_modes;
     if (!use_exact(c, p)) {
-        CvodeOptions co;
-        co.rtol = c.solver.rtol;
-        co.max_steps = c.solver.max_steps;
-        co.max_events = c.solver.max_events;
-        co.reduced_modes = c.solver.reduced_modes;
         run.result = solve_cvode(p, co);
     } else {
         ExactOptions eo;
@@ -47,7 +49,17 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
         eo.h_min_periods = c.solver.min_search_step;
         eo.max_events = c.solver.max_events;
         eo.max_steps = c.solver.max_steps;
-        run.result = solve_exact(p, eo);
+        try {
+            run.result = solve_exact(p, eo);
+        } catch (const ExactSolverGaveUp& e) {
+            // The same model by the other solver (they agree to about 1e-9 where both run,
+            // docs/model.md §13): an answer, with why it came from CVODE in the summary.
+            if (c.solver.fallback == SolverSettings::Fallback::none) {
+                throw std::runtime_error(std::string(e.what()) + "; solver.fallback = \"cvode\" computes the run with CVODE instead");
+            }
+            run.result = solve_cvode(p, co);
+            run.result.stats.fallback_reason = e.what();
+        }
     }
     const std::vector<int> contacts = contact_indices(p.forces);
     bool touching_at_start = false;

@@ -256,7 +256,7 @@ void read_solver(const toml::table& t, Position at, Reading& r, SolverSettings& 
     FieldReader f(t, "solver", at, r.log,
                   {"method", "horizon", "output_step", "group_gap", "grouping", "settle_tolerance", "settle_rule",
                    "settle_velocity", "rtol", "min_search_step", "max_events", "max_steps", "max_static_iterations",
-                   "reduced_modes"});
+                   "reduced_modes", "fallback"});
     if (auto v = f.choice("method", {"auto", "exact", "cvode"}, false)) {
         s.method = *v == "cvode"   ? SolverSettings::Method::cvode
                    : *v == "exact" ? SolverSettings::Method::exact
@@ -296,6 +296,9 @@ void read_solver(const toml::table& t, Position at, Reading& r, SolverSettings& 
     if (auto v = f.integer("max_events", false)) s.max_events = static_cast<long>(*v);
     if (auto v = f.integer("max_steps", false)) s.max_steps = static_cast<long>(*v);
     if (auto v = f.integer("max_static_iterations", false)) s.max_static_iterations = static_cast<int>(std::clamp<long long>(*v, -1, 1000000000));
+    if (auto v = f.choice("fallback", {"cvode", "none"}, false)) {
+        s.fallback = *v == "none" ? SolverSettings::Fallback::none : SolverSettings::Fallback::cvode;
+    }
     if (auto v = f.integer("reduced_modes", false)) s.reduced_modes = static_cast<int>(std::clamp<long long>(*v, -1, 1000000000));
     f.finish();
 }

@@ -188,6 +188,10 @@ struct SolverSettings {
     long max_events = 1000000;       // contact switches and load breakpoints over the horizon
     long max_steps = 50000000;       // exact: event and extremum search evaluations; cvode: internal steps
     int max_static_iterations = 200; // Newton iterations of a static solution (each contact set counts)
+    // What happens when the exact solver meets a contact state it cannot decompose (defective
+    // eigenvalues): the whole transient is computed again by CVODE (reported), or the run fails.
+    enum class Fallback { cvode, none };
+    Fallback fallback = Fallback::cvode;
 };
 
 // Where a case came from: the file and the line of every key read, for messages about problems

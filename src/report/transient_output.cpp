@@ -183,6 +183,7 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
         j["solver"]["basis_modes"] = r.stats.basis_modes;
         j["solver"]["initial_projection_error"] = r.stats.initial_projection_error;
     }
+    if (!r.stats.fallback_reason.empty()) j["solver"]["fallback_reason"] = r.stats.fallback_reason;
     if (switching) j["switching"] = switching_json(*switching);
     j["resolved"] = resolved_case_json(c, b, s);
     return j;

@@ -42,7 +42,7 @@ std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes)
         {"T1_s", "s"},             {"T2_s", "s"},   {"Tp_s", "s"},      {"Tp_reason", ""},
         {"tau", "-"},              {"tau1", "-"},   {"tau2", "-"},      {"tau_p", "-"},
         {"y_max_m", "m"},          {"z_max", "-"},  {"y_max_contact_m", "m"}, {"tip_min_m", "m"},
-        {"unproven_excess", "-"},
+        {"unproven_excess", "-"}, {"solver", ""},
         {"closing_time_s", "s"},   {"bounces", ""},  {"stable_contact_s", "s"}, {"release_time_s", "s"},
     };
     for (int k = 1; k <= kSweepImpactColumns; ++k) {
@@ -81,6 +81,8 @@ std::vector<SweepCell> simulate_cells(const SimulationRun& run) {
         // Only the exact solver proves its event searches (CVODE's root finding may step over a
         // sign change unseen): empty for CVODE.
         run.result.stats.method == "exact" ? SweepCell(run.result.stats.unproven_excess) : SweepCell(),
+        // The solver that computed the point; "cvode_fallback" when the exact solver handed it over.
+        std::string(run.result.stats.fallback_reason.empty() ? run.result.stats.method : "cvode_fallback"),
     };
     // The switching ledger's headline; empty without electrodes (and where it has no such time).
     if (const auto& l = run.switching) {
