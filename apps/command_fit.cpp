@@ -2,6 +2,7 @@
 // estimated from a measured trajectory of the watched point or from measured features, with their
 // uncertainty (docs/calibration.md).
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -142,6 +143,9 @@ int run_trajectory(const Options& o, const Case& c, std::vector<FitParameter> pa
         s1["samples"] = two.split_samples;
         s1["record_end_s"] = two.split_time;
         s2["samples"] = data.t.size();
+        for (double e : two.stage2_conditional_std_error) {
+            s2["std_error_given_stage1"].push_back(std::isfinite(e) ? nlohmann::json(e) : nlohmann::json(nullptr));
+        }
         j["two_stage"] = {{"first_impact_s", two.split_time}, {"stage1", s1}, {"stage2", s2}};
         j["converged"] = two.stage1.converged && two.stage2.converged;
         j["estimate"] = nlohmann::json::object();

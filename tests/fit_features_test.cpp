@@ -93,6 +93,58 @@ TEST(FitFeatures, AFeatureSetThatCannotDetermineAParameterSaysSo) {
     }
 }
 
+// Several starts on threads: the same outcome for any thread count; through the command, the table
+// of starts in fit.json.
+TEST(FitFeatures, SeveralStartsGiveTheSameResultOnAnyThreadCount) {
+    const Case truth = paper_case();
+    const MeasuredFeatures data = measured(truth, {{"f1_hz", 500.0}, {"q1", 3.0}}, 8u);
+    Case start = truth;
+    start.material.youngs_modulus = 150e9;
+    start.damping.ratio1 = 0.008;
+    const std::vector<FitParameter> params = {parse_fit_parameter("material.youngs_modulus=100e9:300e9", start),
+                                              parse_fit_parameter("damping.ratios[0]", start)};
+    FitOptions o;
+    o.starts = 5;
+    o.threads = 1;
+    const FitResult serial = fit_features(start, params, data, o);
+    o.threads = 3;
+    const FitResult threaded = fit_features(start, params, data, o);
+    ASSERT_EQ(serial.starts.size(), 5u);
+    EXPECT_EQ(serial.best, threaded.best);
+    EXPECT_EQ(serial.estimate, threaded.estimate);
+    EXPECT_EQ(serial.std_error, threaded.std_error);
+    for (std::size_t k = 0; k < 5; ++k) {
+        EXPECT_EQ(serial.starts[k].start, threaded.starts[k].start);
+        EXPECT_EQ(serial.starts[k].end, threaded.starts[k].end);
+        EXPECT_EQ(serial.starts[k].cost, threaded.starts[k].cost);
+    }
+    // The first start is the case's values; the others lie within the bounds (E) or within a factor
+    // 2 of the start (zeta_1, unbounded).
+    EXPECT_EQ(serial.starts[0].start, (std::vector<double>{150e9, 0.008}));
+    for (const StartRun& s : serial.starts) {
+        EXPECT_GE(s.start[0], 100e9);
+        EXPECT_LE(s.start[0], 300e9);
+        EXPECT_GE(s.start[1], 0.004);
+        EXPECT_LE(s.start[1], 0.016);
+        EXPECT_TRUE(s.converged) << s.message;
+    }
+    // One smooth minimum: every start ends there.
+    EXPECT_EQ(serial.distinct_minima, 1);
+
+    const std::string dir = test::make_temp_dir();
+    std::ofstream(dir + "/f.csv") << "name,value,sigma\nf1_hz," << data.features[0].value << ",500\nq1,"
+                                  << data.features[1].value << ",3\n";
+    const auto r = test::run_vibroimpact({"fit", test::source_path("examples/paper/free_impact_tip.toml"), "--features",
+                                          dir + "/f.csv", "--fit", "material.youngs_modulus=100e9:300e9", "--fit",
+                                          "damping.ratios[0]", "--starts", "4", "--threads", "2", "--out", dir + "/out"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("Starts: 4, 4 converged"), std::string::npos) << r.out;
+    const std::string json = test::read_text(dir + "/out/fit.json");
+    EXPECT_NE(json.find("\"distinct_minima\": 1"), std::string::npos) << json;
+    EXPECT_NE(json.find("\"feature_residuals\""), std::string::npos);
+    fs::remove_all(dir);
+}
+
 TEST(FitFeatures, BadFeatureFilesAreExit2NamingFileAndLine) {
     const std::string dir = test::make_temp_dir();
     const auto write = [&](const std::string& name, const std::string& text) {

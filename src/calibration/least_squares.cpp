@@ -151,28 +151,38 @@ double radical_inverse(std::size_t k, std::size_t b) {
     return x;
 }
 
-// The estimate's uncertainty from the Jacobian there (Ceres' central differences, as the solve).
-void add_uncertainty(const LeastSquaresProblem& p, FitResult& r) {
+// The Jacobian of the residuals at x in scaled parameters (Ceres' central differences, as the
+// solve), the residuals there, and the model runs it took.
+Eigen::MatrixXd scaled_jacobian(const LeastSquaresProblem& p, const std::vector<double>& x, std::vector<double>& res,
+                                int& calls) {
     const int n = static_cast<int>(p.params.size());
-    const int samples = p.residuals;
     std::vector<double> z(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) z[static_cast<std::size_t>(i)] = r.estimate[static_cast<std::size_t>(i)] / p.params[static_cast<std::size_t>(i)].scale();
+    for (int i = 0; i < n; ++i) z[static_cast<std::size_t>(i)] = x[static_cast<std::size_t>(i)] / p.params[static_cast<std::size_t>(i)].scale();
     CeresSetup s;
     set_up(s, p, z);
     double cost_value = 0.0;
-    std::vector<double> res;
     ceres::CRSMatrix crs;
     const bool ok = s.problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost_value, &res, nullptr, &crs);
-    r.simulations += s.residual->calls();
+    calls += s.residual->calls();
     if (s.residual->stopped() || stop_flag().load()) throw StopRequested(stop_signal());
     if (!ok) throw std::runtime_error("the Jacobian at the estimate could not be computed: a design a difference step away failed to run");
-    r.cost = cost_value;
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(samples, n);
+    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(p.residuals, n);
     for (int row = 0; row < crs.num_rows; ++row) {
         for (int k = crs.rows[static_cast<std::size_t>(row)]; k < crs.rows[static_cast<std::size_t>(row) + 1]; ++k) {
             J(row, crs.cols[static_cast<std::size_t>(k)]) = crs.values[static_cast<std::size_t>(k)];
         }
     }
+    return J;
+}
+
+// The estimate's uncertainty from the Jacobian there.
+void add_uncertainty(const LeastSquaresProblem& p, FitResult& r) {
+    const int n = static_cast<int>(p.params.size());
+    const int samples = p.residuals;
+    std::vector<double> res;
+    const Eigen::MatrixXd J = scaled_jacobian(p, r.estimate, res, r.simulations);
+    r.cost = 0.0;
+    for (double v : res) r.cost += 0.5 * v * v;
     double ssr_scaled = 0.0;
     for (double v : res) ssr_scaled += v * v;
     // The covariance s2 (J^T J)^-1 does not depend on how the residuals were scaled.
@@ -235,6 +245,37 @@ void add_uncertainty(const LeastSquaresProblem& p, FitResult& r) {
 }
 
 }  // namespace
+
+Eigen::MatrixXd jacobian_at(const LeastSquaresProblem& p, const std::vector<double>& x, int& calls) {
+    std::vector<double> res;
+    Eigen::MatrixXd J = scaled_jacobian(p, x, res, calls);
+    for (std::size_t i = 0; i < p.params.size(); ++i) J.col(static_cast<Eigen::Index>(i)) /= p.params[i].scale();
+    return J;
+}
+
+Eigen::MatrixXd covariance(const FitResult& r) {
+    const Eigen::Index n = static_cast<Eigen::Index>(r.std_error.size());
+    Eigen::MatrixXd v(n, n);
+    for (Eigen::Index a = 0; a < n; ++a) {
+        for (Eigen::Index b = 0; b < n; ++b) {
+            v(a, b) = r.correlation(a, b) * r.std_error[static_cast<std::size_t>(a)] * r.std_error[static_cast<std::size_t>(b)];
+        }
+    }
+    return v;
+}
+
+void set_covariance(FitResult& r, const Eigen::MatrixXd& v) {
+    for (Eigen::Index a = 0; a < v.rows(); ++a) {
+        const std::size_t u = static_cast<std::size_t>(a);
+        if (!r.undetermined[u].empty()) continue;
+        r.std_error[u] = std::sqrt(v(a, a));
+        r.ci_low[u] = r.estimate[u] - 1.96 * r.std_error[u];
+        r.ci_high[u] = r.estimate[u] + 1.96 * r.std_error[u];
+        for (Eigen::Index b = 0; b < v.cols(); ++b) {
+            if (r.undetermined[static_cast<std::size_t>(b)].empty()) r.correlation(a, b) = v(a, b) / std::sqrt(v(a, a) * v(b, b));
+        }
+    }
+}
 
 std::vector<std::vector<double>> start_points(const std::vector<FitParameter>& params, int count) {
     static constexpr std::size_t kPrimes[] = {2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53, 59, 61, 67, 71};

@@ -75,4 +75,14 @@ std::vector<std::vector<double>> start_points(const std::vector<FitParameter>& p
 // computed. The case's start must run (the caller checks it; a failed start is reported, not thrown).
 FitResult fit_least_squares(const LeastSquaresProblem& p, const FitOptions& o);
 
+// The Jacobian d r / d x of p's residuals at x [residual unit / SI] by central differences; adds the
+// model runs to `calls`. Throws std::runtime_error when a difference step cannot run.
+Eigen::MatrixXd jacobian_at(const LeastSquaresProblem& p, const std::vector<double>& x, int& calls);
+
+// The covariance of r's estimate [SI^2] from its standard errors and correlations (NaN for the
+// undetermined parameters), and back: set_covariance replaces the standard errors, intervals and
+// correlations of r's determined parameters by those of v.
+Eigen::MatrixXd covariance(const FitResult& r);
+void set_covariance(FitResult& r, const Eigen::MatrixXd& v);
+
 }  // namespace vi

@@ -48,6 +48,25 @@ double lowest_shift(const std::vector<FitParameter>& params, const TrajectoryFix
     return low;
 }
 
+// The least-squares problem of a trajectory: residual (model - data) / sigma_k, or / max |data|
+// without a sigma column (Ceres' tolerances are absolute, and a record in metres, 1e-6, would look
+// converged at the start).
+LeastSquaresProblem trajectory_problem(const Case& base, const std::vector<FitParameter>& params,
+                                       const MeasuredTrajectory& data, const TrajectoryFixed& fixed) {
+    double unit = 0.0;
+    for (double v : data.value) unit = std::max(unit, std::abs(v));
+    if (!(unit > 0.0)) unit = 1.0;
+    LeastSquaresProblem p;
+    p.params = params;
+    p.residuals = static_cast<int>(data.t.size());
+    p.sigma_known = !data.sigma.empty();
+    p.evaluate = [&base, params, &data, fixed, unit](const std::vector<double>& x, double* r) {
+        const std::vector<double> m = model_trajectory(base, params, x, data.t, data.column, fixed);
+        for (std::size_t k = 0; k < m.size(); ++k) r[k] = (m[k] - data.value[k]) / (data.sigma.empty() ? unit : data.sigma[k]);
+    };
+    return p;
+}
+
 }  // namespace
 
 std::string watched_point_name(const Case& c) { return build_transient_problem(c).watched_name; }
@@ -107,19 +126,7 @@ FitResult fit_trajectory(const Case& base, const std::vector<FitParameter>& para
     for (const FitParameter& p : params) x0.push_back(p.start);
     (void)model_trajectory(base, params, x0, data.t, data.column, fixed);
 
-    // Without a per-sample sigma the residuals are divided by the record's largest |value|: Ceres'
-    // tolerances are absolute, and a record in metres (1e-6) would look converged at the start.
-    double unit = 0.0;
-    for (double v : data.value) unit = std::max(unit, std::abs(v));
-    if (!(unit > 0.0)) unit = 1.0;
-    LeastSquaresProblem p;
-    p.params = params;
-    p.residuals = samples;
-    p.sigma_known = !data.sigma.empty();
-    p.evaluate = [&](const std::vector<double>& x, double* r) {
-        const std::vector<double> m = model_trajectory(base, params, x, data.t, data.column, fixed);
-        for (std::size_t k = 0; k < m.size(); ++k) r[k] = (m[k] - data.value[k]) / (data.sigma.empty() ? unit : data.sigma[k]);
-    };
+    const LeastSquaresProblem p = trajectory_problem(base, params, data, fixed);
     FitResult r = fit_least_squares(p, o);
     r.model = model_trajectory(base, params, r.estimate, data.t, data.column, fixed);
     double ssr = 0.0;
@@ -197,6 +204,25 @@ TwoStageFit fit_two_stage(const Case& base, const std::vector<FitParameter>& par
     f.estimate.assign(params.size(), 0.0);
     for (std::size_t a = 0; a < p1.size(); ++a) f.estimate[f.stage1_params[a]] = f.stage1.estimate[a];
     for (std::size_t a = 0; a < p2.size(); ++a) f.estimate[f.stage2_params[a]] = f.stage2.estimate[a];
+
+    // Stage 2 held stage 1's values fixed, so its own intervals miss their uncertainty: to first
+    // order the stage 2 estimate moves by G d1 when stage 1's moves by d1, G = -(J2^T J2)^-1 J2^T J1
+    // (J1, J2: the whole record's residuals against each stage's parameters), and its covariance
+    // is V2 + G V1 G^T. An undetermined stage 1 parameter carries none (its variance is unknown).
+    f.stage2_conditional_std_error = f.stage2.std_error;
+    const LeastSquaresProblem whole = trajectory_problem(start, params, data, at_start);
+    const Eigen::MatrixXd J = jacobian_at(whole, f.estimate, f.stage2.simulations);
+    Eigen::MatrixXd J1(J.rows(), static_cast<Eigen::Index>(p1.size())), J2(J.rows(), static_cast<Eigen::Index>(p2.size()));
+    for (std::size_t a = 0; a < p1.size(); ++a) J1.col(static_cast<Eigen::Index>(a)) = J.col(static_cast<Eigen::Index>(f.stage1_params[a]));
+    for (std::size_t a = 0; a < p2.size(); ++a) J2.col(static_cast<Eigen::Index>(a)) = J.col(static_cast<Eigen::Index>(f.stage2_params[a]));
+    const Eigen::MatrixXd G = -(J2.transpose() * J2).ldlt().solve(J2.transpose() * J1);
+    Eigen::MatrixXd V1 = covariance(f.stage1);
+    for (Eigen::Index a = 0; a < V1.rows(); ++a) {
+        for (Eigen::Index b = 0; b < V1.cols(); ++b) {
+            if (!std::isfinite(V1(a, b))) V1(a, b) = 0.0;
+        }
+    }
+    set_covariance(f.stage2, covariance(f.stage2) + G * V1 * G.transpose());
     return f;
 }
 

@@ -49,12 +49,14 @@ FitResult fit_trajectory(const Case& base, const std::vector<FitParameter>& para
 // A two-stage fit: stage 1 fits the parameters that are not contact parameters (not under
 // supports[...]; the nuisance ones included) to the samples before the first impact's onset (of the
 // model at the start values, shifted by the start time shift); stage 2 fits the contact parameters
-// to the whole record with stage 1's values fixed.
+// to the whole record with stage 1's values fixed; stage 2's standard errors then take in stage
+// 1's uncertainty to first order (V2 + G V1 G^T, G the sensitivity of stage 2's estimate to stage 1's).
 struct TwoStageFit {
     std::vector<std::size_t> stage1_params, stage2_params;  // indices into the parameters
     double split_time = 0.0;                                // the first impact's onset in data time [s]
     std::size_t split_samples = 0;                          // samples before it
-    FitResult stage1, stage2;
+    FitResult stage1, stage2;                               // stage2's errors include stage 1's, propagated
+    std::vector<double> stage2_conditional_std_error;       // stage 2's with stage 1's values taken as exact
     std::vector<double> estimate;                           // every parameter, from its stage [SI]
 };
 
