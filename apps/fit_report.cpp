@@ -1,5 +1,6 @@
 #include "fit_report.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -14,6 +15,13 @@ std::string format(const char* f, double v) {
     char buf[64];
     std::snprintf(buf, sizeof buf, f, v);
     return buf;
+}
+
+// "low" or "high" when the estimate sits on a bound (within 1e-6 of the parameter's scale), else "".
+std::string at_bound(const FitParameter& p, double x) {
+    if (p.low && std::abs(x - *p.low) <= 1e-6 * p.scale()) return "low";
+    if (p.high && std::abs(x - *p.high) <= 1e-6 * p.scale()) return "high";
+    return "";
 }
 
 }  // namespace
@@ -38,6 +46,7 @@ nlohmann::json fit_result_json(const std::vector<FitParameter>& params, const Fi
         p["ci95"] = {number_or_null(r.ci_low[i]), number_or_null(r.ci_high[i])};
         p["determined"] = r.undetermined[i].empty();
         if (!r.undetermined[i].empty()) p["why_undetermined"] = r.undetermined[i];
+        if (!at_bound(params[i], r.estimate[i]).empty()) p["at_bound"] = at_bound(params[i], r.estimate[i]);
         j["parameters"].push_back(p);
     }
     for (Eigen::Index a = 0; a < r.correlation.rows(); ++a) {
@@ -66,10 +75,13 @@ std::string fit_result_text(const std::vector<FitParameter>& params, const FitRe
         const std::string name = params[i].name() + (params[i].nuisance() ? " (nuisance)" : "");
         if (r.undetermined[i].empty()) {
             out += "  " + name + " = " + format("%.6g", r.estimate[i]) + " +- " + format("%.3g", r.std_error[i]) + " (95 %: " +
-                   format("%.6g", r.ci_low[i]) + " .. " + format("%.6g", r.ci_high[i]) + ")\n";
+                   format("%.6g", r.ci_low[i]) + " .. " + format("%.6g", r.ci_high[i]) + ")";
         } else {
-            out += "  " + name + " = " + format("%.6g", r.estimate[i]) + ": NOT determined by the data (" + r.undetermined[i] + ")\n";
+            out += "  " + name + " = " + format("%.6g", r.estimate[i]) + ": NOT determined by the data (" + r.undetermined[i] + ")";
         }
+        const std::string bound = at_bound(params[i], r.estimate[i]);
+        if (!bound.empty()) out += "; AT ITS " + std::string(bound == "low" ? "LOWER" : "UPPER") + " BOUND (the data pull beyond it; the interval assumes a minimum inside)";
+        out += "\n";
     }
     if (r.starts.size() <= 1) return out;
     int converged = 0;
@@ -132,10 +144,14 @@ FigureSpec feature_figure(const MeasuredFeatures& data, const FitResult& r) {
     f.title = "Fitted model against the measured features";
     f.caption = "Each feature's residual (model - value) in units of its sigma; the band is +-1 sigma, the dashed lines +-2.";
     f.data = {{"fit.csv", feature_residuals_csv(data, r)}};
+    double top = 2.5;
+    for (std::size_t k = 0; k < data.features.size(); ++k) top = std::max(top, 1.15 * std::abs(r.residual[k] / data.features[k].sigma));
+    const std::string n = std::to_string(data.features.size());
     f.plot = "set datafile separator ','\nset key off\nset ylabel '(model - value) / sigma'\nset xtics rotate by -30 noenhanced\n"
-             "set style fill transparent solid 0.2 noborder\nset xrange [0.5:" + std::to_string(data.features.size()) + ".5]\n"
+             "set style fill transparent solid 0.2 noborder\nset xrange [-0.5:" + n + "-0.5]\nset yrange [-" + format("%.3g", top) +
+             ":" + format("%.3g", top) + "]\n"
              "plot 1 with filledcurves y1=-1 lc rgb 'gray', 2 dt 2 lc rgb 'gray', -2 dt 2 lc rgb 'gray', "
-             "'fit.csv' using 0:6:xtic(1) every ::1 with points pt 7 ps 1.5\n";
+             "'fit.csv' skip 1 using 0:6:xtic(1) with points pt 7 ps 1.5\n";
     return f;
 }
 
