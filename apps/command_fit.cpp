@@ -39,10 +39,10 @@ struct Options {
 };
 
 // A case key's error located in the case file; an error that already names its file or option as is.
-InputError in_case(const Case& c, const InputError& e) {
+InputError in_case(const Case& c, const InputError& e, const std::string& data_file) {
     const std::string what = e.what();
     const std::string key = what.substr(0, what.find(": "));
-    if (key.find(':') != std::string::npos || key.rfind("-", 0) == 0) return e;
+    if (key.find(':') != std::string::npos || key.rfind("-", 0) == 0 || key == data_file) return e;
     return locate_in_case(c, e);
 }
 
@@ -87,7 +87,7 @@ int run_features(const Options& o, const Case& c, const std::vector<FitParameter
     try {
         r = fit_features(c, params, data, fo);
     } catch (const InputError& e) {
-        throw in_case(c, e);
+        throw in_case(c, e, o.features);
     }
     nlohmann::json j = fit_result_json(params, r);
     j["command"] = command_line(o);
@@ -133,7 +133,7 @@ int run_trajectory(const Options& o, const Case& c, std::vector<FitParameter> pa
             one = fit_trajectory(c, params, data, fo);
         }
     } catch (const InputError& e) {
-        throw in_case(c, e);
+        throw in_case(c, e, o.data);
     }
     if (o.two_stage) {
         std::vector<FitParameter> p1, p2;

@@ -105,11 +105,17 @@ StartRun solve_from(const LeastSquaresProblem& p, const std::vector<double>& sta
     run.message = summary.message;
     run.iterations = static_cast<int>(summary.iterations.size());
     run.simulations = s.residual->calls();
-    // Ceres fails only when it cannot evaluate the model and its Jacobian at the start (a failed
-    // trial step later only shrinks the trust region).
-    const bool ran = summary.termination_type != ceres::FAILURE && std::isfinite(summary.final_cost);
+    // Ceres fails when it cannot evaluate the model and its Jacobian at an accepted point (a failed
+    // trial step only shrinks the trust region): at the start, the start cannot run; later, the
+    // last accepted point stands, not converged.
+    const bool failed = summary.termination_type == ceres::FAILURE;
+    const bool ran = std::isfinite(summary.final_cost) && (!failed || summary.iterations.size() > 1);
     run.cost = ran ? summary.final_cost : std::numeric_limits<double>::infinity();
-    if (!ran) run.message = "the model or its Jacobian cannot be computed at this start (" + summary.message + ")";
+    if (failed) {
+        run.message = (ran ? "stopped: a design a difference step away from the last estimate could not run; bound the "
+                             "parameters to designs that run ("
+                           : "the model or its Jacobian cannot be computed at this start (") + summary.message + ")";
+    }
     for (std::size_t i = 0; i < n; ++i) run.end.push_back(z[i] * p.params[i].scale());
     return run;
 }

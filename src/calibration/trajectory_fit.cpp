@@ -118,7 +118,7 @@ FitResult fit_trajectory(const Case& base, const std::vector<FitParameter>& para
     if (n == 0 || samples <= n) throw std::invalid_argument("fit_trajectory: need parameters and more samples than them");
     const bool shifted = std::any_of(params.begin(), params.end(),
                                      [](const FitParameter& p) { return p.kind == FitParameter::Kind::time_shift; });
-    if (!shifted && data.t.front() < fixed.time_shift) {
+    if (!shifted && fixed.time_shift == 0.0 && data.t.front() < 0.0) {
         throw InputError(data.file + ": t_s: the record must start at t >= 0 (the model's t = 0), or fit --time-shift");
     }
     // The start must run: a case that cannot is the user's to fix, not Ceres' to step around.
