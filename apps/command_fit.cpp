@@ -1,5 +1,6 @@
-// `vibroimpact fit CASE --data FILE --fit PATH[=LOW:HIGH] ...`: case values estimated from a measured
-// tip trajectory, with their uncertainty (docs/calibration.md).
+// `vibroimpact fit CASE (--data FILE | --features FILE) --fit PATH[=LOW:HIGH] ...`: case values
+// estimated from a measured trajectory of the watched point or from measured features, with their
+// uncertainty (docs/calibration.md).
 
 #include <cmath>
 #include <cstdio>
@@ -9,13 +10,16 @@
 #include <string>
 #include <vector>
 
+#include "calibration/feature_fit.hpp"
 #include "calibration/trajectory_fit.hpp"
 #include "commands.hpp"
 #include "figure_output.hpp"
+#include "fit_report.hpp"
 #include "io/case_reader.hpp"
 #include "io/number_text.hpp"
 #include "io/output_files.hpp"
 #include "model/input_error.hpp"
+#include "model/parallel_for.hpp"
 #include "model/run_control.hpp"
 #include "plot/figure_gnuplot.hpp"
 #include "stop_signals.hpp"
@@ -23,133 +27,211 @@
 namespace vi::cli {
 namespace {
 
-nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+struct Options {
+    std::string case_path, data, features, column;
+    std::vector<std::string> fit;
+    bool time_shift = false, scale = false, two_stage = false;
+    std::string time_shift_range, scale_range;
+    int max_iterations = 50, starts = 1, threads = 0;
+    std::string out = "out/fit";
+    std::string gnuplot = "gnuplot";
+    bool json = false;
+};
 
-nlohmann::json fit_json(const std::vector<FitParameter>& params, const MeasuredTrajectory& data, const FitResult& r,
-                        const std::string& command) {
+// A case key's error located in the case file; an error that already names its file or option as is.
+InputError in_case(const Case& c, const InputError& e, const std::string& data_file) {
+    const std::string what = e.what();
+    const std::string key = what.substr(0, what.find(": "));
+    if (key.find(':') != std::string::npos || key.rfind("-", 0) == 0 || key == data_file) return e;
+    return locate_in_case(c, e);
+}
+
+std::string command_line(const Options& o) {
+    std::string command = "vibroimpact fit " + o.case_path;
+    command += o.data.empty() ? " --features " + o.features : " --data " + o.data;
+    for (const std::string& f : o.fit) command.append(" --fit '").append(f).append("'");
+    if (o.time_shift) command += " --time-shift" + (o.time_shift_range.empty() ? "" : " --time-shift-range " + o.time_shift_range);
+    if (o.scale) command += " --scale" + (o.scale_range.empty() ? "" : " --scale-range " + o.scale_range);
+    if (o.starts > 1) command += " --starts " + std::to_string(o.starts);
+    if (o.two_stage) command += " --two-stage";
+    return command;
+}
+
+int finish(const Options& o, const nlohmann::json& j, OutputFiles files, const std::vector<FigureSpec>& figures,
+           const std::string& gnuplot, const std::string& text, const std::vector<const FitResult*>& results) {
+    files["fit.json"] = j.dump(2) + "\n";
+    write_with_figures(o.out, std::move(files), figures, gnuplot);
+    if (o.json) {
+        std::printf("%s\n", j.dump(2).c_str());
+    } else {
+        std::printf("%sWritten to %s/\n", text.c_str(), o.out.c_str());
+    }
+    for (const FitResult* r : results) {
+        if (!r->converged) {
+            std::fprintf(stderr, "vibroimpact: fit: did not converge (%s); fit.json holds the last estimate\n", r->message.c_str());
+            return kExitFailure;
+        }
+    }
+    return kExitOk;
+}
+
+int run_features(const Options& o, const Case& c, const std::vector<FitParameter>& params, const std::string& gnuplot,
+                 const FitOptions& fo) {
+    if (o.time_shift || o.scale || o.two_stage) {
+        throw InputError(std::string(o.time_shift ? "--time-shift" : o.scale ? "--scale" : "--two-stage") +
+                         ": works on a trajectory (--data), not on features");
+    }
+    const MeasuredFeatures data = read_measured_features(o.features);
+    check_features(c, data);
+    FitResult r;
+    try {
+        r = fit_features(c, params, data, fo);
+    } catch (const InputError& e) {
+        throw in_case(c, e, o.features);
+    }
+    nlohmann::json j = fit_result_json(params, r);
+    j["command"] = command_line(o);
+    j["features"] = {{"file", data.file}, {"count", data.features.size()}};
+    j["rms_normalized_residual"] = r.rms;
+    for (std::size_t k = 0; k < data.features.size(); ++k) {
+        const MeasuredFeature& f = data.features[k];
+        j["feature_residuals"].push_back({{"name", f.name}, {"value", f.value}, {"sigma", f.sigma}, {"model", r.model[k]},
+                                          {"normalized", r.residual[k] / f.sigma}});
+    }
+    std::string text;
+    {
+        char head[512];
+        std::snprintf(head, sizeof head, "Fit of %s to %s (%zu features): %s after %d iterations, %d simulations; rms of "
+                      "(model - value) / sigma %.3g\n", o.case_path.c_str(), data.file.c_str(), data.features.size(),
+                      r.converged ? "converged" : "NOT converged", r.iterations, r.simulations, r.rms);
+        text = head;
+    }
+    text += fit_result_text(params, r);
+    OutputFiles files;
+    files["fit_residuals.csv"] = feature_residuals_csv(data, r);
+    return finish(o, j, std::move(files), {feature_figure(data, r)}, gnuplot, text, {&r});
+}
+
+int run_trajectory(const Options& o, const Case& c, std::vector<FitParameter> params, const std::string& gnuplot,
+                   const FitOptions& fo) {
+    const std::string column = o.column.empty() ? watched_point_name(c) + "_m" : o.column;
+    check_trajectory_column(c, column);
+    std::size_t extra = (o.time_shift ? 1 : 0) + (o.scale ? 1 : 0);
+    const MeasuredTrajectory data = read_measured_trajectory(o.data, column, params.size() + extra + 1);
+    if (o.time_shift) params.push_back(time_shift_parameter(data.t.back() - data.t.front(), o.time_shift_range));
+    if (o.scale) params.push_back(scale_parameter(o.scale_range));
     nlohmann::json j;
-    j["command"] = command;
+    std::string text;
+    const FitResult* shown = nullptr;
+    std::vector<const FitResult*> results;
+    TwoStageFit two;
+    FitResult one;
+    try {
+        if (o.two_stage) {
+            two = fit_two_stage(c, params, data, fo);
+        } else {
+            one = fit_trajectory(c, params, data, fo);
+        }
+    } catch (const InputError& e) {
+        throw in_case(c, e, o.data);
+    }
+    if (o.two_stage) {
+        std::vector<FitParameter> p1, p2;
+        for (std::size_t i : two.stage1_params) p1.push_back(params[i]);
+        for (std::size_t i : two.stage2_params) p2.push_back(params[i]);
+        nlohmann::json s1 = fit_result_json(p1, two.stage1), s2 = fit_result_json(p2, two.stage2);
+        s1["samples"] = two.split_samples;
+        s1["record_end_s"] = two.split_time;
+        s2["samples"] = data.t.size();
+        for (double e : two.stage2_conditional_std_error) {
+            s2["std_error_given_stage1"].push_back(std::isfinite(e) ? nlohmann::json(e) : nlohmann::json(nullptr));
+        }
+        j["two_stage"] = {{"first_impact_s", two.split_time}, {"stage1", s1}, {"stage2", s2}};
+        j["converged"] = two.stage1.converged && two.stage2.converged;
+        j["estimate"] = nlohmann::json::object();
+        for (std::size_t i = 0; i < params.size(); ++i) j["estimate"][params[i].name()] = two.estimate[i];
+        shown = &two.stage2;
+        results = {&two.stage1, &two.stage2};
+        char head[512];
+        std::snprintf(head, sizeof head, "Two-stage fit of %s to %s (%zu samples, %zu before the first impact at %.6g us):\n",
+                      o.case_path.c_str(), data.file.c_str(), data.t.size(), two.split_samples, two.split_time * 1e6);
+        text = head;
+        const auto stage = [&](const char* name, const FitResult& r, const std::vector<FitParameter>& p) {
+            char line[256];
+            std::snprintf(line, sizeof line, "Stage %s: %s after %d iterations, %d simulations\n", name,
+                          r.converged ? "converged" : "NOT converged", r.iterations, r.simulations);
+            text += line + fit_result_text(p, r);
+        };
+        stage("1 (before the first impact)", two.stage1, p1);
+        stage("2 (contact parameters, whole record)", two.stage2, p2);
+    } else {
+        j = fit_result_json(params, one);
+        shown = &one;
+        results = {&one};
+        char head[512];
+        std::snprintf(head, sizeof head, "Fit of %s to %s (%zu samples): %s after %d iterations, %d simulations; rms residual %s\n",
+                      o.case_path.c_str(), data.file.c_str(), data.t.size(), one.converged ? "converged" : "NOT converged",
+                      one.iterations, one.simulations, round_trip_text(one.rms).c_str());
+        text = head + fit_result_text(params, one);
+    }
+    j["command"] = command_line(o);
     j["data"] = {{"file", data.file}, {"column", data.column}, {"samples", data.t.size()}};
-    j["converged"] = r.converged;
-    j["message"] = r.message;
-    j["iterations"] = r.iterations;
-    j["simulations"] = r.simulations;
-    j["rms_residual"] = r.rms;
-    j["noise"] = r.sigma_from_residuals ? nlohmann::json{{"from", "residuals"}, {"sigma", r.sigma}}
-                                        : nlohmann::json{{"from", "data sigma column"}};
-    for (std::size_t i = 0; i < params.size(); ++i) {
-        nlohmann::json p;
-        p["path"] = params[i].path.text();
-        p["start"] = params[i].start;
-        p["estimate"] = r.estimate[i];
-        p["std_error"] = number_or_null(r.std_error[i]);
-        p["ci95"] = {number_or_null(r.ci_low[i]), number_or_null(r.ci_high[i])};
-        p["determined"] = r.undetermined[i].empty();
-        if (!r.undetermined[i].empty()) p["why_undetermined"] = r.undetermined[i];
-        j["parameters"].push_back(p);
-    }
-    for (Eigen::Index a = 0; a < r.correlation.rows(); ++a) {
-        nlohmann::json row = nlohmann::json::array();
-        for (Eigen::Index b = 0; b < r.correlation.cols(); ++b) row.push_back(number_or_null(r.correlation(a, b)));
-        j["correlation"].push_back(row);
-    }
-    return j;
-}
-
-std::string residuals_csv(const MeasuredTrajectory& data, const FitResult& r) {
-    std::string text = "t_s,data,model,residual\n";
-    for (std::size_t k = 0; k < data.t.size(); ++k) {
-        text.append(round_trip_text(data.t[k])).append(",").append(round_trip_text(data.value[k])).append(",");
-        text.append(round_trip_text(r.model[k])).append(",").append(round_trip_text(r.residual[k])).append("\n");
-    }
-    return text;
-}
-
-FigureSpec fit_figure(const MeasuredTrajectory& data, const FitResult& r) {
-    FigureSpec f;
-    f.name = "fit";
-    f.title = "Measured and fitted " + data.column;
-    f.caption = "The data (points) and the fitted model (line) against time, and the residual (model - data) below.";
-    f.data = {{"fit.csv", residuals_csv(data, r)}};
-    f.height = 800;
-    f.plot = "set datafile separator ','\nset multiplot layout 2,1\nset key top right\nset xlabel 't [us]'\nset ylabel " +
-             gp_quote(data.column) + " noenhanced\nplot 'fit.csv' using ($1*1e6):2 every ::1 with points pt 7 ps 0.4 title 'data', "
-             "'' using ($1*1e6):3 every ::1 with lines lw 2 title 'model'\nset ylabel 'residual' noenhanced\n"
-             "plot 'fit.csv' using ($1*1e6):4 every ::1 with lines title 'model - data'\nunset multiplot\n";
-    return f;
+    j["rms_residual"] = shown->rms;
+    j["noise"] = shown->sigma_from_residuals ? nlohmann::json{{"from", "residuals"}, {"sigma", shown->sigma}}
+                                             : nlohmann::json{{"from", "data sigma column"}};
+    OutputFiles files;
+    files["fit_residuals.csv"] = trajectory_residuals_csv(data, *shown);
+    return finish(o, j, std::move(files), {trajectory_figure(data, *shown)}, gnuplot, text, results);
 }
 
 }  // namespace
 
 CommandBody add_fit_command(CLI::App& app) {
-    struct Options {
-        std::string case_path, data, column = "tip_m";
-        std::vector<std::string> fit;
-        int max_iterations = 50;
-        std::string out = "out/fit";
-        std::string gnuplot = "gnuplot";
-        bool json = false;
-    };
     auto opt = std::make_shared<Options>();
-    CLI::App* sub = app.add_subcommand("fit", "Case values estimated from a measured tip trajectory, with standard errors and 95 % intervals");
+    CLI::App* sub = app.add_subcommand("fit", "Case values estimated from a measured trajectory or measured features, with "
+                                              "standard errors and 95 % intervals");
     sub->add_option("case", opt->case_path, "Case file (TOML): the model and the start of every fitted value")->required();
-    sub->add_option("--data", opt->data, "CSV: t_s, the measured column and optionally sigma (docs/calibration.md)")->required();
+    auto* data = sub->add_option("--data", opt->data, "CSV trajectory: t_s, the measured column and optionally sigma "
+                                                      "(docs/calibration.md)");
+    auto* features = sub->add_option("--features", opt->features, "CSV features: name, value, sigma per row (f1_hz, q1, "
+                                                                  "T_s, T1_s, T2_s, Tp_s, y_max_m, z_max, "
+                                                                  "impact1_peak_force_n, closing_time_s, V_PI_V)");
+    data->excludes(features);
+    features->excludes(data);
     sub->add_option("--fit", opt->fit, "PATH or PATH=LOW:HIGH (SI units), as --set of sweep (repeat for more)")->required();
-    sub->add_option("--column", opt->column, "The measured column: tip_m or tip_velocity_m_s")
-        ->check(CLI::IsMember({"tip_m", "tip_velocity_m_s"}))->capture_default_str();
-    sub->add_option("--max-iterations", opt->max_iterations, "Levenberg-Marquardt iterations at most")
+    sub->add_option("--column", opt->column, "The measured column: the case's watched point, <name>_m (default) or "
+                                             "<name>_velocity_m_s, name tip (free end), midspan (held at both ends) or point");
+    sub->add_flag("--time-shift", opt->time_shift, "Fit the record's time offset t0 (the model read at t - t0), a nuisance "
+                                                   "parameter");
+    sub->add_option("--time-shift-range", opt->time_shift_range, "LOW:HIGH bounds of t0 (s or with a time unit; default "
+                                                                 "+-10 % of the record)");
+    sub->add_flag("--scale", opt->scale, "Fit the measurement's gain g (data = g * model), a nuisance parameter");
+    sub->add_option("--scale-range", opt->scale_range, "LOW:HIGH bounds of g (default 0.5:2)");
+    sub->add_option("--starts", opt->starts, "Starting points: the case's values, then a Halton sample within the bounds")
+        ->check(CLI::Range(1, 1000))->capture_default_str();
+    sub->add_option("--threads,-j", opt->threads, "Threads for the starts (0: every CPU this process may use)")
+        ->check(CLI::Range(0, 4096))->capture_default_str();
+    sub->add_flag("--two-stage", opt->two_stage, "Fit the non-contact values to the record before the first impact, then "
+                                                 "the contact values (supports[...]) to the whole record");
+    sub->add_option("--max-iterations", opt->max_iterations, "Levenberg-Marquardt iterations at most (per start)")
         ->check(CLI::Range(1, 10000))->capture_default_str();
     sub->add_option("--out,-o", opt->out, "Folder for fit.json, fit_residuals.csv and the figure")->capture_default_str();
     sub->add_option("--gnuplot", opt->gnuplot, "gnuplot executable (name on PATH or path)")->capture_default_str();
     sub->add_flag("--json", opt->json, "Print fit.json on stdout instead of text");
 
     return [opt]() {
-        const std::string gnuplot = require_gnuplot(opt->gnuplot, "the fit figure");
-        const Case c = read_case_file(opt->case_path);
+        const Options& o = *opt;
+        if (o.data.empty() && o.features.empty()) throw InputError("--data or --features: one is required");
+        if (!o.time_shift && !o.time_shift_range.empty()) throw InputError("--time-shift-range: needs --time-shift");
+        if (!o.scale && !o.scale_range.empty()) throw InputError("--scale-range: needs --scale");
+        if (!o.features.empty() && !o.column.empty()) throw InputError("--column: works on a trajectory (--data)");
+        const std::string gnuplot = require_gnuplot(o.gnuplot, "the fit figure");
+        const Case c = read_case_file(o.case_path);
         std::vector<FitParameter> params;
-        for (const std::string& f : opt->fit) params.push_back(parse_fit_parameter(f, c));
-        for (std::size_t i = 0; i < params.size(); ++i) {
-            for (std::size_t k = 0; k < i; ++k) {
-                if (params[k].path == params[i].path) throw InputError("--fit " + params[i].setting + ": " + params[i].path.text() + " is fitted twice");
-            }
-        }
-        const MeasuredTrajectory data = read_measured_trajectory(opt->data, opt->column, params.size() + 1);
-        FitResult r;
-        try {
-            r = fit_trajectory(c, params, data, FitOptions{opt->max_iterations});
-        } catch (const InputError& e) {
-            throw locate_in_case(c, e);
-        }
-        std::string command = "vibroimpact fit " + opt->case_path + " --data " + opt->data;
-        for (const std::string& f : opt->fit) command.append(" --fit '").append(f).append("'");
-        const nlohmann::json j = fit_json(params, data, r, command);
-        OutputFiles files;
-        files["fit.json"] = j.dump(2) + "\n";
-        files["fit_residuals.csv"] = residuals_csv(data, r);
-        const std::vector<FigureSpec> figures = {fit_figure(data, r)};
-        write_with_figures(opt->out, std::move(files), figures, gnuplot);
-        if (opt->json) {
-            std::printf("%s\n", j.dump(2).c_str());
-        } else {
-            std::printf("Fit of %s to %s (%zu samples): %s after %d iterations, %d simulations; rms residual %s\n",
-                        opt->case_path.c_str(), data.file.c_str(), data.t.size(), r.converged ? "converged" : "NOT converged",
-                        r.iterations, r.simulations, round_trip_text(r.rms).c_str());
-            for (std::size_t i = 0; i < params.size(); ++i) {
-                if (r.undetermined[i].empty()) {
-                    std::printf("  %s = %.6g +- %.3g (95 %%: %.6g .. %.6g)\n", params[i].path.text().c_str(), r.estimate[i],
-                                r.std_error[i], r.ci_low[i], r.ci_high[i]);
-                } else {
-                    std::printf("  %s = %.6g: NOT determined by the data (%s)\n", params[i].path.text().c_str(), r.estimate[i],
-                                r.undetermined[i].c_str());
-                }
-            }
-            std::printf("Written to %s/\n", opt->out.c_str());
-        }
-        if (!r.converged) {
-            std::fprintf(stderr, "vibroimpact: fit: did not converge (%s); fit.json holds the last estimate\n", r.message.c_str());
-            return kExitFailure;
-        }
-        return kExitOk;
+        for (const std::string& f : o.fit) params.push_back(parse_fit_parameter(f, c));
+        check_distinct(params);
+        const FitOptions fo{o.max_iterations, o.starts, o.threads};
+        return o.data.empty() ? run_features(o, c, params, gnuplot, fo) : run_trajectory(o, c, params, gnuplot, fo);
     };
 }
 

@@ -1,129 +1,99 @@
 #include "calibration/trajectory_fit.hpp"
 
-#include <ceres/ceres.h>
-
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <limits>
 #include <stdexcept>
 
+#include "dynamics/problem_builder.hpp"
 #include "impacts/simulation.hpp"
-#include "io/range_spec.hpp"
 #include "model/case_checks.hpp"
 #include "model/input_error.hpp"
-#include "model/run_control.hpp"
 
 namespace vi {
 namespace {
 
-// The step scale of parameter i: its bound range, else the size of its start.
-double scale_of(const FitParameter& p) {
-    return p.low && p.high ? *p.high - *p.low : std::abs(p.start);
-}
-
-// Linear interpolation of (t, v) at x (t ascending, x within [t.front(), t.back()]).
-double interpolate(const std::vector<double>& t, const std::vector<double>& v, double x) {
+// (t, y, dy/dt) at x: cubic Hermite between the samples around x (t ascending), the end values outside.
+double hermite(const std::vector<double>& t, const std::vector<double>& y, const std::vector<double>* dy, double x) {
     const auto it = std::lower_bound(t.begin(), t.end(), x);
-    if (it == t.begin()) return v.front();
-    if (it == t.end()) return v.back();
+    if (it == t.begin()) return y.front();
+    if (it == t.end()) return y.back();
     const std::size_t k = static_cast<std::size_t>(it - t.begin());
-    const double w = (x - t[k - 1]) / (t[k] - t[k - 1]);
-    return v[k - 1] + w * (v[k] - v[k - 1]);
+    const double h = t[k] - t[k - 1];
+    const double s = (x - t[k - 1]) / h;
+    if (!dy) return y[k - 1] + s * (y[k] - y[k - 1]);
+    const double s2 = s * s, s3 = s2 * s;
+    return (2 * s3 - 3 * s2 + 1) * y[k - 1] + (s3 - 2 * s2 + s) * h * (*dy)[k - 1] + (-2 * s3 + 3 * s2) * y[k] +
+           (s3 - s2) * h * (*dy)[k];
 }
 
-// The residual of the whole record for Ceres, in scaled parameters z (theta = z * scale).
-class Residual {
-public:
-    // Without a per-sample sigma the residuals are divided by the record's largest |value|: Ceres'
-    // tolerances are absolute, and a record in metres (1e-6) would look converged at the start.
-    Residual(const Case& base, const std::vector<FitParameter>& params, const MeasuredTrajectory& data)
-        : base_(base), params_(params), data_(data) {
-        for (double v : data.value) unit_ = std::max(unit_, std::abs(v));
-        if (!(unit_ > 0.0)) unit_ = 1.0;
+bool is_velocity(const std::string& column) { return column.ends_with("_velocity_m_s"); }
+
+// The nuisance values at x: the fitted ones from x, the others from `fixed`.
+TrajectoryFixed nuisance_at(const std::vector<FitParameter>& params, const std::vector<double>& x,
+                                const TrajectoryFixed& fixed) {
+    TrajectoryFixed n = fixed;
+    for (std::size_t i = 0; i < params.size(); ++i) {
+        if (params[i].kind == FitParameter::Kind::time_shift) n.time_shift = x[i];
+        if (params[i].kind == FitParameter::Kind::scale) n.scale = x[i];
     }
+    return n;
+}
 
-    bool operator()(double const* const* z, double* r) const {
-        if (stopped_) return false;
-        std::vector<double> x(params_.size());
-        for (std::size_t i = 0; i < x.size(); ++i) x[i] = z[0][i] * scale_of(params_[i]);
-        ++calls_;
-        try {
-            const std::vector<double> m = model_trajectory(base_, params_, x, data_.t, data_.column);
-            for (std::size_t k = 0; k < m.size(); ++k) {
-                r[k] = (m[k] - data_.value[k]) / (data_.sigma.empty() ? unit_ : data_.sigma[k]);
-            }
-            return true;
-        } catch (const StopRequested&) {
-            stopped_ = true;  // Ceres is told by the iteration callback; nothing may unwind through it
-            return false;
-        } catch (const std::exception&) {
-            return false;  // a design that cannot run: Ceres shrinks its step
-        }
+// The earliest time shift the fit may try: the horizon must reach the last time minus it.
+double lowest_shift(const std::vector<FitParameter>& params, const TrajectoryFixed& fixed, double now) {
+    double low = std::min(0.0, std::min(fixed.time_shift, now));
+    for (const FitParameter& p : params) {
+        if (p.kind == FitParameter::Kind::time_shift && p.low) low = std::min(low, *p.low);
     }
+    return low;
+}
 
-    [[nodiscard]] bool stopped() const { return stopped_; }
-    [[nodiscard]] int calls() const { return calls_; }
-
-private:
-    const Case& base_;
-    const std::vector<FitParameter>& params_;
-    const MeasuredTrajectory& data_;
-    double unit_ = 0.0;
-    mutable bool stopped_ = false;
-    mutable int calls_ = 0;
-};
-
-class StopCallback final : public ceres::IterationCallback {
-public:
-    explicit StopCallback(const Residual& r) : r_(r) {}
-    ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
-        return r_.stopped() || stop_flag().load() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
-    }
-
-private:
-    const Residual& r_;
-};
+// The least-squares problem of a trajectory: residual (model - data) / sigma_k, or / max |data|
+// without a sigma column (Ceres' tolerances are absolute, and a record in metres, 1e-6, would look
+// converged at the start).
+LeastSquaresProblem trajectory_problem(const Case& base, const std::vector<FitParameter>& params,
+                                       const MeasuredTrajectory& data, const TrajectoryFixed& fixed) {
+    double unit = 0.0;
+    for (double v : data.value) unit = std::max(unit, std::abs(v));
+    if (!(unit > 0.0)) unit = 1.0;
+    LeastSquaresProblem p;
+    p.params = params;
+    p.residuals = static_cast<int>(data.t.size());
+    p.sigma_known = !data.sigma.empty();
+    p.evaluate = [&base, params, &data, fixed, unit](const std::vector<double>& x, double* r) {
+        const std::vector<double> m = model_trajectory(base, params, x, data.t, data.column, fixed);
+        for (std::size_t k = 0; k < m.size(); ++k) r[k] = (m[k] - data.value[k]) / (data.sigma.empty() ? unit : data.sigma[k]);
+    };
+    return p;
+}
 
 }  // namespace
 
-FitParameter parse_fit_parameter(const std::string& text, const Case& c) {
-    const auto fail = [&](const std::string& reason) { return InputError("--fit " + text + ": " + reason); };
-    const std::size_t eq = text.find('=');
-    FitParameter p;
-    p.setting = text;
-    try {
-        p.path = resolve_case_path(text.substr(0, eq), c);
-    } catch (const InputError& e) {
-        throw fail(e.what());
-    }
-    if (is_integer_path(p.path)) throw fail(p.path.text() + " takes whole numbers, which a least-squares fit cannot vary");
-    p.start = get_case_value(c, p.path);
-    if (eq != std::string::npos) {
-        const auto bounds = parse_bounds(text.substr(eq + 1), case_path_dimension(p.path));
-        if (!bounds) throw fail("expected PATH or PATH=LOW:HIGH, two finite numbers (SI, or with units as in case files)");
-        if (!(bounds->first < bounds->second)) throw fail("LOW must be below HIGH");
-        p.low = bounds->first;
-        p.high = bounds->second;
-        if (p.start < *p.low || p.start > *p.high) {
-            throw fail("the case's value " + std::to_string(p.start) + " (the start) lies outside the bounds");
-        }
-    } else if (p.start == 0.0) {
-        throw fail("the case's value is 0: give bounds PATH=LOW:HIGH so the fit has a scale to step by");
-    }
-    return p;
+std::string watched_point_name(const Case& c) { return build_transient_problem(c).watched_name; }
+
+void check_trajectory_column(const Case& c, const std::string& column) {
+    const std::string name = watched_point_name(c);
+    if (column == name + "_m" || column == name + "_velocity_m_s") return;
+    const std::string what = name == "tip" ? "the free end (tip)" : name == "midspan" ? "the mid-span (a beam held at both ends)"
+                                                                                       : "initial.position (point)";
+    throw InputError("--column " + column + ": this case's watched point is " + what + ": its columns are " + name +
+                     "_m and " + name + "_velocity_m_s");
 }
 
 std::vector<double> model_trajectory(const Case& base, const std::vector<FitParameter>& params,
                                      const std::vector<double>& x, const std::vector<double>& times,
-                                     const std::string& column) {
+                                     const std::string& column, const TrajectoryFixed& fixed) {
     Case c = base;
-    for (std::size_t i = 0; i < params.size(); ++i) set_case_value(c, params[i].path, x[i]);
-    c.solver.horizon = times.back();
+    for (std::size_t i = 0; i < params.size(); ++i) {
+        if (!params[i].nuisance()) set_case_value(c, params[i].path, x[i]);
+    }
+    const TrajectoryFixed n = nuisance_at(params, x, fixed);
+    // A horizon that does not move during the fit: the same work for every trial design.
+    c.solver.horizon = std::max(fixed.min_horizon, times.back() - lowest_shift(params, fixed, n.time_shift));
     if (c.solver.output_step <= 0.0 || c.solver.output_step > c.solver.horizon) {
-        double spacing = times.back();
+        double spacing = times.back() - times.front();
         for (std::size_t k = 1; k < times.size(); ++k) spacing = std::min(spacing, times[k] - times[k - 1]);
-        c.solver.output_step = spacing;
+        c.solver.output_step = std::min(spacing, c.solver.horizon);
     }
     const std::vector<CaseProblem> problems = check_case(c);
     if (!problems.empty()) throw InputError(problems.front().key + ": " + problems.front().message);
@@ -131,137 +101,129 @@ std::vector<double> model_trajectory(const Case& base, const std::vector<FitPara
     o.energy = false;
     const SimulationRun run = run_simulation(c, o);
     const TimeHistory& h = run.result.history;
-    const std::vector<double>& v = column == "tip_velocity_m_s" ? h.tip_velocity : h.tip_v;
     if (h.t.empty()) throw std::runtime_error("the model wrote no time history");
+    const bool velocity = is_velocity(column);
+    const std::vector<double>& v = velocity ? h.tip_velocity : h.tip_v;
     std::vector<double> out(times.size());
-    for (std::size_t k = 0; k < times.size(); ++k) out[k] = interpolate(h.t, v, times[k]);
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        out[k] = n.scale * hermite(h.t, v, velocity ? nullptr : &h.tip_velocity, times[k] - n.time_shift);
+    }
     return out;
 }
 
 FitResult fit_trajectory(const Case& base, const std::vector<FitParameter>& params, const MeasuredTrajectory& data,
-                         const FitOptions& o) {
+                         const FitOptions& o, const TrajectoryFixed& fixed) {
     const int n = static_cast<int>(params.size());
     const int samples = static_cast<int>(data.t.size());
     if (n == 0 || samples <= n) throw std::invalid_argument("fit_trajectory: need parameters and more samples than them");
-    if (data.t.front() < 0.0) throw InputError(data.file + ": t_s: the record must start at t >= 0 (the model's t = 0)");
-
-    std::vector<double> z(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) z[static_cast<std::size_t>(i)] = params[static_cast<std::size_t>(i)].start / scale_of(params[static_cast<std::size_t>(i)]);
+    const bool shifted = std::any_of(params.begin(), params.end(),
+                                     [](const FitParameter& p) { return p.kind == FitParameter::Kind::time_shift; });
+    if (!shifted && fixed.time_shift == 0.0 && data.t.front() < 0.0) {
+        throw InputError(data.file + ": t_s: the record must start at t >= 0 (the model's t = 0), or fit --time-shift");
+    }
     // The start must run: a case that cannot is the user's to fix, not Ceres' to step around.
-    (void)model_trajectory(base, params, [&] {
-        std::vector<double> x;
-        for (const FitParameter& p : params) x.push_back(p.start);
-        return x;
-    }(), data.t, data.column);
+    std::vector<double> x0;
+    for (const FitParameter& p : params) x0.push_back(p.start);
+    (void)model_trajectory(base, params, x0, data.t, data.column, fixed);
 
-    auto* residual = new Residual(base, params, data);
-    auto* cost = new ceres::DynamicNumericDiffCostFunction<Residual, ceres::CENTRAL>(residual, ceres::TAKE_OWNERSHIP);
-    cost->AddParameterBlock(n);
-    cost->SetNumResiduals(samples);
-    ceres::Problem problem;
-    problem.AddResidualBlock(cost, nullptr, z.data());
-    for (int i = 0; i < n; ++i) {
-        const FitParameter& p = params[static_cast<std::size_t>(i)];
-        if (p.low) problem.SetParameterLowerBound(z.data(), i, *p.low / scale_of(p));
-        if (p.high) problem.SetParameterUpperBound(z.data(), i, *p.high / scale_of(p));
-    }
-    StopCallback stop(*residual);
-    ceres::Solver::Options so;
-    so.linear_solver_type = ceres::DENSE_QR;
-    so.max_num_iterations = o.max_iterations;
-    // Converged when a step changes the cost by less than 1e-10 of it or the parameters by less than
-    // 1e-8 of their scale: the intervals are read at the minimum, so stopping early would bias them.
-    so.function_tolerance = 1e-10;
-    so.parameter_tolerance = 1e-8;
-    so.gradient_tolerance = 1e-14;
-    so.minimizer_progress_to_stdout = false;
-    so.logging_type = ceres::SILENT;
-    so.callbacks.push_back(&stop);
-    so.update_state_every_iteration = true;
-    ceres::Solver::Summary summary;
-    ceres::Solve(so, &problem, &summary);
-    if (residual->stopped() || stop_flag().load()) throw StopRequested(stop_signal());
-
-    FitResult r;
-    r.iterations = static_cast<int>(summary.iterations.size());
-    r.converged = summary.termination_type == ceres::CONVERGENCE;
-    r.message = summary.message;
-    // The Jacobian and residuals at the solution, in the scaled parameters.
-    double cost_value = 0.0;
-    std::vector<double> res;
-    ceres::CRSMatrix crs;
-    problem.Evaluate(ceres::Problem::EvaluateOptions(), &cost_value, &res, nullptr, &crs);
-    r.simulations = residual->calls();
-    Eigen::MatrixXd J = Eigen::MatrixXd::Zero(samples, n);
-    for (int row = 0; row < crs.num_rows; ++row) {
-        for (int k = crs.rows[static_cast<std::size_t>(row)]; k < crs.rows[static_cast<std::size_t>(row) + 1]; ++k) {
-            J(row, crs.cols[static_cast<std::size_t>(k)]) = crs.values[static_cast<std::size_t>(k)];
-        }
-    }
-    for (int i = 0; i < n; ++i) r.estimate.push_back(z[static_cast<std::size_t>(i)] * scale_of(params[static_cast<std::size_t>(i)]));
-    r.model = model_trajectory(base, params, r.estimate, data.t, data.column);
-    double ssr = 0.0, ssr_scaled = 0.0;
+    const LeastSquaresProblem p = trajectory_problem(base, params, data, fixed);
+    FitResult r = fit_least_squares(p, o);
+    r.model = model_trajectory(base, params, r.estimate, data.t, data.column, fixed);
+    double ssr = 0.0;
     for (int k = 0; k < samples; ++k) {
         const double d = r.model[static_cast<std::size_t>(k)] - data.value[static_cast<std::size_t>(k)];
         r.residual.push_back(d);
         ssr += d * d;
-        ssr_scaled += res[static_cast<std::size_t>(k)] * res[static_cast<std::size_t>(k)];
     }
     r.rms = std::sqrt(ssr / samples);
-    // Without a per-sample sigma the noise is estimated from the residuals (N - p degrees of freedom).
-    r.sigma_from_residuals = data.sigma.empty();
-    // The covariance s2 (J^T J)^-1 does not depend on how the residuals were scaled.
-    const double s2 = r.sigma_from_residuals ? ssr_scaled / (samples - n) : 1.0;
     r.sigma = r.sigma_from_residuals ? std::sqrt(ssr / (samples - n)) : 0.0;
-
-    // Undetermined parameters: the directions of J (in parameters scaled to their range or start)
-    // whose singular value is below 1e-3 of the largest, and the parameters that take part in them.
-    // Not roundoff: the Jacobian comes from central differences of simulations whose trajectories
-    // carry a relative noise near 1e-10 (the modes are recomputed for every stiffness), so an exact
-    // trade-off (E and nu through E / (1 - nu^2)) shows up near 1e-4 (measured), never at 1e-16;
-    // the determined ones of the tests lie above 2e-2.
-    r.undetermined.assign(static_cast<std::size_t>(n), "");
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeThinV);
-    const Eigen::VectorXd sv = svd.singularValues();
-    const double top = sv.size() > 0 ? sv[0] : 0.0;
-    for (int j = 0; j < sv.size(); ++j) {
-        if (sv[j] > 1e-3 * top && top > 0.0) continue;
-        for (int i = 0; i < n; ++i) {
-            if (std::abs(svd.matrixV()(i, j)) < 0.1) continue;
-            std::string why = J.col(i).norm() <= 1e-12 * std::max(top, 1e-300) ? "the data do not depend on it"
-                                                                                  : "it trades off with";
-            if (why != "the data do not depend on it") {
-                for (int k = 0; k < n; ++k) {
-                    if (k != i && std::abs(svd.matrixV()(k, j)) >= 0.1) why.append(" ").append(params[static_cast<std::size_t>(k)].path.text());
-                }
-            }
-            r.undetermined[static_cast<std::size_t>(i)] = why;
-        }
-    }
-    std::vector<int> kept;
-    for (int i = 0; i < n; ++i) {
-        if (r.undetermined[static_cast<std::size_t>(i)].empty()) kept.push_back(i);
-    }
-    const int m = static_cast<int>(kept.size());
-    Eigen::MatrixXd Jk(samples, m);
-    for (int a = 0; a < m; ++a) Jk.col(a) = J.col(kept[static_cast<std::size_t>(a)]);
-    const Eigen::MatrixXd cov = s2 * (Jk.transpose() * Jk).ldlt().solve(Eigen::MatrixXd::Identity(m, m));
-    const double nan = std::numeric_limits<double>::quiet_NaN();
-    r.std_error.assign(static_cast<std::size_t>(n), nan);
-    r.correlation = Eigen::MatrixXd::Constant(n, n, nan);
-    for (int a = 0; a < m; ++a) {
-        const int i = kept[static_cast<std::size_t>(a)];
-        r.std_error[static_cast<std::size_t>(i)] = std::sqrt(cov(a, a)) * scale_of(params[static_cast<std::size_t>(i)]);
-        for (int b = 0; b < m; ++b) {
-            r.correlation(i, kept[static_cast<std::size_t>(b)]) = cov(a, b) / std::sqrt(cov(a, a) * cov(b, b));
-        }
-    }
-    for (int i = 0; i < n; ++i) {
-        const std::size_t u = static_cast<std::size_t>(i);
-        r.ci_low.push_back(r.estimate[u] - 1.96 * r.std_error[u]);
-        r.ci_high.push_back(r.estimate[u] + 1.96 * r.std_error[u]);
-    }
     return r;
+}
+
+TwoStageFit fit_two_stage(const Case& base, const std::vector<FitParameter>& params, const MeasuredTrajectory& data,
+                          const FitOptions& o) {
+    TwoStageFit f;
+    std::vector<FitParameter> p1, p2;
+    for (std::size_t i = 0; i < params.size(); ++i) {
+        (params[i].contact() ? f.stage2_params : f.stage1_params).push_back(i);
+        (params[i].contact() ? p2 : p1).push_back(params[i]);
+    }
+    if (p1.empty()) {
+        throw InputError("--two-stage: stage 1 (the record before the first impact) has no parameter: every fitted value is "
+                         "a contact parameter (supports[...]); fit a beam or damping value too, or fit in one stage");
+    }
+    if (p2.empty()) {
+        throw InputError("--two-stage: stage 2 (the impacts) has no parameter: no fitted value is a contact parameter "
+                         "(supports[...]); fit in one stage");
+    }
+    // The first impact of the model at the start values, in data time.
+    Case start = base;
+    TrajectoryFixed at_start;
+    for (const FitParameter& p : params) {
+        if (!p.nuisance()) set_case_value(start, p.path, p.start);
+        if (p.kind == FitParameter::Kind::time_shift) at_start.time_shift = p.start;
+        if (p.kind == FitParameter::Kind::scale) at_start.scale = p.start;
+    }
+    start.solver.horizon = data.t.back() - std::min(0.0, at_start.time_shift);
+    SimulationOptions so;
+    so.history = false;
+    so.energy = false;
+    const SimulationRun run = run_simulation(start, so);
+    if (run.result.episodes.empty()) {
+        throw InputError("--two-stage: the model at the start values has no impact within the record; fit in one stage");
+    }
+    f.split_time = run.result.episodes.front().t_on + at_start.time_shift;
+    MeasuredTrajectory before = data;
+    before.t.clear();
+    before.value.clear();
+    before.sigma.clear();
+    for (std::size_t k = 0; k < data.t.size() && data.t[k] < f.split_time; ++k) {
+        before.t.push_back(data.t[k]);
+        before.value.push_back(data.value[k]);
+        if (!data.sigma.empty()) before.sigma.push_back(data.sigma[k]);
+    }
+    f.split_samples = before.t.size();
+    if (before.t.size() <= p1.size()) {
+        throw InputError("--two-stage: " + std::to_string(before.t.size()) + " samples lie before the first impact (t = " +
+                         std::to_string(f.split_time * 1e6) + " us at the start values), not more than stage 1's " +
+                         std::to_string(p1.size()) + " parameters");
+    }
+    TrajectoryFixed stage1_fixed = at_start;
+    stage1_fixed.min_horizon = data.t.back() - lowest_shift(params, at_start, at_start.time_shift);
+    f.stage1 = fit_trajectory(start, p1, before, o, stage1_fixed);
+    // Stage 2: stage 1's values fixed.
+    Case fixed_case = start;
+    TrajectoryFixed fixed = at_start;
+    for (std::size_t a = 0; a < p1.size(); ++a) {
+        const double v = f.stage1.estimate[a];
+        if (!p1[a].nuisance()) set_case_value(fixed_case, p1[a].path, v);
+        if (p1[a].kind == FitParameter::Kind::time_shift) fixed.time_shift = v;
+        if (p1[a].kind == FitParameter::Kind::scale) fixed.scale = v;
+    }
+    f.stage2 = fit_trajectory(fixed_case, p2, data, o, fixed);
+    f.estimate.assign(params.size(), 0.0);
+    for (std::size_t a = 0; a < p1.size(); ++a) f.estimate[f.stage1_params[a]] = f.stage1.estimate[a];
+    for (std::size_t a = 0; a < p2.size(); ++a) f.estimate[f.stage2_params[a]] = f.stage2.estimate[a];
+
+    // Stage 2 held stage 1's values fixed, so its own intervals miss their uncertainty: to first
+    // order the stage 2 estimate moves by G d1 when stage 1's moves by d1, G = -(J2^T J2)^-1 J2^T J1
+    // (J1, J2: the whole record's residuals against each stage's parameters), and its covariance
+    // is V2 + G V1 G^T. An undetermined stage 1 parameter carries none (its variance is unknown).
+    f.stage2_conditional_std_error = f.stage2.std_error;
+    const LeastSquaresProblem whole = trajectory_problem(start, params, data, at_start);
+    const Eigen::MatrixXd J = jacobian_at(whole, f.estimate, f.stage2.simulations);
+    Eigen::MatrixXd J1(J.rows(), static_cast<Eigen::Index>(p1.size())), J2(J.rows(), static_cast<Eigen::Index>(p2.size()));
+    for (std::size_t a = 0; a < p1.size(); ++a) J1.col(static_cast<Eigen::Index>(a)) = J.col(static_cast<Eigen::Index>(f.stage1_params[a]));
+    for (std::size_t a = 0; a < p2.size(); ++a) J2.col(static_cast<Eigen::Index>(a)) = J.col(static_cast<Eigen::Index>(f.stage2_params[a]));
+    const Eigen::MatrixXd G = -(J2.transpose() * J2).ldlt().solve(J2.transpose() * J1);
+    Eigen::MatrixXd V1 = covariance(f.stage1);
+    for (Eigen::Index a = 0; a < V1.rows(); ++a) {
+        for (Eigen::Index b = 0; b < V1.cols(); ++b) {
+            if (!std::isfinite(V1(a, b))) V1(a, b) = 0.0;
+        }
+    }
+    set_covariance(f.stage2, covariance(f.stage2) + G * V1 * G.transpose());
+    return f;
 }
 
 }  // namespace vi

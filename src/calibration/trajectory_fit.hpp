@@ -1,64 +1,68 @@
 #pragma once
-// Calibration: case values estimated from a measured trajectory of the tip by bounded nonlinear
-// least squares (Ceres Solver), with standard errors, 95 % intervals and correlations from the
-// Jacobian at the solution (docs/calibration.md).
+// Calibration: case values estimated from a measured trajectory of the watched point (the free end,
+// the mid-span of a beam held at both ends) by bounded nonlinear least squares, with the record's
+// time shift and calibration scale as optional nuisance parameters, from one start or several, in
+// one stage or two (docs/calibration.md).
 
-#include <optional>
 #include <string>
 #include <vector>
 
-#include <Eigen/Dense>
-
+#include "calibration/least_squares.hpp"
 #include "io/measured_trajectory.hpp"
 #include "model/case.hpp"
-#include "sweep/case_paths.hpp"
 
 namespace vi {
 
-// One fitted value: "PATH" (start from the case's value, no bounds) or "PATH=LOW:HIGH" (SI units).
-struct FitParameter {
-    std::string setting;
-    CasePath path;
-    double start = 0.0;                 // the case's value [SI]
-    std::optional<double> low, high;    // bounds [SI]
+// What the trajectory model holds fixed: the measurement's nuisance values where they are not
+// fitted, and the least horizon (stage 1 of a two-stage fit compares the part of the record before
+// the first impact with a model run over the whole record).
+struct TrajectoryFixed {
+    double time_shift = 0.0;  // t0 [s]: the model is read at t - t0
+    double scale = 1.0;       // g: data = g * model
+    double min_horizon = 0.0; // [s]
 };
 
-// Parses a --fit setting against the case. Throws InputError("--fit TEXT: reason"): an unknown or
-// whole-number path, bounds reversed or not numbers, a start outside the bounds, a start of 0
-// without bounds (no scale to step by).
-FitParameter parse_fit_parameter(const std::string& text, const Case& c);
+// The watched point's name for the case ("tip", "midspan" or "point", as history.csv names it).
+// Throws InputError when the case cannot be built.
+std::string watched_point_name(const Case& c);
 
-struct FitOptions {
-    int max_iterations = 50;   // Levenberg-Marquardt iterations (--max-iterations)
-};
+// Throws InputError("--column NAME: ...") naming the case's columns when `column` is not
+// <watched>_m or <watched>_velocity_m_s.
+void check_trajectory_column(const Case& c, const std::string& column);
 
-struct FitResult {
-    std::vector<double> estimate;           // [SI]
-    std::vector<double> std_error;          // [SI]; NaN for an undetermined parameter
-    std::vector<double> ci_low, ci_high;    // 95 %: estimate -+ 1.96 std_error
-    Eigen::MatrixXd correlation;            // of the determined parameters (NaN rows for the others)
-    std::vector<std::string> undetermined;  // per parameter: "" or why the data cannot fix it
-    std::vector<double> model;              // the fitted model at the data's times
-    std::vector<double> residual;           // model - data at each sample [data unit]
-    double rms = 0.0;                       // of residual [data unit]
-    double sigma = 0.0;                     // noise level used for the errors [data unit]
-    bool sigma_from_residuals = true;       // estimated as rms * sqrt(N / (N - p)), else the data's sigma
-    int iterations = 0, simulations = 0;
-    bool converged = false;
-    std::string message;                    // Ceres' reason for stopping
-};
-
-// Fits the parameters so that the case's tip trajectory (its watched point: tip_v, or tip_velocity
-// for the column tip_velocity_m_s), sampled at the data's times by linear interpolation of the
-// history at the case's output step, matches the data. The horizon is set to the last data time.
-// Throws InputError when a trial design cannot run at the start (a bad case), std::runtime_error when
-// Ceres cannot even start, StopRequested on a stop.
-FitResult fit_trajectory(const Case& base, const std::vector<FitParameter>& params, const MeasuredTrajectory& data,
-                         const FitOptions& o = {});
-
-// The case's tip trajectory at `times` with the parameters set to x (what fit_trajectory fits).
+// The case's watched-point trajectory at `times` with the parameters set to x (case values, and
+// the time shift and scale where fitted, else `fixed`'s): g * y(t - t0), y held at its t = 0 value
+// before the release. y is the history at the case's output step (the data's smallest spacing when
+// the case gives none), read between samples by cubic Hermite interpolation of displacement and
+// velocity (displacement) or linearly (velocity). The horizon covers the latest time read.
 std::vector<double> model_trajectory(const Case& base, const std::vector<FitParameter>& params,
                                      const std::vector<double>& x, const std::vector<double>& times,
-                                     const std::string& column);
+                                     const std::string& column, const TrajectoryFixed& fixed = {});
+
+// Fits the parameters so that model_trajectory matches the data: residual (model - data) / sigma_k,
+// or / max |data| without a sigma column. Throws InputError when the model cannot run at the start
+// (a bad case), std::runtime_error when the Jacobian at the estimate cannot be computed,
+// StopRequested on a stop.
+FitResult fit_trajectory(const Case& base, const std::vector<FitParameter>& params, const MeasuredTrajectory& data,
+                         const FitOptions& o = {}, const TrajectoryFixed& fixed = {});
+
+// A two-stage fit: stage 1 fits the parameters that are not contact parameters (not under
+// supports[...]; the nuisance ones included) to the samples before the first impact's onset (of the
+// model at the start values, shifted by the start time shift); stage 2 fits the contact parameters
+// to the whole record with stage 1's values fixed; stage 2's standard errors then take in stage
+// 1's uncertainty to first order (V2 + G V1 G^T, G the sensitivity of stage 2's estimate to stage 1's).
+struct TwoStageFit {
+    std::vector<std::size_t> stage1_params, stage2_params;  // indices into the parameters
+    double split_time = 0.0;                                // the first impact's onset in data time [s]
+    std::size_t split_samples = 0;                          // samples before it
+    FitResult stage1, stage2;                               // stage2's errors include stage 1's, propagated
+    std::vector<double> stage2_conditional_std_error;       // stage 2's with stage 1's values taken as exact
+    std::vector<double> estimate;                           // every parameter, from its stage [SI]
+};
+
+// Throws InputError("--two-stage: reason") when either stage has no parameter, the model has no
+// impact at the start, or fewer samples than stage 1's parameters plus one lie before it.
+TwoStageFit fit_two_stage(const Case& base, const std::vector<FitParameter>& params, const MeasuredTrajectory& data,
+                          const FitOptions& o = {});
 
 }  // namespace vi

@@ -1,0 +1,31 @@
+#pragma once
+// What `vibroimpact fit` writes: fit.json's parts, the text summary, the residual tables and the
+// figures of a trajectory or feature fit (docs/calibration.md).
+
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "calibration/least_squares.hpp"
+#include "io/measured_features.hpp"
+#include "io/measured_trajectory.hpp"
+#include "plot/figure_gnuplot.hpp"
+
+namespace vi::cli {
+
+// One fit's (or one stage's) outcome: convergence, the parameters with their uncertainty, the
+// correlation matrix and the table of starts.
+nlohmann::json fit_result_json(const std::vector<FitParameter>& params, const FitResult& r);
+
+// The same as text lines: the parameters (nuisance ones marked), then the starts when there were several.
+std::string fit_result_text(const std::vector<FitParameter>& params, const FitResult& r);
+
+// t_s, data, model, residual per sample.
+std::string trajectory_residuals_csv(const MeasuredTrajectory& data, const FitResult& r);
+FigureSpec trajectory_figure(const MeasuredTrajectory& data, const FitResult& r);
+
+// name, value, sigma, model, residual, normalized (residual / sigma) per feature.
+std::string feature_residuals_csv(const MeasuredFeatures& data, const FitResult& r);
+FigureSpec feature_figure(const MeasuredFeatures& data, const FitResult& r);
+
+}  // namespace vi::cli
