@@ -230,7 +230,7 @@ namespace {
 TEST(SwitchingLedger, SweepColumns) {
     const std::vector<SweepColumn> cols = sweep_result_columns(SweepAnalysis::simulate, 0);
     std::size_t at = 0;
-    while (at < cols.size() && cols[at].name != "unproven_excess") ++at;
+    while (at < cols.size() && cols[at].name != "solver") ++at;
     ASSERT_LT(at + 4, cols.size());
     EXPECT_EQ(cols[at + 1].name, "closing_time_s");
     EXPECT_EQ(cols[at + 2].name, "bounces");
