@@ -225,7 +225,7 @@ TEST(SwitchingLedger, ASwitchThatDoesNotCloseSaysSo) {
 namespace vi {
 namespace {
 
-// A simulate sweep has the switching ledger's four columns after unproven_excess, filled for a case
+// A simulate sweep has the switching ledger's four columns after the solver column, filled for a case
 // with electrodes and empty without.
 TEST(SwitchingLedger, SweepColumns) {
     const std::vector<SweepColumn> cols = sweep_result_columns(SweepAnalysis::simulate, 0);
