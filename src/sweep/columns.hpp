@@ -38,7 +38,7 @@ std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes)
 std::vector<SweepCell> simulate_cells(const SimulationRun& run);
 
 // A modal study's values in the order of sweep_result_columns(modes, modes): per mode i,
-// f_unsupported_<i>_hz, f_supported_<i>_hz, ratio_<i>, nodes_supported_<i> (x/l, space separated).
+// f_unsupported_<i>_hz, f_supported_<i>_hz, ratio_<i>, nodes_supported_<i>_over_l (x/l, space separated).
 std::vector<SweepCell> modes_cells(const ModalStudy& study, int modes);
 
 }  // namespace vi
