@@ -20,8 +20,9 @@ struct SweepColumn {
     std::string unit;  // e.g. "s", "N", "-" (dimensionless), "" (count or text)
 };
 
-// One cell: empty (no such value: T with a single impact, a mode the mesh does not have), a
-// number, a count, or text (Tp_reason, a list of nodal points).
+// One cell: empty (no such value: T with a single impact, a mode the mesh does not have; the CSV
+// writes the missing-value marker "nan"), a number, a count, or text (Tp_reason, a list of nodal
+// points).
 using SweepCell = std::variant<std::monostate, double, std::int64_t, std::string>;
 
 // How many impacts get their own columns in a simulate sweep.
