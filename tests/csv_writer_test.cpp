@@ -159,7 +159,7 @@ TEST(CsvNames, UnitOrDimensionlessNameInEveryColumn) {
                            "m50_tau1", "tau_p", "Tp_reason", "ratio_3", "impacts", "impact2_episodes", "impact1_support", "Y_2",
                            "Phi_3_1", "status", "supports[0].gap_m", "supports[1].position_over_l", "damping.ratios[0]",
                            "material.density_kg_m3", "supports[0].work_of_adhesion_j_m2", "best_y_max_m", "low_supports[0].gap_m",
-                           "data_tip_m", "residual_tip_velocity_m_s", "critical_work_of_adhesion_j_m2", "pressure_pa"}) {
+                           "data_tip_m", "residual_tip_velocity_m_s", "residual_over_sigma", "value_in_feature_unit", "critical_work_of_adhesion_j_m2", "pressure_pa"}) {
         EXPECT_TRUE(csv_column_name_ok(ok)) << ok;
     }
     for (const char* bad : {"", "time [µs]", "tip_m [µm]", "voltage_V", "f1_Hz", "contact_force_N", "z_max_m50", "data", "residual",
@@ -277,6 +277,9 @@ TEST_F(CsvFiles, EveryFileOfTheMainCommandsFollowsTheConvention) {
     // fit: data made from the simulate history (noise-free: one parameter, a few simulations).
     test::write_text(dir_ + "/data.csv", test::read_text(out + "/simulate/history.csv"));
     run({"fit", case_, "--data", dir_ + "/data.csv", "--fit", "supports[0].stiffness", "--out", out + "/fit"});
+    // fit --features: one row per feature, the unit in the feature's name.
+    test::write_text(dir_ + "/features.csv", "name,value,sigma\nf1_hz,115000,500\nq1,50,5\n");
+    run({"fit", case_, "--features", dir_ + "/features.csv", "--fit", "material.youngs_modulus", "--out", out + "/fit_features"});
     run({"optimize", case_, "--vary", "supports[0].position=0.6:1", "--minimize", "y_max_m", "--max-evals", "6", "--out",
          out + "/optimize"});
     const std::size_t files = test::expect_csv_convention_in(out);

@@ -48,7 +48,7 @@ const std::vector<std::string_view>& dimensionless() {
         "at_support", "feasible",
         // ratios and the paper's dimensionless quantities (tau = omega_1 T, z = y/l, amplitudes of
         // dimensionless mode shapes Y and Phi)
-        "ratio", "ratio_#", "ratios[#]", "over_peak", "tau", "tau#", "tau_p", "z_max", "z_min", "z_equilibrium",
+        "ratio", "ratio_#", "ratios[#]", "over_peak", "over_sigma", "tau", "tau#", "tau_p", "z_max", "z_min", "z_equilibrium",
         "z_top", "amplitude", "Y_#", "Phi_#", "Y_#_#", "Phi_#_#", "knudsen", "squeeze_number", "q_modal",
         "q_ringdown", "unproven_excess", "offset", "permittivity", "tolerance", "rtol",
         // text
