@@ -12,6 +12,7 @@
 #include "figure_output.hpp"
 #include "design/optimizer.hpp"
 #include "io/case_reader.hpp"
+#include "io/csv_writer.hpp"
 #include "io/number_text.hpp"
 #include "io/output_files.hpp"
 #include "model/input_error.hpp"
@@ -22,31 +23,27 @@
 namespace vi::cli {
 namespace {
 
-std::string cell(const std::optional<double>& v) { return v ? round_trip_text(*v) : ""; }
+CsvCell count(std::size_t n) { return csv_count(static_cast<std::int64_t>(n)); }
 
-std::string quoted(const std::string& s) {
-    std::string out = "\"";
-    for (char ch : s) {
-        if (ch == '"') out += '"';
-        out += ch;
-    }
-    return out + "\"";
-}
-
+// index, stage, each variable (its path and unit: supports[0].gap_m), the objective, each constraint's
+// quantity, feasible, best_<objective> (the best feasible so far), status.
 std::string evaluations_csv(const DesignProblem& p, const OptimizeResult& r) {
-    std::string text = "index,stage";
-    for (const DesignVariable& v : p.variables) text += "," + v.path.text();
-    text += "," + p.columns[p.objective].name;
-    for (const DesignConstraint& c : p.constraints) text += "," + p.columns[c.column].name;
-    text += ",feasible,best_so_far,status\n";
+    const std::string& q = p.columns[p.objective].name;
+    CsvTable t;
+    t.header = {"index", "stage"};
+    for (const DesignVariable& v : p.variables) t.header.push_back(case_path_column(v.path));
+    t.header.push_back(q);
+    for (const DesignConstraint& c : p.constraints) t.header.push_back(p.columns[c.column].name);
+    t.header.insert(t.header.end(), {"feasible", "best_" + q, "status"});
     for (const DesignEvaluation& e : r.evaluations) {
-        text.append(std::to_string(e.index)).append(",").append(e.stage);
-        for (double x : e.x) text.append(",").append(round_trip_text(x));
-        text.append(",").append(cell(e.outcome.objective));
-        for (const auto& c : e.outcome.constraints) text.append(",").append(cell(c));
-        text.append(e.feasible ? ",1," : ",0,").append(cell(e.best)).append(",").append(quoted(e.outcome.status)).append("\n");
+        std::vector<CsvCell> row{count(e.index), csv_text(e.stage)};
+        for (double x : e.x) row.push_back(csv_number(x));
+        row.push_back(csv_number(e.outcome.objective));
+        for (const auto& c : e.outcome.constraints) row.push_back(csv_number(c));
+        row.insert(row.end(), {csv_flag(e.feasible), csv_number(e.best), csv_text(e.outcome.status)});
+        t.add_row(row);
     }
-    return text;
+    return t.str();
 }
 
 nlohmann::json result_json(const DesignProblem& p, const OptimizeResult& r, const std::string& command) {
@@ -76,11 +73,13 @@ nlohmann::json result_json(const DesignProblem& p, const OptimizeResult& r, cons
 }
 
 FigureSpec convergence_figure(const DesignProblem& p, const OptimizeResult& r) {
-    std::string data = "index,value,best\n";
-    for (const DesignEvaluation& e : r.evaluations) {
-        data += std::to_string(e.index) + "," + (e.feasible ? cell(e.outcome.objective) : "") + "," + cell(e.best) + "\n";
-    }
     const std::string q = p.columns[p.objective].name;
+    CsvTable t;
+    t.header = {"index", q, "best_" + q};  // the objective where the design is feasible, and the best so far
+    for (const DesignEvaluation& e : r.evaluations) {
+        t.add_row({count(e.index), e.feasible ? csv_number(e.outcome.objective) : csv_missing(), csv_number(e.best)});
+    }
+    const std::string data = t.str();
     FigureSpec f;
     f.name = "convergence";
     f.title = "Convergence: " + q + " against evaluations";

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "io/number_text.hpp"
+#include "io/csv_writer.hpp"
 
 namespace vi::cli {
 namespace {
@@ -105,12 +105,10 @@ std::string fit_result_text(const std::vector<FitParameter>& params, const FitRe
 }
 
 std::string trajectory_residuals_csv(const MeasuredTrajectory& data, const FitResult& r) {
-    std::string text = "t_s,data,model,residual\n";
-    for (std::size_t k = 0; k < data.t.size(); ++k) {
-        text.append(round_trip_text(data.t[k])).append(",").append(round_trip_text(data.value[k])).append(",");
-        text.append(round_trip_text(r.model[k])).append(",").append(round_trip_text(r.residual[k])).append("\n");
-    }
-    return text;
+    CsvTable t;
+    t.header = {"t_s", "data_" + data.column, "model_" + data.column, "residual_" + data.column};
+    for (std::size_t k = 0; k < data.t.size(); ++k) t.add_row({data.t[k], data.value[k], r.model[k], r.residual[k]});
+    return t.str();
 }
 
 FigureSpec trajectory_figure(const MeasuredTrajectory& data, const FitResult& r) {
@@ -128,14 +126,15 @@ FigureSpec trajectory_figure(const MeasuredTrajectory& data, const FitResult& r)
 }
 
 std::string feature_residuals_csv(const MeasuredFeatures& data, const FitResult& r) {
-    std::string text = "name,value,sigma,model,residual,normalized\n";
+    CsvTable t;
+    t.header = {"feature", "value_in_feature_unit", "sigma_in_feature_unit", "model_in_feature_unit", "residual_in_feature_unit",
+                "residual_over_sigma"};
     for (std::size_t k = 0; k < data.features.size(); ++k) {
         const MeasuredFeature& f = data.features[k];
-        text.append(f.name).append(",").append(round_trip_text(f.value)).append(",").append(round_trip_text(f.sigma)).append(",");
-        text.append(round_trip_text(r.model[k])).append(",").append(round_trip_text(r.residual[k])).append(",");
-        text.append(round_trip_text(r.residual[k] / f.sigma)).append("\n");
+        t.add_row({csv_text(f.name), csv_number(f.value), csv_number(f.sigma), csv_number(r.model[k]), csv_number(r.residual[k]),
+                   csv_number(r.residual[k] / f.sigma)});
     }
-    return text;
+    return t.str();
 }
 
 FigureSpec feature_figure(const MeasuredFeatures& data, const FitResult& r) {

@@ -20,11 +20,12 @@ nlohmann::json fit_result_json(const std::vector<FitParameter>& params, const Fi
 // The same as text lines: the parameters (nuisance ones marked), then the starts when there were several.
 std::string fit_result_text(const std::vector<FitParameter>& params, const FitResult& r);
 
-// t_s, data, model, residual per sample.
+// t_s, data_<column>, model_<column>, residual_<column> per sample (the column's unit in its name: tip_m).
 std::string trajectory_residuals_csv(const MeasuredTrajectory& data, const FitResult& r);
 FigureSpec trajectory_figure(const MeasuredTrajectory& data, const FitResult& r);
 
-// name, value, sigma, model, residual, normalized (residual / sigma) per feature.
+// feature (its name, e.g. f1_hz, carries its unit), value, sigma, model and residual in that unit
+// (*_in_feature_unit), residual_over_sigma, per feature.
 std::string feature_residuals_csv(const MeasuredFeatures& data, const FitResult& r);
 FigureSpec feature_figure(const MeasuredFeatures& data, const FitResult& r);
 

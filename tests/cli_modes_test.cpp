@@ -73,7 +73,7 @@ TEST(CliModes, OutFolderGetsJsonAndCsv) {
     std::ifstream in(dir + "/shapes_unsupported.csv");
     std::string header;
     std::getline(in, header);
-    EXPECT_EQ(header.rfind("x_over_l,x_m,v_1,theta_1", 0), 0u) << header;
+    EXPECT_EQ(header.rfind("x_over_l,x_m,v_1_per_sqrt_kg,theta_1_per_m_sqrt_kg,v_2_per_sqrt_kg", 0), 0u) << header;
     fs::remove_all(fs::path(dir).parent_path());
 }
 

@@ -14,7 +14,9 @@
 #include <string>
 #include <vector>
 
+#include "io/csv_reader.hpp"
 #include "validation/closed_forms.hpp"
+#include "support/csv_checks.hpp"
 #include "support/run_command.hpp"
 #include "support/test_files.hpp"
 
@@ -38,17 +40,10 @@ struct Csv {
 
 Csv read_csv(const fs::path& p) {
     Csv c;
-    std::istringstream in(read_text(p));
-    std::string line;
-    auto split = [](const std::string& l) {
-        std::vector<std::string> cells;
-        std::istringstream s(l);
-        std::string cell;
-        while (std::getline(s, cell, ',')) cells.push_back(cell);
-        return cells;
-    };
-    if (std::getline(in, line)) c.header = split(line);
-    while (std::getline(in, line)) c.rows.push_back(split(line));
+    for (CsvRow& row : split_csv(read_text(p), p.string())) {
+        if (c.header.empty()) c.header = std::move(row.cells);
+        else c.rows.push_back(std::move(row.cells));
+    }
     return c;
 }
 
@@ -111,7 +106,6 @@ void CliPaper::check_files() {
         }
         EXPECT_EQ(read_text(dir() / (stem + ".png")).substr(1, 3), "PNG") << stem;
         EXPECT_NE(read_text(dir() / (stem + ".svg")).find("<svg"), std::string::npos) << stem;
-        // Every column of a figure's CSV names its unit or says it is dimensionless by its name.
         const Csv csv = read_csv(dir() / (stem + ".csv"));
         EXPECT_FALSE(csv.header.empty()) << stem;
         EXPECT_FALSE(csv.rows.empty()) << stem;
@@ -119,6 +113,9 @@ void CliPaper::check_files() {
     for (const char* extra : {"fig2_points.csv", "fig3_impacts.csv", "fig7_lines.csv", "report.html", "report.md", "claims.json"}) {
         EXPECT_TRUE(fs::is_regular_file(dir() / extra)) << extra;
     }
+    // Every CSV follows the one convention: each column names its unit or is dimensionless by its
+    // name, numbers in their shortest round-trip form, "nan" where a run gives no value.
+    EXPECT_EQ(test::expect_csv_convention_in(dir().string()), 13u);
     // Nothing but those: no temporary or partial files left behind.
     for (const auto& e : fs::directory_iterator(dir())) EXPECT_NE(e.path().filename().string()[0], '.') << e.path();
 }
@@ -192,10 +189,10 @@ void CliPaper::check_transient_claims() {
     };
     const json v87 = claim("rebound_min_087")["values"];
     ASSERT_TRUE(v87.contains("z_max_at_point"));
-    EXPECT_NEAR(v87["z_max_at_point"].get<double>(), std::stod(row_at(f4, 0.87)[f4.col("z_max_m50")]),
+    EXPECT_NEAR(v87["z_max_at_point"].get<double>(), std::stod(row_at(f4, 0.87)[f4.col("m50_z_max")]),
                 1e-8 * v87["z_max_at_point"].get<double>());
     const json t87 = claim("shorter_transient_87")["values"];
-    const std::string cell = row_at(f5, 0.87)[f5.col("tau_p_m50")];
+    const std::string cell = row_at(f5, 0.87)[f5.col("m50_tau_p")];
     if (t87.contains("tau_p_at_point")) {
         EXPECT_NEAR(t87["tau_p_at_point"].get<double>(), std::stod(cell), 1e-8 * std::stod(cell));
     } else {
@@ -214,8 +211,8 @@ void CliPaper::check_gaps() {
     const Csv f5 = read_csv(dir() / "fig5.csv");
     int unsettled = 0;
     for (const auto& r : f5.rows) {
-        const std::string reason = r[f5.col("tp_reason_m50")];
-        const std::string tau_p = r[f5.col("tau_p_m50")];
+        const std::string reason = r[f5.col("m50_tp_reason")];
+        const std::string tau_p = r[f5.col("m50_tau_p")];
         EXPECT_EQ(reason == "settled" || reason == "persistent_contact", tau_p != "nan") << reason << " " << tau_p;
         unsettled += tau_p == "nan";
     }

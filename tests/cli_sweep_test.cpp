@@ -120,7 +120,8 @@ TEST_F(SweepCli, CsvIsTheSameForOneTwoThreadsAndTwoMpiRanks) {
     // Grid order: the last --set varies fastest; every point ran.
     const auto lines = lines_of(csv);
     ASSERT_EQ(lines.size(), 11u);
-    EXPECT_EQ(lines[0].rfind("supports[0].position,supports[0].stiffness,omega1_rad_s,impacts,episodes,T_s,", 0), 0u);
+    // The swept paths with their units (x/l and N/m), then the results.
+    EXPECT_EQ(lines[0].rfind("supports[0].position_over_l,supports[0].stiffness_n_m,omega1_rad_s,impacts,episodes,T_s,", 0), 0u);
     const std::vector<std::string> header = cells_of(lines[0]);
     EXPECT_EQ(header.back(), "status");
     for (std::size_t i = 1; i < lines.size(); ++i) {
@@ -183,7 +184,7 @@ TEST_F(SweepCli, FailingPointGetsItsStatusAndTheSweepGoesOn) {
     ASSERT_EQ(bad.size(), header.size());
     EXPECT_EQ(bad.front(), "1.5");
     EXPECT_EQ(bad.back(), "error: supports[0].position: must lie in (0, 1] (x0/l)");
-    for (std::size_t k = 1; k + 1 < bad.size(); ++k) EXPECT_EQ(bad[k], "") << header[k];
+    for (std::size_t k = 1; k + 1 < bad.size(); ++k) EXPECT_EQ(bad[k], "nan") << header[k];
     for (const std::size_t i : {1u, 3u}) {
         const auto good = cells_of(lines[i]);
         EXPECT_EQ(good.back(), "ok") << lines[i];
@@ -325,8 +326,8 @@ TEST_F(SweepCli, ModesSweepReportsFrequenciesRatiosAndNodes) {
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto lines = lines_of(r.out);
     ASSERT_EQ(lines.size(), 3u);
-    EXPECT_EQ(lines[0], "supports[0].position,f_unsupported_1_hz,f_supported_1_hz,ratio_1,nodes_supported_1,"
-                        "f_unsupported_2_hz,f_supported_2_hz,ratio_2,nodes_supported_2,status");
+    EXPECT_EQ(lines[0], "supports[0].position_over_l,f_unsupported_1_hz,f_supported_1_hz,ratio_1,nodes_supported_1_over_l,"
+                        "f_unsupported_2_hz,f_supported_2_hz,ratio_2,nodes_supported_2_over_l,status");
     for (std::size_t i = 1; i < 3; ++i) {
         const auto cells = cells_of(lines[i]);
         ASSERT_EQ(cells.size(), 10u);

@@ -66,7 +66,9 @@ TEST(RunPlotStyle, UnitsFromColumnNamesAndPrefixes) {
     EXPECT_EQ(column_unit("tip_velocity_m_s").unit, "m/s");
     EXPECT_EQ(column_unit("contact0_force_n").unit, "N");
     EXPECT_EQ(column_unit("omega1_rad_s").unit, "rad/s");
-    EXPECT_EQ(column_unit("x_over_l").unit, "");
+    EXPECT_EQ(column_unit("x_over_l").unit, "x/l");
+    EXPECT_EQ(column_unit("z_max").unit, "");
+    EXPECT_EQ(column_unit("z_max").quantity, "z max");
     EXPECT_EQ(display_unit("m", 9.9999999e-7).text, "µm");  // a rounded 1 µm stays in µm
     EXPECT_DOUBLE_EQ(display_unit("m", 9.9999999e-7).factor, 1e6);
     EXPECT_EQ(display_unit("s", 1.5e-4).text, "µs");

@@ -134,16 +134,16 @@ TEST(SweepGrid, IdentityFollowsCaseAxesAndAnalysis) {
     EXPECT_EQ(fingerprint_of("").size(), 16u);
 }
 
-TEST(SweepTable, RowsQuoteTextAndLeaveMissingValuesEmpty) {
+TEST(SweepTable, RowsQuoteTextAndMarkMissingValues) {
     SweepPointResult r;
     r.parameters = {0.9, 10};
     r.cells = {SweepCell(), 1.5e-6, std::int64_t{3}, std::string("settled"), std::string("a,b")};
     r.status = "ok";
-    EXPECT_EQ(sweep_csv_row(r, 5), "0.9,10,,1.5e-06,3,settled,\"a,b\",ok");
+    EXPECT_EQ(sweep_csv_row(r, 5), "0.9,10,nan,1.5e-06,3,settled,\"a,b\",ok");
     r.cells.clear();
     r.status = "error: supports[0].position: must lie in (0, 1] (x0/l) \"quoted\"";
     const std::string row = sweep_csv_row(r, 5);
-    EXPECT_EQ(row, "0.9,10,,,,,,\"error: supports[0].position: must lie in (0, 1] (x0/l) \"\"quoted\"\"\"");
+    EXPECT_EQ(row, "0.9,10,nan,nan,nan,nan,nan,\"error: supports[0].position: must lie in (0, 1] (x0/l) \"\"quoted\"\"\"");
     EXPECT_EQ(sweep_row_status(row), r.status);
     EXPECT_EQ(sweep_row_status("1,2,ok"), "ok");
     EXPECT_EQ(sweep_row_status("1,\"error: x\""), "error: x");

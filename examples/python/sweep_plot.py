@@ -38,7 +38,7 @@ def main():
     result = vi.sweep(case, {"supports[0].stiffness": f"log:{args.low}:{args.high}:{args.points}"})
     table = result["table"]
     ok = table["status"] == "ok"
-    kc = table["supports[0].stiffness"]
+    kc = table["supports[0].stiffness_n_m"]  # a swept path's column carries its unit
 
     fig, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(6, 6))
     top.semilogx(kc[ok], table["T_s"][ok] * 1e6, "o-")

@@ -26,8 +26,8 @@ void bind_analyses(py::module_& m);
 void bind_sweep(py::module_& m);
 
 // convert.cpp: a CSV text as written by the command line -> dict of numpy arrays, one per column
-// in file order: int64 for integer_columns without empty cells, else float64 (NaN for an empty
-// cell), str for a column holding text.
+// in file order (read by io/csv_reader.hpp): int64 for integer_columns without a missing value,
+// else float64 (NaN for the missing-value marker "nan", or an empty cell), str for a column holding text.
 py::dict csv_columns(const std::string& csv, const std::set<std::string>& integer_columns = {});
 // convert.cpp: a JSON text -> the same Python value json.loads would give.
 py::object json_value(const std::string& json);

@@ -14,38 +14,14 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "io/csv_reader.hpp"
 
 namespace vi::python {
 namespace {
 
-// One CSV line split into cells; a quoted cell may hold commas and doubled quotes (RFC 4180, no
-// line breaks inside a cell: the library writes none).
-std::vector<std::string> cells_of(std::string_view line) {
-    std::vector<std::string> cells(1);
-    bool quoted = false;
-    for (std::size_t i = 0; i < line.size(); ++i) {
-        const char ch = line[i];
-        if (quoted && ch == '"' && i + 1 < line.size() && line[i + 1] == '"') {
-            cells.back() += '"';
-            ++i;
-        } else if (ch == '"') {
-            quoted = !quoted;
-        } else if (ch == ',' && !quoted) {
-            cells.emplace_back();
-        } else {
-            cells.back() += ch;
-        }
-    }
-    return cells;
-}
-
 std::optional<double> number_of(const std::string& cell) {
-    double v = 0.0;
-    const char* end = cell.data() + cell.size();
-    const auto [ptr, ec] = std::from_chars(cell.data(), end, v);
-    if (ec == std::errc::result_out_of_range) return std::nullopt;
-    if (ec != std::errc() || ptr != end) return std::nullopt;
-    return v;
+    // An empty cell (a file from before the missing-value marker) is a number here, NaN, as "nan" is.
+    return csv_cell_number(cell);
 }
 
 std::optional<std::int64_t> whole_of(const std::string& cell) {
@@ -56,16 +32,12 @@ std::optional<std::int64_t> whole_of(const std::string& cell) {
     return v;
 }
 
-// One column's cells as an array: int64 for a column of whole numbers (`integer`, no empty cell),
-// float64 when every cell is a number or empty (NaN), otherwise str.
+// One column's cells as an array: int64 for a column of whole numbers (`integer`, no missing cell),
+// float64 when every cell is a number or the missing-value marker (NaN), otherwise str.
 py::object column_array(const std::vector<std::string>& cells, bool integer) {
     bool whole = integer;
     bool numeric = true;
     for (const std::string& c : cells) {
-        if (c.empty()) {
-            whole = false;
-            continue;
-        }
         if (whole && !whole_of(c)) whole = false;
         if (!whole && !number_of(c)) {
             numeric = false;
@@ -84,7 +56,7 @@ py::object column_array(const std::vector<std::string>& cells, bool integer) {
         auto w = a.mutable_unchecked<1>();
         for (py::ssize_t i = 0; i < n; ++i) {
             const std::string& c = cells[static_cast<std::size_t>(i)];
-            w(i) = c.empty() ? std::numeric_limits<double>::quiet_NaN() : *number_of(c);
+            w(i) = *number_of(c);
         }
         return a;
     }
@@ -98,22 +70,14 @@ py::object column_array(const std::vector<std::string>& cells, bool integer) {
 py::dict csv_columns(const std::string& csv, const std::set<std::string>& integer_columns) {
     std::vector<std::string> header;
     std::vector<std::vector<std::string>> columns;
-    std::size_t start = 0;
-    while (start < csv.size()) {
-        std::size_t end = csv.find('\n', start);
-        if (end == std::string::npos) end = csv.size();
-        std::string_view line(csv.data() + start, end - start);
-        if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
-        start = end + 1;
-        if (line.empty()) continue;
-        std::vector<std::string> cells = cells_of(line);
+    for (CsvRow& row : split_csv(csv, "CSV")) {
         if (header.empty()) {
-            header = std::move(cells);
+            header = std::move(row.cells);
             columns.resize(header.size());
             continue;
         }
-        if (cells.size() != header.size()) throw std::logic_error("CSV row width differs from its header");
-        for (std::size_t i = 0; i < cells.size(); ++i) columns[i].push_back(std::move(cells[i]));
+        if (row.cells.size() != header.size()) throw std::logic_error("CSV row width differs from its header");
+        for (std::size_t i = 0; i < row.cells.size(); ++i) columns[i].push_back(std::move(row.cells[i]));
     }
     py::dict out;
     for (std::size_t i = 0; i < header.size(); ++i) out[py::str(header[i])] = column_array(columns[i], integer_columns.count(header[i]) > 0);

@@ -74,7 +74,7 @@ py::dict sweep(const Case& base, const py::object& values, const std::string& an
     // Integer columns: whole-number paths, and results that are counts.
     std::set<std::string> integer_columns;
     for (const SweepAxis& a : grid.axes()) {
-        if (is_integer_path(a.path)) integer_columns.insert(a.path.text());
+        if (is_integer_path(a.path)) integer_columns.insert(case_path_column(a.path));
     }
     std::vector<std::string> rows(grid.size());
     std::vector<std::size_t> indices(grid.size());

@@ -55,7 +55,7 @@ def read_csv(text):
 
 
 def assert_column_equals_cells(name, array, cells):
-    """Every value of a numpy column equals the CSV cell read back (empty cell: NaN), exactly."""
+    """Every value of a numpy column equals the CSV cell read back ("nan", the missing marker: NaN), exactly."""
     assert len(array) == len(cells), name
     for i, (value, cell) in enumerate(zip(array.tolist(), cells)):
         if isinstance(value, str):

@@ -30,7 +30,8 @@ def test_two_axes_and_list_values_give_the_grid_of_the_command_line(small_case, 
     for name, cells in cli.items():
         assert_column_equals_cells(name, table[name], cells)
     # The last axis varies fastest.
-    assert table["supports[0].stiffness"].tolist() == [500.0, 1000.0] * 3
+    assert table["supports[0].stiffness_n_m"].tolist() == [500.0, 1000.0] * 3
+    assert table["supports[0].position_over_l"].tolist() == [0.6, 0.6, 0.8, 0.8, 1.0, 1.0]
 
 
 def test_modes_sweep(small_case):

@@ -1,25 +1,14 @@
 #include "io/measured_features.hpp"
 
 #include <algorithm>
-#include <string_view>
 
+#include "io/csv_reader.hpp"
 #include "io/range_spec.hpp"
 #include "io/text_file.hpp"
 #include "model/input_error.hpp"
 
 namespace vi {
 namespace {
-
-std::vector<std::string> cells(std::string_view line) {
-    std::vector<std::string> out;
-    std::size_t begin = 0;
-    for (;;) {
-        const std::size_t comma = line.find(',', begin);
-        out.push_back(trimmed(line.substr(begin, comma == std::string_view::npos ? std::string_view::npos : comma - begin)));
-        if (comma == std::string_view::npos) return out;
-        begin = comma + 1;
-    }
-}
 
 std::string name_list() {
     std::string s;
@@ -47,15 +36,9 @@ MeasuredFeatures read_measured_features(const std::string& path) {
     if (!text) throw fail("cannot read the features file: " + reason);
     int in = -1, iv = -1, is = -1;
     std::size_t width = 0;
-    std::size_t begin = 0;
-    while (begin < text->size()) {
-        std::size_t end = text->find('\n', begin);
-        if (end == std::string::npos) end = text->size();
-        const std::string_view line(text->data() + begin, end - begin);
-        begin = end + 1;
-        ++line_no;
-        if (trimmed(line).empty() || trimmed(line)[0] == '#') continue;
-        const std::vector<std::string> row = cells(line);
+    for (const CsvRow& csv_row : split_csv(*text, path, true)) {
+        const std::vector<std::string>& row = csv_row.cells;
+        line_no = csv_row.line;
         if (width == 0) {
             width = row.size();
             for (std::size_t k = 0; k < row.size(); ++k) {

@@ -2,38 +2,25 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <sstream>
 #include <stdexcept>
+
+#include "io/csv_reader.hpp"
 
 namespace vi {
 namespace {
 
-// A CSV file of the figure: header and cells (the figure CSVs never quote: text cells hold no commas).
+// A CSV file of the figure: header and cells (io/csv_reader.hpp reads them as the writer wrote them).
 struct Table {
     std::vector<std::string> header;
     std::vector<std::vector<std::string>> rows;
 };
 
-std::vector<std::string> split_commas(const std::string& line) {
-    std::vector<std::string> out(1);
-    for (char c : line) {
-        if (c == ',') out.emplace_back();
-        else if (c != '\r') out.back() += c;
-    }
-    return out;
-}
-
-Table parse_csv(const std::string& text) {
+Table parse_csv(const std::string& text, const std::string& file) {
     Table t;
-    std::istringstream in(text);
-    std::string line;
-    bool first = true;
-    while (std::getline(in, line)) {
-        if (line.empty()) continue;
-        if (first) t.header = split_commas(line);
-        else t.rows.push_back(split_commas(line));
-        first = false;
+    for (CsvRow& row : split_csv(text, file)) {
+        if (t.header.empty()) t.header = std::move(row.cells);
+        else t.rows.push_back(std::move(row.cells));
     }
     return t;
 }
@@ -47,10 +34,7 @@ std::size_t column(const Table& t, const std::string& name, const FigureSpec& f,
 }
 
 double number(const std::vector<std::string>& row, std::size_t i) {
-    if (i >= row.size() || row[i].empty()) return NAN;
-    char* end = nullptr;
-    const double v = std::strtod(row[i].c_str(), &end);
-    return *end == '\0' ? v : NAN;
+    return i < row.size() ? csv_cell_number(row[i]).value_or(NAN) : NAN;
 }
 
 std::string json_string(const std::string& s) {
@@ -173,7 +157,7 @@ std::vector<Points> series_points(const FigureSpec& f, const std::map<std::strin
 
 std::string chart_json(const FigureSpec& f) {
     std::map<std::string, Table> tables;
-    for (const auto& [name, text] : f.data) tables[name] = parse_csv(text);
+    for (const auto& [name, text] : f.data) tables[name] = parse_csv(text, f.name + ": " + name);
     std::ostringstream s;
     s << "{\"panels\":[";
     int auto_group = 0;

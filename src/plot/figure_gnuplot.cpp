@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -124,6 +125,13 @@ std::string gp_quote(const std::string& s) {
         if (c == '\'') out += '\'';
     }
     return out + "'";
+}
+
+std::string gp_number(double v) {
+    if (!std::isfinite(v)) return "NaN";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.10g", v);
+    return buf;
 }
 
 std::optional<std::string> find_gnuplot(const std::string& requested) {

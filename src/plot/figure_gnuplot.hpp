@@ -57,4 +57,8 @@ std::map<std::string, std::string> figure_files(const std::vector<FigureSpec>& f
 // Text for a gnuplot string in single quotes (quotes doubled).
 std::string gp_quote(const std::string& s);
 
+// A number for a gnuplot command or a figure's text (a range, a label's place, "x/l = 0.87" in a
+// title): 10 significant digits; "NaN" when not finite. Data files use io/csv_writer.hpp instead.
+std::string gp_number(double v);
+
 }  // namespace vi

@@ -128,8 +128,9 @@ CsvTable mode_shapes_csv(const ModalResult& result, int per_element) {
     t.header = {"x_over_l", "x_m"};
     std::vector<SampledShape> shapes;
     for (const Mode& m : result.bending) {
-        t.header.push_back("v_" + std::to_string(m.number));
-        t.header.push_back("theta_" + std::to_string(m.number));
+        // Mass normalised (phi^T M phi = 1 with M in kg and kg m^2): v in 1/sqrt(kg), theta in 1/(m sqrt(kg)).
+        t.header.push_back("v_" + std::to_string(m.number) + "_per_sqrt_kg");
+        t.header.push_back("theta_" + std::to_string(m.number) + "_per_m_sqrt_kg");
         shapes.push_back(sample_shape(result.system, m.shape, per_element));
     }
     if (shapes.empty()) return t;

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "modal/support_scan.hpp"
-#include "io/csv_table.hpp"
+#include "io/csv_writer.hpp"
 #include "io/output_files.hpp"
 #include "modal/modal_analysis.hpp"
 
@@ -18,7 +18,8 @@ nlohmann::json modal_study_json(const ModalStudy& study);
 // Plain-text tables of frequencies, ratios, nodal points and peaks for a terminal.
 std::string modal_study_text(const ModalStudy& study);
 
-// Sampled bending shapes: x_over_l, x_m, then v_<i> and theta_<i> per mode (mass normalised, SI).
+// Sampled bending shapes: x_over_l, x_m, then per mode v_<i>_per_sqrt_kg and theta_<i>_per_m_sqrt_kg
+// (mass normalised, SI).
 CsvTable mode_shapes_csv(const ModalResult& result, int per_element);
 
 // Every file `modes --out` writes: modes.json, frequencies.csv, shapes_*.csv.

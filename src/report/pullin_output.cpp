@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "io/csv_table.hpp"
+#include "io/csv_writer.hpp"
 
 namespace vi {
 namespace {
@@ -81,7 +81,7 @@ std::string pullin_text(const PullinResult& r) {
 
 OutputFiles pullin_files(const PullinResult& r) {
     CsvTable branch;
-    branch.header = {"voltage_V", "mean_travel_m", "watched_travel_m", "capacitance_F", "contact_force_N", "contact",
+    branch.header = {"voltage_v", "mean_travel_m", "watched_travel_m", "capacitance_f", "contact_force_n", "contact",
                      "stable"};
     for (const PullinPoint& p : r.branch) {
         branch.add_row({p.voltage, p.travel, p.watched_travel, p.capacitance, p.contact_force, p.contact ? 1.0 : 0.0,
@@ -90,11 +90,11 @@ OutputFiles pullin_files(const PullinResult& r) {
     CsvTable freq;
     std::size_t count = 0;
     for (const PullinFrequencies& f : r.frequencies) count = std::max(count, f.frequency_hz.size());
-    freq.header = {"voltage_V"};
+    freq.header = {"voltage_v"};
     for (std::size_t k = 0; k < count; ++k) {
-        std::string name = std::to_string(k + 1);
-        name.insert(0, 1, 'f');
-        name += "_Hz";
+        std::string name = "f";  // built step by step: GCC 12 warns (-Wrestrict) on "f" + ... + "_hz"
+        name += std::to_string(k + 1);
+        name += "_hz";
         freq.header.push_back(name);
     }
     for (const PullinFrequencies& f : r.frequencies) {

@@ -1,5 +1,6 @@
 #include "report/transient_output.hpp"
 
+#include <limits>
 #include <string>
 
 namespace vi {
@@ -223,7 +224,7 @@ CsvTable events_csv(const TransientResult& r, const ImpactSummary& s) {
                 "peak_force_n", "peak_penetration_m", "impulse_n_s", "closed_at_end"};
     for (std::size_t i = 0; i < r.episodes.size(); ++i) {
         const ContactEpisode& e = r.episodes[i];
-        double impact = -1;
+        double impact = std::numeric_limits<double>::quiet_NaN();  // in no impact: the missing marker
         for (std::size_t k = 0; k < s.impacts.size(); ++k) {
             const Impact& im = s.impacts[k];
             if (im.support == e.support && e.t_on >= im.t_on && e.t_on <= im.t_off) impact = static_cast<double>(k);

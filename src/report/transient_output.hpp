@@ -8,7 +8,7 @@
 #include "impacts/switching_ledger.hpp"
 #include "dynamics/problem_builder.hpp"
 #include "dynamics/transient_result.hpp"
-#include "io/csv_table.hpp"
+#include "io/csv_writer.hpp"
 #include "io/output_files.hpp"
 #include "model/case.hpp"
 
@@ -29,7 +29,8 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
 // per support k: contact<k>_m, contact<k>_velocity_m_s, contact<k>_force_n, then the energy terms in J.
 CsvTable history_csv(const TransientResult& r, const std::string& watched = "tip");
 
-// One row per contact episode with the index of the impact it belongs to.
+// One row per contact episode with the index of the impact it belongs to (the missing marker for an
+// episode in no impact).
 CsvTable events_csv(const TransientResult& r, const ImpactSummary& s);
 
 // history.csv, events.csv and summary.json.

@@ -5,6 +5,7 @@
 #include <climits>
 #include <cmath>
 
+#include "io/csv_names.hpp"
 #include "io/spelling.hpp"
 #include "model/input_error.hpp"
 
@@ -346,6 +347,8 @@ bool is_integer_path(const CasePath& p) { return field_of(p).integer; }
 
 std::string case_path_unit(const CasePath& p) { return field_of(p).unit; }
 
+std::string case_path_column(const CasePath& p) { return p.text() + csv_unit_suffix(case_path_unit(p)); }
+
 std::optional<Dimension> case_path_dimension(const CasePath& p) {
     static constexpr std::pair<std::string_view, Dimension> kBySi[] = {
         {"m", Dimension::length},         {"Pa", Dimension::pressure},       {"kg/m^3", Dimension::density},
@@ -377,6 +380,13 @@ void set_case_value(Case& c, const CasePath& p, double value) {
 std::vector<std::string> case_path_forms() {
     std::vector<std::string> out;
     for (const FieldSpec& f : kFields) out.push_back(section_form(f.section) + "." + f.field + (f.indexed ? "[k]" : ""));
+    return out;
+}
+
+std::vector<std::pair<std::string, std::string>> case_path_form_units() {
+    std::vector<std::pair<std::string, std::string>> out;
+    const std::vector<std::string> forms = case_path_forms();
+    for (std::size_t k = 0; k < forms.size(); ++k) out.emplace_back(forms[k], kFields[k].unit);
     return out;
 }
 

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "io/units.hpp"
@@ -36,6 +37,9 @@ bool is_integer_path(const CasePath& p);
 // SI unit of the value at p: "m", "Pa", "kg/m^3", "N/m", "N s/m", "N", "s", "m/s", "Hz", "1/s",
 // "rad", "x/l" for positions along the beam, or "-" for other dimensionless values.
 std::string case_path_unit(const CasePath& p);
+// The name of p's column in a CSV file: its text and its unit's ending (io/csv_names.hpp), e.g.
+// "supports[0].gap_m", "supports[0].position_over_l", "damping.ratios[0]" (dimensionless).
+std::string case_path_column(const CasePath& p);
 // The dimension of the value at p, whose units a command line may use ("0.5um"); nullopt for
 // positions x/l, angles and other plain numbers.
 std::optional<Dimension> case_path_dimension(const CasePath& p);
@@ -52,5 +56,7 @@ void set_case_value(Case& c, const CasePath& p, double value);
 
 // Every accepted path, with i and k for the indices ("supports[i].position", ...), for help texts.
 std::vector<std::string> case_path_forms();
+// Each of those forms with its SI unit as case_path_unit gives it ("supports[i].gap", "m").
+std::vector<std::pair<std::string, std::string>> case_path_form_units();
 
 }  // namespace vi

@@ -33,7 +33,7 @@ std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes)
             cols.push_back({"f_unsupported_" + n + "_hz", "Hz"});
             cols.push_back({"f_supported_" + n + "_hz", "Hz"});
             cols.push_back({"ratio_" + n, "-"});
-            cols.push_back({"nodes_supported_" + n, "x/l"});
+            cols.push_back({"nodes_supported_" + n + "_over_l", "x/l"});
         }
         return cols;
     }

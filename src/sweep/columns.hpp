@@ -20,8 +20,9 @@ struct SweepColumn {
     std::string unit;  // e.g. "s", "N", "-" (dimensionless), "" (count or text)
 };
 
-// One cell: empty (no such value: T with a single impact, a mode the mesh does not have), a
-// number, a count, or text (Tp_reason, a list of nodal points).
+// One cell: empty (no such value: T with a single impact, a mode the mesh does not have; the CSV
+// writes the missing-value marker "nan"), a number, a count, or text (Tp_reason, a list of nodal
+// points).
 using SweepCell = std::variant<std::monostate, double, std::int64_t, std::string>;
 
 // How many impacts get their own columns in a simulate sweep.
@@ -38,7 +39,7 @@ std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes)
 std::vector<SweepCell> simulate_cells(const SimulationRun& run);
 
 // A modal study's values in the order of sweep_result_columns(modes, modes): per mode i,
-// f_unsupported_<i>_hz, f_supported_<i>_hz, ratio_<i>, nodes_supported_<i> (x/l, space separated).
+// f_unsupported_<i>_hz, f_supported_<i>_hz, ratio_<i>, nodes_supported_<i>_over_l (x/l, space separated).
 std::vector<SweepCell> modes_cells(const ModalStudy& study, int modes);
 
 }  // namespace vi

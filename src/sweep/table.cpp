@@ -1,36 +1,16 @@
 #include "sweep/table.hpp"
 
-#include <cinttypes>
-#include <cmath>
-#include <cstdio>
-
 #include "sweep/case_paths.hpp"
-#include "io/number_text.hpp"
+#include "io/csv_writer.hpp"
 
 namespace vi {
 namespace {
 
-std::string number_cell(double v) { return std::isnan(v) ? std::string() : round_trip_text(v); }
-
-std::string text_cell(const std::string& s, bool always_quote) {
-    if (!always_quote && s.find_first_of(",\"\r\n") == std::string::npos) return s;
-    std::string out = "\"";
-    for (char ch : s) {
-        if (ch == '"') out += '"';
-        out += ch;
-    }
-    return out + "\"";
-}
-
-std::string cell_text(const SweepCell& c) {
-    if (const auto* d = std::get_if<double>(&c)) return number_cell(*d);
-    if (const auto* i = std::get_if<std::int64_t>(&c)) {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%" PRId64, *i);
-        return buf;
-    }
-    if (const auto* s = std::get_if<std::string>(&c)) return text_cell(*s, false);
-    return "";
+CsvCell cell_of(const SweepCell& c) {
+    if (const auto* d = std::get_if<double>(&c)) return csv_number(*d);
+    if (const auto* i = std::get_if<std::int64_t>(&c)) return csv_count(*i);
+    if (const auto* s = std::get_if<std::string>(&c)) return csv_text(*s);
+    return csv_missing();
 }
 
 const char* analysis_name(SweepAnalysis a) { return a == SweepAnalysis::modes ? "modes" : "simulate"; }
@@ -38,29 +18,20 @@ const char* analysis_name(SweepAnalysis a) { return a == SweepAnalysis::modes ? 
 }  // namespace
 
 std::string sweep_csv_header(const SweepGrid& grid, const std::vector<SweepColumn>& columns) {
-    std::string line;
-    for (const SweepAxis& a : grid.axes()) {
-        if (!line.empty()) line += ',';
-        line += a.path.text();
-    }
-    for (const SweepColumn& c : columns) {
-        line += ',';
-        line += c.name;
-    }
-    return line + ",status";
+    std::vector<std::string> names;
+    for (const SweepAxis& a : grid.axes()) names.push_back(case_path_column(a.path));
+    for (const SweepColumn& c : columns) names.push_back(c.name);
+    names.emplace_back("status");
+    return csv_header_line(names);
 }
 
 std::string sweep_csv_row(const SweepPointResult& r, std::size_t result_columns) {
-    std::string line;
-    for (std::size_t i = 0; i < r.parameters.size(); ++i) {
-        if (i) line += ',';
-        line += number_cell(r.parameters[i]);
-    }
-    for (std::size_t i = 0; i < result_columns; ++i) {
-        line += ',';
-        if (i < r.cells.size()) line += cell_text(r.cells[i]);
-    }
-    return line + "," + text_cell(r.status, !r.ok());
+    std::vector<CsvCell> cells;
+    cells.reserve(r.parameters.size() + result_columns + 1);
+    for (double p : r.parameters) cells.push_back(csv_number(p));
+    for (std::size_t i = 0; i < result_columns; ++i) cells.push_back(i < r.cells.size() ? cell_of(r.cells[i]) : csv_missing());
+    cells.push_back(csv_text(r.status));
+    return csv_line(cells);
 }
 
 std::string sweep_row_status(std::string_view row) {
@@ -96,6 +67,7 @@ nlohmann::json sweep_summary_json(const SweepGrid& grid, const SweepRunInfo& inf
     nlohmann::json axes = nlohmann::json::array();
     for (const SweepAxis& a : grid.axes()) {
         axes.push_back({{"path", a.path.text()},
+                        {"column", case_path_column(a.path)},
                         {"setting", a.setting},
                         {"unit", case_path_unit(a.path)},
                         {"values", a.values}});
@@ -116,7 +88,7 @@ nlohmann::json sweep_summary_json(const SweepGrid& grid, const SweepRunInfo& inf
     j["points_per_s"] = info.wall_s > 0.0 ? nlohmann::json(static_cast<double>(info.computed_this_run) / info.wall_s)
                                           : nlohmann::json(nullptr);
     nlohmann::json cols = nlohmann::json::array();
-    for (const SweepAxis& a : grid.axes()) cols.push_back({{"name", a.path.text()}, {"unit", case_path_unit(a.path)}});
+    for (const SweepAxis& a : grid.axes()) cols.push_back({{"name", case_path_column(a.path)}, {"unit", case_path_unit(a.path)}});
     for (const SweepColumn& c : info.columns) cols.push_back({{"name", c.name}, {"unit", c.unit}});
     cols.push_back({{"name", "status"}, {"unit", ""}});
     j["columns"] = cols;

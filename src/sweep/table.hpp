@@ -14,12 +14,14 @@
 
 namespace vi {
 
-// The header line (no newline): every swept path, the result columns, then "status".
+// The header line (no newline): every swept path with its unit (case_path_column: "supports[0].gap_m"),
+// the result columns, then "status".
 std::string sweep_csv_header(const SweepGrid& grid, const std::vector<SweepColumn>& columns);
 
-// One point's line (no newline). Numbers as their shortest round-trip text (io/number_text.hpp),
-// so that a row is the same whichever thread or process computed it; empty cells for missing values and for the results of a
-// failed point (result_columns of them); text quoted as CSV needs; an error status always quoted.
+// One point's line (no newline), written by io/csv_writer.hpp: numbers as their shortest round-trip
+// text, so that a row is the same whichever thread or process computed it; the missing-value marker
+// for values the point does not define and for the results of a failed point (result_columns of
+// them); text quoted as RFC 4180 needs.
 std::string sweep_csv_row(const SweepPointResult& r, std::size_t result_columns);
 
 // The status cell (last cell) of a line written by sweep_csv_row, unquoted: "ok" or "error: ...".
@@ -42,7 +44,7 @@ struct SweepRunInfo {
     double wall_s = 0.0;               // wall time of this run's points
 };
 
-// {"case", "case_name", "analysis", "axes": [{"path", "setting", "unit", "values"}], "points",
+// {"case", "case_name", "analysis", "axes": [{"path", "column", "setting", "unit", "values"}], "points",
 // "done", "ok", "failed", "failures", "computed_this_run", "from_journal", "threads", "processes",
 // "wall_s", "points_per_s", "columns": [{"name", "unit"}], "fingerprint"}.
 nlohmann::json sweep_summary_json(const SweepGrid& grid, const SweepRunInfo& info);

@@ -7,7 +7,7 @@
 #include "dynamics/cvode_solver.hpp"
 #include "dynamics/problem_builder.hpp"
 #include "modal/eigen_solver.hpp"
-#include "report/csv_text.hpp"
+#include "io/csv_writer.hpp"
 
 namespace vi {
 namespace {
@@ -119,11 +119,11 @@ std::vector<double> air_q_pressures() {
 }
 
 std::string air_q_csv(const std::vector<AirQPoint>& points) {
-    CsvText t;
+    CsvTable t;
     t.header = {"pressure_pa", "knudsen", "viscosity_ratio", "squeeze_number", "q_modal", "q_ringdown", "maxima"};
     for (const AirQPoint& x : points) {
-        t.add({cell(x.pressure), cell(x.knudsen), cell(x.viscosity_ratio), cell(x.squeeze_number), cell(x.q_modal),
-               cell(x.q_ringdown), std::to_string(x.maxima)});
+        t.add_row({csv_number(x.pressure), csv_number(x.knudsen), csv_number(x.viscosity_ratio), csv_number(x.squeeze_number),
+                   csv_number(x.q_modal), csv_number(x.q_ringdown), csv_count(x.maxima)});
     }
     return t.str();
 }

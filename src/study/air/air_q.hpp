@@ -43,7 +43,7 @@ AirQPoint air_q_point(const Case& c, double pressure, const AirQOptions& o = {})
 std::vector<double> air_q_pressures();
 
 // The CSV (pressure_pa, knudsen, viscosity_ratio, squeeze_number, q_modal, q_ringdown, maxima;
-// q_ringdown empty where there is none) and its log-log figure.
+// q_ringdown the missing-value marker where there is none) and its log-log figure.
 std::string air_q_csv(const std::vector<AirQPoint>& points);
 FigureSpec air_q_figure(const std::vector<AirQPoint>& points, const std::string& case_name);
 

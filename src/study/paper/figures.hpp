@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "io/csv_writer.hpp"
 #include "study/paper/study.hpp"
 #include "plot/figure_gnuplot.hpp"
 
@@ -36,10 +37,12 @@ std::string scan_xrange(const PaperStudy& st);
 std::string num(double v, int sig = 4);
 std::string us(double seconds);
 
-// Of a scan: " N runs failed (...)." or ""; how many runs ended before T_p; a point's status cell.
+// Of a scan: " N runs failed (...)." or ""; how many runs ended before T_p; a point's status cell
+// (its T_p reason, or "error: ..."); the prefix of a scan's columns in a figure's CSV ("m50_").
 std::string failures(const TransientScan& s);
 int unsettled(const TransientScan& s);
-std::string status(const TransientPoint& p);
+CsvCell status(const TransientPoint& p);
+std::string mesh_prefix(int elements);
 
 // The figures, one function each.
 FigureSpec fig2(const PaperStudy& st);

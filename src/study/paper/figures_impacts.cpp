@@ -5,19 +5,19 @@
 
 #include "study/paper/curve_features.hpp"
 #include "study/paper/claims.hpp"
-#include "report/csv_text.hpp"
+#include "io/csv_writer.hpp"
 #include "study/paper/figures.hpp"
 
 namespace vi::figure_detail {
 
 FigureSpec fig9(const PaperStudy& st) {
     const TransientScan& s = st.prestress;
-    CsvText t;
+    CsvTable t;
     t.header = {"delta_over_l", "z_max", "z_equilibrium", "z_top", "tau_p", "status"};
     for (const TransientPoint& p : s.points) {
         std::optional<double> top;
         if (p.z_max && p.z_equilibrium) top = *p.z_max + *p.z_equilibrium;
-        t.add({cell(p.x), cell(p.z_max), cell(p.z_equilibrium), cell(top), cell(p.tau_p), status(p)});
+        t.add_row({csv_number(p.x), csv_number(p.z_max), csv_number(p.z_equilibrium), csv_number(top), csv_number(p.tau_p), status(p)});
     }
     const auto minima = local_minima(scan_x(s), scan_z_max(s));
     std::ostringstream p;
@@ -30,7 +30,7 @@ FigureSpec fig9(const PaperStudy& st) {
     if (!minima.empty()) {
         p << "set label 2 sprintf('first local minimum: Δ/l = %.4f', " << minima.front().x << ") at first " << minima.front().x
           << ", first " << minima.front().y * 1e3 << " left offset 1,-1.2 font ',10'\n";
-        extra = ", \\\n  '+' using (" + cell(minima.front().x) + "):(" + cell(minima.front().y * 1e3) +
+        extra = ", \\\n  '+' using (" + gp_number(minima.front().x) + "):(" + gp_number(minima.front().y * 1e3) +
                 ") every ::0::0 with points pointtype 6 pointsize 2 linecolor rgb 'black' title 'first local minimum (parabola)'";
     }
     p << "plot 'fig9.csv' using 1:($2*1e3) with linespoints pointtype 7 pointsize 0.7 linewidth 2 linecolor rgb '#1f77b4' "
@@ -55,18 +55,18 @@ FigureSpec fig9(const PaperStudy& st) {
 }
 
 FigureSpec fig10(const PaperStudy& st) {
-    CsvText t;
+    CsvTable t;
     t.header = {"x0_over_l"};
     for (int i = 1; i <= 3; ++i) t.header.push_back("v_in_" + std::to_string(i) + "_m_s");
-    for (int i = 1; i <= 3; ++i) t.header.push_back("peak_force_" + std::to_string(i) + "_uN");
+    for (int i = 1; i <= 3; ++i) t.header.push_back("peak_force_" + std::to_string(i) + "_un");
     t.header.push_back("status");
     if (!st.position_scans.empty()) {
         for (const TransientPoint& p : st.position_scans.front().points) {
-            std::vector<std::string> row{cell(p.x)};
-            for (std::size_t i = 0; i < 3; ++i) row.push_back(i < p.impacts.size() ? cell(p.impacts[i].v_in) : "nan");
-            for (std::size_t i = 0; i < 3; ++i) row.push_back(i < p.impacts.size() ? cell(p.impacts[i].peak_force * 1e6) : "nan");
+            std::vector<CsvCell> row{csv_number(p.x)};
+            for (std::size_t i = 0; i < 3; ++i) row.push_back(i < p.impacts.size() ? csv_number(p.impacts[i].v_in) : csv_missing());
+            for (std::size_t i = 0; i < 3; ++i) row.push_back(i < p.impacts.size() ? csv_number(p.impacts[i].peak_force * 1e6) : csv_missing());
             row.push_back(status(p));
-            t.add(row);
+            t.add_row(row);
         }
     }
     std::ostringstream p;
@@ -98,7 +98,7 @@ FigureSpec fig10(const PaperStudy& st) {
         c.series.push_back(v);
     }
     for (int i = 1; i <= 3; ++i) {
-        ChartSeries f = series(std::string("P, impact ") + roman[i - 1], "x0_over_l", "peak_force_" + std::to_string(i) + "_uN",
+        ChartSeries f = series(std::string("P, impact ") + roman[i - 1], "x0_over_l", "peak_force_" + std::to_string(i) + "_un",
                                ChartSeries::Style::lines, color(i));
         f.dashed = true;
         f.right_axis = true;
@@ -109,12 +109,10 @@ FigureSpec fig10(const PaperStudy& st) {
 }
 
 FigureSpec fig11(const PaperStudy& st) {
-    CsvText t;
-    t.header = {"x0_over_l", "t_us", "tau", "force_uN"};
+    CsvTable t;
+    t.header = {"x0_over_l", "t_us", "tau", "force_un"};
     for (const ImpactForce& f : st.forces) {
-        for (std::size_t i = 0; i < f.t.size(); ++i) {
-            t.add({cell(f.x0), cell(f.t[i] * 1e6), cell(f.t[i] * f.omega1), cell(f.force[i] * 1e6)});
-        }
+        for (std::size_t i = 0; i < f.t.size(); ++i) t.add_row({f.x0, f.t[i] * 1e6, f.t[i] * f.omega1, f.force[i] * 1e6});
     }
     std::ostringstream p;
     p << colors_command() << "set grid lc rgb '#dddddd'\nset key top right\n"
@@ -141,8 +139,8 @@ FigureSpec fig11(const PaperStudy& st) {
     c.y_label = "contact force P [μN]";
     for (std::size_t k = 0; k < st.forces.size(); ++k) {
         const ImpactForce& f = st.forces[k];
-        ChartSeries s = series("x0/l = " + num(f.x0, 4), "t_us", "force_uN", ChartSeries::Style::lines, color(static_cast<int>(k) + 1));
-        s.where = {{"x0_over_l", cell(f.x0)}};
+        ChartSeries s = series("x0/l = " + num(f.x0, 4), "t_us", "force_un", ChartSeries::Style::lines, color(static_cast<int>(k) + 1));
+        s.where = {{"x0_over_l", csv_number(f.x0).text()}};
         c.series.push_back(s);
     }
     fig.charts.push_back(c);

@@ -6,7 +6,7 @@
 #include <map>
 #include <sstream>
 
-#include "report/csv_text.hpp"
+#include "io/csv_writer.hpp"
 #include "study/paper/figures.hpp"
 
 namespace vi::figure_detail {
@@ -14,33 +14,34 @@ namespace vi::figure_detail {
 FigureSpec fig2(const PaperStudy& st) {
     const FreeModes& fm = st.free_modes;
     const int n = static_cast<int>(fm.shapes.size());
-    CsvText shapes;
+    CsvTable shapes;
     shapes.header = {"x_over_l"};
     for (int i = 1; i <= n; ++i) shapes.header.push_back("Y_" + std::to_string(i));
     for (int i = 1; i <= n; ++i) shapes.header.push_back("Phi_" + std::to_string(i));
     const std::size_t samples = n > 0 ? fm.shapes[0].x.size() : 0;
     for (std::size_t k = 0; k < samples; ++k) {
-        std::vector<std::string> row{cell(fm.shapes[0].x[k] / fm.length)};
-        for (int i = 0; i < n; ++i) row.push_back(cell(fm.shapes[static_cast<std::size_t>(i)].v[k] * fm.amplitude_scale));
-        for (int i = 0; i < n; ++i) {
-            row.push_back(cell(fm.shapes[static_cast<std::size_t>(i)].theta[k] * fm.length * fm.amplitude_scale));
-        }
-        shapes.add(row);
+        std::vector<double> row{fm.shapes[0].x[k] / fm.length};
+        for (int i = 0; i < n; ++i) row.push_back(fm.shapes[static_cast<std::size_t>(i)].v[k] * fm.amplitude_scale);
+        for (int i = 0; i < n; ++i) row.push_back(fm.shapes[static_cast<std::size_t>(i)].theta[k] * fm.length * fm.amplitude_scale);
+        shapes.add_row(row);
     }
-    CsvText points;
+    CsvTable points;
     points.header = {"mode", "kind", "j", "x_over_l", "amplitude"};
+    const auto count = [](std::size_t j) { return csv_count(static_cast<std::int64_t>(j)); };
     for (int i = 0; i < n; ++i) {
         const ShapeFeatures& f = fm.result.bending[static_cast<std::size_t>(i)].features;
-        const std::string mode = std::to_string(i + 1);
-        for (std::size_t j = 0; j < f.nodes.size(); ++j) points.add({mode, "y", std::to_string(j + 1), cell(f.nodes[j]), "0"});
+        const CsvCell mode = csv_count(i + 1);
+        for (std::size_t j = 0; j < f.nodes.size(); ++j) {
+            points.add_row({mode, csv_text("y"), count(j + 1), csv_number(f.nodes[j]), csv_number(0.0)});
+        }
         for (std::size_t j = 0; j < f.rotation_nodes.size(); ++j) {
-            points.add({mode, "phi", std::to_string(j + 1), cell(f.rotation_nodes[j]), "0"});
+            points.add_row({mode, csv_text("phi"), count(j + 1), csv_number(f.rotation_nodes[j]), csv_number(0.0)});
         }
         for (std::size_t j = 0; j < f.peaks.size(); ++j) {
-            points.add({mode, "Y", std::to_string(j + 1), cell(f.peaks[j].x), cell(f.peaks[j].amplitude)});
+            points.add_row({mode, csv_text("Y"), count(j + 1), csv_number(f.peaks[j].x), csv_number(f.peaks[j].amplitude)});
         }
         for (std::size_t j = 0; j < f.rotation_peaks.size(); ++j) {
-            points.add({mode, "Phi", std::to_string(j + 1), cell(f.rotation_peaks[j].x), cell(f.rotation_peaks[j].amplitude)});
+            points.add_row({mode, csv_text("Phi"), count(j + 1), csv_number(f.rotation_peaks[j].x), csv_number(f.rotation_peaks[j].amplitude)});
         }
     }
     std::ostringstream p;
@@ -96,33 +97,37 @@ FigureSpec fig2(const PaperStudy& st) {
 namespace {
 
 // Nodal points (Fig. 6) or peaks (Fig. 7) of the supported modes, one row per point.
-CsvText modal_points_csv(const PaperStudy& st, bool peaks) {
-    CsvText t;
+CsvTable modal_points_csv(const PaperStudy& st, bool peaks) {
+    CsvTable t;
     t.header = peaks ? std::vector<std::string>{"x0_over_l", "mode", "kind", "j", "x_over_l", "amplitude"}
                      : std::vector<std::string>{"x0_over_l", "mode", "kind", "j", "x_over_l", "at_support"};
     for (const ModalPoint& pt : st.modal) {
         if (!pt.error.empty()) continue;
-        const std::string x0 = cell(pt.x0);
+        const CsvCell x0 = csv_number(pt.x0);
+        const auto count = [](std::size_t j) { return csv_count(static_cast<std::int64_t>(j)); };
         for (std::size_t i = 0; i < pt.features.size(); ++i) {
             const ShapeFeatures& f = pt.features[i];
-            const std::string mode = std::to_string(i + 1);
+            const CsvCell mode = count(i + 1);
             if (peaks) {
                 // A pin at the free end can leave a zero-amplitude "peak" there (docs/model.md, section 9).
                 for (std::size_t j = 0; j < f.peaks.size(); ++j) {
-                    if (f.peaks[j].amplitude > 1e-9) t.add({x0, mode, "Y", std::to_string(j + 1), cell(f.peaks[j].x), cell(f.peaks[j].amplitude)});
+                    if (f.peaks[j].amplitude > 1e-9) {
+                        t.add_row({x0, mode, csv_text("Y"), count(j + 1), csv_number(f.peaks[j].x), csv_number(f.peaks[j].amplitude)});
+                    }
                 }
                 for (std::size_t j = 0; j < f.rotation_peaks.size(); ++j) {
                     if (f.rotation_peaks[j].amplitude > 1e-9) {
-                        t.add({x0, mode, "Phi", std::to_string(j + 1), cell(f.rotation_peaks[j].x), cell(f.rotation_peaks[j].amplitude)});
+                        t.add_row({x0, mode, csv_text("Phi"), count(j + 1), csv_number(f.rotation_peaks[j].x),
+                                   csv_number(f.rotation_peaks[j].amplitude)});
                     }
                 }
             } else {
                 for (std::size_t j = 0; j < f.nodes.size(); ++j) {
                     const bool at = std::abs(f.nodes[j] - pt.x0) < 1e-9;
-                    t.add({x0, mode, "y", std::to_string(j + 1), cell(f.nodes[j]), at ? "1" : "0"});
+                    t.add_row({x0, mode, csv_text("y"), count(j + 1), csv_number(f.nodes[j]), csv_flag(at)});
                 }
                 for (std::size_t j = 0; j < f.rotation_nodes.size(); ++j) {
-                    t.add({x0, mode, "phi", std::to_string(j + 1), cell(f.rotation_nodes[j]), "0"});
+                    t.add_row({x0, mode, csv_text("phi"), count(j + 1), csv_number(f.rotation_nodes[j]), csv_flag(false)});
                 }
             }
         }
@@ -133,7 +138,7 @@ CsvText modal_points_csv(const PaperStudy& st, bool peaks) {
 // Fig. 7's peaks as lines: one row per support position, a column per (kind, mode, peak j) holding
 // the j-th peak's amplitude (nan where that mode has no such peak there). Peak j of a mode moves
 // continuously with the support, so a column is a curve; `count` gets the peaks per kind and mode.
-CsvText peak_lines_csv(const PaperStudy& st, std::map<std::pair<std::string, int>, std::size_t>& count) {
+CsvTable peak_lines_csv(const PaperStudy& st, std::map<std::pair<std::string, int>, std::size_t>& count) {
     const int n = st.options.modes;
     for (const ModalPoint& pt : st.modal) {
         if (!pt.error.empty()) continue;
@@ -144,7 +149,7 @@ CsvText peak_lines_csv(const PaperStudy& st, std::map<std::pair<std::string, int
             phi = std::max(phi, pt.features[i].rotation_peaks.size());
         }
     }
-    CsvText t;
+    CsvTable t;
     t.header = {"x0_over_l"};
     for (const char* kind : {"Y", "Phi"}) {
         for (int i = 1; i <= n; ++i) {
@@ -153,7 +158,7 @@ CsvText peak_lines_csv(const PaperStudy& st, std::map<std::pair<std::string, int
     }
     for (const ModalPoint& pt : st.modal) {
         if (!pt.error.empty()) continue;
-        std::vector<std::string> row{cell(pt.x0)};
+        std::vector<double> row{pt.x0};
         for (const bool rotation : {false, true}) {
             for (int i = 1; i <= n; ++i) {
                 const std::size_t m = count[{rotation ? "Phi" : "Y", i}];
@@ -165,11 +170,11 @@ CsvText peak_lines_csv(const PaperStudy& st, std::map<std::pair<std::string, int
                         // As in fig7.csv: a pin at the free end can leave a zero-amplitude "peak" there.
                         if (j < peaks.size() && peaks[j].amplitude > 1e-9) a = peaks[j].amplitude;
                     }
-                    row.push_back(cell(a));
+                    row.push_back(a);
                 }
             }
         }
-        t.add(row);
+        t.add_row(row);
     }
     return t;
 }
@@ -223,7 +228,7 @@ FigureSpec fig6(const PaperStudy& st) {
 FigureSpec fig7(const PaperStudy& st) {
     const int n = st.options.modes;
     std::map<std::pair<std::string, int>, std::size_t> count;
-    const CsvText lines = peak_lines_csv(st, count);
+    const CsvTable lines = peak_lines_csv(st, count);
     // Lines per mode: each peak j of mode i is a curve over x0/l (column 1 + its place in fig7_lines.csv),
     // in the mode's colour, the legend naming the mode once.
     std::ostringstream p;
@@ -275,17 +280,18 @@ FigureSpec fig7(const PaperStudy& st) {
 
 FigureSpec fig8(const PaperStudy& st) {
     const int n = st.options.modes;
-    CsvText t;
+    CsvTable t;
     t.header = {"x0_over_l"};
     for (int i = 1; i <= n; ++i) t.header.push_back("ratio_" + std::to_string(i));
     for (int i = 1; i <= n; ++i) t.header.push_back("f_supported_" + std::to_string(i) + "_hz");
+    const double missing = std::nan("");
     for (const ModalPoint& pt : st.modal) {
-        std::vector<std::string> row{cell(pt.x0)};
-        for (int i = 0; i < n; ++i) row.push_back(static_cast<std::size_t>(i) < pt.ratio.size() ? cell(pt.ratio[static_cast<std::size_t>(i)]) : "nan");
+        std::vector<double> row{pt.x0};
+        for (int i = 0; i < n; ++i) row.push_back(static_cast<std::size_t>(i) < pt.ratio.size() ? pt.ratio[static_cast<std::size_t>(i)] : missing);
         for (int i = 0; i < n; ++i) {
-            row.push_back(static_cast<std::size_t>(i) < pt.frequency_hz.size() ? cell(pt.frequency_hz[static_cast<std::size_t>(i)]) : "nan");
+            row.push_back(static_cast<std::size_t>(i) < pt.frequency_hz.size() ? pt.frequency_hz[static_cast<std::size_t>(i)] : missing);
         }
-        t.add(row);
+        t.add_row(row);
     }
     std::ostringstream p;
     p << colors_command() << "set grid lc rgb '#dddddd'\nset xrange [0:1]\nset key top left\n" << particular_points()

@@ -6,7 +6,7 @@
 
 #include "study/paper/curve_features.hpp"
 #include "study/paper/claims.hpp"
-#include "report/csv_text.hpp"
+#include "io/csv_writer.hpp"
 #include "study/paper/figures.hpp"
 
 namespace vi::figure_detail {
@@ -34,20 +34,22 @@ int unsettled(const TransientScan& s) {
     return static_cast<int>(std::count_if(s.points.begin(), s.points.end(), [](const TransientPoint& p) { return p.ok() && !p.tau_p; }));
 }
 
-std::string status(const TransientPoint& p) { return p.ok() ? p.tp_reason : "error: " + text_cell(p.error); }
+CsvCell status(const TransientPoint& p) { return csv_text(p.ok() ? p.tp_reason : "error: " + p.error); }
+
+std::string mesh_prefix(int elements) { return "m" + std::to_string(elements) + "_"; }
 
 FigureSpec fig3(const PaperStudy& st) {
     const TypicalTransient& t = st.typical;
     const ImpactSummary& s = t.summary;
-    CsvText h;
+    CsvTable h;
     h.header = {"t_us", "tip_nm"};
-    for (std::size_t i = 0; i < t.t.size(); ++i) h.add({cell(t.t[i] * 1e6), cell((t.tip[i] - t.tip_equilibrium) * 1e9)});
-    CsvText im;
-    im.header = {"impact", "t_on_us", "t_off_us", "episodes", "v_in_m_s", "peak_force_uN"};
+    for (std::size_t i = 0; i < t.t.size(); ++i) h.add_row({t.t[i] * 1e6, (t.tip[i] - t.tip_equilibrium) * 1e9});
+    CsvTable im;
+    im.header = {"impact", "t_on_us", "t_off_us", "episodes", "v_in_m_s", "peak_force_un"};
     for (std::size_t i = 0; i < s.impacts.size(); ++i) {
         const Impact& a = s.impacts[i];
-        im.add({std::to_string(i + 1), cell(a.t_on * 1e6), cell(a.t_off * 1e6), std::to_string(a.episodes), cell(a.v_in),
-                cell(a.peak_force * 1e6)});
+        im.add_row({csv_count(static_cast<std::int64_t>(i + 1)), csv_number(a.t_on * 1e6), csv_number(a.t_off * 1e6),
+                    csv_count(a.episodes), csv_number(a.v_in), csv_number(a.peak_force * 1e6)});
     }
     const double y_max_nm = s.y_max ? *s.y_max * 1e9 : 0.0;
     // When the largest rebound happens (to the output step), for the arrow in panel (b).
@@ -143,22 +145,21 @@ FigureSpec fig3(const PaperStudy& st) {
 }
 
 FigureSpec fig4(const PaperStudy& st) {
-    CsvText t;
+    CsvTable t;
     t.header = {"x0_over_l"};
     for (const TransientScan& s : st.position_scans) {
-        const std::string m = "_m" + std::to_string(s.elements);
-        for (const char* c : {"z_max", "z_min", "status"}) t.header.push_back(c + m);
+        for (const char* c : {"z_max", "z_min", "status"}) t.header.push_back(mesh_prefix(s.elements) + c);
     }
     const std::size_t n = st.position_scans.empty() ? 0 : st.position_scans.front().points.size();
     for (std::size_t i = 0; i < n; ++i) {
-        std::vector<std::string> row{cell(st.position_scans.front().points[i].x)};
+        std::vector<CsvCell> row{csv_number(st.position_scans.front().points[i].x)};
         for (const TransientScan& s : st.position_scans) {
             const TransientPoint& p = s.points[i];
-            row.push_back(cell(p.z_max));
-            row.push_back(cell(p.z_min));
+            row.push_back(csv_number(p.z_max));
+            row.push_back(csv_number(p.z_min));
             row.push_back(status(p));
         }
-        t.add(row);
+        t.add_row(row);
     }
     std::ostringstream p;
     p << colors_command() << "set grid lc rgb '#dddddd'\nset key bottom right\nset xzeroaxis lt -1\n" << particular_points()
@@ -191,7 +192,7 @@ FigureSpec fig4(const PaperStudy& st) {
         const int kk = static_cast<int>(k);
         for (const bool during : {false, true}) {
             ChartSeries s = series(during ? "free end during impact, m = " + m : "z_max, m = " + m, "x0_over_l",
-                                   (during ? "z_min_m" : "z_max_m") + m,
+                                   mesh_prefix(st.position_scans[k].elements) + (during ? "z_min" : "z_max"),
                                    k == 0 ? ChartSeries::Style::linespoints : ChartSeries::Style::lines, color(kk + (during ? 3 : 1)));
             s.y_scale = 1e3;
             s.dashed = k > 0;
@@ -203,29 +204,27 @@ FigureSpec fig4(const PaperStudy& st) {
 }
 
 FigureSpec fig5(const PaperStudy& st) {
-    CsvText t;
+    CsvTable t;
     t.header = {"x0_over_l"};
     for (const TransientScan& s : st.position_scans) {
-        const std::string m = "_m" + std::to_string(s.elements);
-        t.header.push_back("tau_p" + m);
-        t.header.push_back("tp_reason" + m);
+        t.header.push_back(mesh_prefix(s.elements) + "tau_p");
+        t.header.push_back(mesh_prefix(s.elements) + "tp_reason");
     }
     if (!st.position_scans.empty()) {
-        const std::string m = "_m" + std::to_string(st.position_scans.front().elements);
-        for (const char* c : {"tau", "tau1", "tau2"}) t.header.push_back(c + m);
+        for (const char* c : {"tau", "tau1", "tau2"}) t.header.push_back(mesh_prefix(st.position_scans.front().elements) + c);
     }
     const std::size_t n = st.position_scans.empty() ? 0 : st.position_scans.front().points.size();
     for (std::size_t i = 0; i < n; ++i) {
-        std::vector<std::string> row{cell(st.position_scans.front().points[i].x)};
+        std::vector<CsvCell> row{csv_number(st.position_scans.front().points[i].x)};
         for (const TransientScan& s : st.position_scans) {
-            row.push_back(cell(s.points[i].tau_p));
+            row.push_back(csv_number(s.points[i].tau_p));
             row.push_back(status(s.points[i]));
         }
         const TransientPoint& r = st.position_scans.front().points[i];
-        row.push_back(cell(r.tau));
-        row.push_back(cell(r.tau1));
-        row.push_back(cell(r.tau2));
-        t.add(row);
+        row.push_back(csv_number(r.tau));
+        row.push_back(csv_number(r.tau1));
+        row.push_back(csv_number(r.tau2));
+        t.add_row(row);
     }
     const std::size_t ns = st.position_scans.size();
     std::ostringstream p;
@@ -267,21 +266,22 @@ FigureSpec fig5(const PaperStudy& st) {
     a.x_marks = particular_marks();
     for (std::size_t k = 0; k < ns; ++k) {
         const std::string m = std::to_string(st.position_scans[k].elements);
-        ChartSeries s = series("τ_p, m = " + m, "x0_over_l", "tau_p_m" + m, ChartSeries::Style::linespoints, color(static_cast<int>(k) + 1));
+        ChartSeries s = series("τ_p, m = " + m, "x0_over_l", mesh_prefix(st.position_scans[k].elements) + "tau_p", ChartSeries::Style::linespoints, color(static_cast<int>(k) + 1));
         s.dashed = k > 0;
         a.series.push_back(s);
     }
     fig.charts.push_back(a);
     if (ns) {
         const std::string m = std::to_string(st.position_scans.front().elements);
+        const std::string pre = mesh_prefix(st.position_scans.front().elements);
         ChartPanel b;
         b.title = "(b) period τ, flight τ_1 and impact τ_2 of the first cycle, m = " + m;
         b.x_label = a.x_label;
         b.y_label = "τ, τ_1, τ_2 [-]";
         b.x_marks = particular_marks();
-        b.series = {series("τ", "x0_over_l", "tau_m" + m, ChartSeries::Style::linespoints, color(3)),
-                    series("τ_1", "x0_over_l", "tau1_m" + m, ChartSeries::Style::linespoints, color(4)),
-                    series("τ_2", "x0_over_l", "tau2_m" + m, ChartSeries::Style::linespoints, color(5))};
+        b.series = {series("τ", "x0_over_l", pre + "tau", ChartSeries::Style::linespoints, color(3)),
+                    series("τ_1", "x0_over_l", pre + "tau1", ChartSeries::Style::linespoints, color(4)),
+                    series("τ_2", "x0_over_l", pre + "tau2", ChartSeries::Style::linespoints, color(5))};
         fig.charts.push_back(b);
     }
     return fig;

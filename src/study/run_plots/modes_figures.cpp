@@ -7,7 +7,7 @@
 #include <sstream>
 
 #include "model/input_error.hpp"
-#include "report/csv_text.hpp"
+#include "io/csv_writer.hpp"
 #include "study/run_plots/plot_style.hpp"
 #include "study/run_plots/run_figures.hpp"
 #include "study/run_plots/run_table.hpp"
@@ -53,46 +53,48 @@ FigureSpec shapes_figure(const std::string& dir, const std::string& set, const s
     if (ix < 0) throw InputError(t.file + ":1: no column x_over_l in the header: not a modes shape file");
     std::vector<int> shapes;
     for (int k = 1; k <= 1000; ++k) {
-        const int c = t.find("v_" + std::to_string(k));
+        // v_<k> alone: a folder written before the column names carried the unit.
+        int c = t.find("v_" + std::to_string(k) + "_per_sqrt_kg");
+        if (c < 0) c = t.find("v_" + std::to_string(k));
         if (c < 0) break;
         shapes.push_back(c);
     }
-    if (shapes.empty()) throw InputError(t.file + ":1: no column v_1 in the header: no mode shape to draw");
+    if (shapes.empty()) throw InputError(t.file + ":1: no column v_1_per_sqrt_kg in the header: no mode shape to draw");
     const std::string name = "modes_" + set;
     const bool free = set == "unsupported";
     FigureSpec f = run_figure(name, free ? "Mode shapes without supports" : "Mode shapes on the supports",
                               "Bending mode shapes (" + t.file.substr(dir.size() + 1) + "), each scaled to a peak of 1, against the "
                               "position along the beam; dots: nodal points (modes.json).");
-    CsvText data;
+    CsvTable data;
     data.header = {"x_over_l"};
     std::vector<double> peak;
-    for (int c : shapes) {
-        data.header.push_back(t.header[static_cast<std::size_t>(c)] + "_scaled");
-        peak.push_back(largest_magnitude({&t.columns[static_cast<std::size_t>(c)]}));
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+        data.header.push_back("v_" + std::to_string(i + 1) + "_over_peak");
+        peak.push_back(largest_magnitude({&t.columns[static_cast<std::size_t>(shapes[i])]}));
     }
     for (std::size_t r = 0; r < t.rows; ++r) {
-        std::vector<std::string> row{cell(t.columns[static_cast<std::size_t>(ix)][r])};
+        std::vector<double> row{t.columns[static_cast<std::size_t>(ix)][r]};
         for (std::size_t i = 0; i < shapes.size(); ++i) {
             const double v = t.columns[static_cast<std::size_t>(shapes[i])][r];
-            row.push_back(cell(peak[i] > 0.0 ? v / peak[i] : v));
+            row.push_back(peak[i] > 0.0 ? v / peak[i] : v);
         }
-        data.add(std::move(row));
+        data.add_row(row);
     }
-    // The nodal points: one row per node, its value 0 in its mode's column and empty in the others.
-    CsvText nodes;
+    // The nodal points: one row per node, its value 0 in its mode's column and missing in the others.
+    CsvTable nodes;
     nodes.header = {"x_over_l"};
     for (std::size_t i = 0; i < shapes.size(); ++i) nodes.header.push_back("mode_" + std::to_string(i + 1));
     for (std::size_t i = 0; i < shapes.size() && i < facts.size(); ++i) {
         for (double x : facts[i].nodes) {
-            std::vector<std::string> row(shapes.size() + 1, "nan");
-            row[0] = cell(x);
-            row[i + 1] = "0";
-            nodes.add(std::move(row));
+            std::vector<double> row(shapes.size() + 1, std::numeric_limits<double>::quiet_NaN());
+            row[0] = x;
+            row[i + 1] = 0.0;
+            nodes.add_row(row);
         }
     }
     const std::string file = name + ".csv", node_file = name + "_nodes.csv";
     f.data = {{file, data.str()}};
-    if (!nodes.rows.empty()) f.data.emplace_back(node_file, nodes.str());
+    if (nodes.rows() > 0) f.data.emplace_back(node_file, nodes.str());
     std::ostringstream p;
     p << gp_frame("position along the beam  x/l", "deflection / peak") << "set xrange [0:1]\nset yrange [-1.15:1.15]\n"
       << "set key outside right top\nset xzeroaxis lt -1 lw 1\n";
@@ -102,7 +104,7 @@ FigureSpec shapes_figure(const std::string& dir, const std::string& set, const s
         if (i < facts.size() && std::isfinite(facts[i].frequency)) title += ": " + frequency_text(facts[i].frequency);
         p << (i ? ", " : "") << gp_quote(file) << " using 1:" << i + 2 << " with lines lw 2 lt " << i + 1 << " title " << gp_quote(title);
     }
-    if (!nodes.rows.empty()) {
+    if (nodes.rows() > 0) {
         for (std::size_t i = 0; i < shapes.size() && i < facts.size(); ++i) {
             if (facts[i].nodes.empty()) continue;  // gnuplot warns about a column without a point
             p << ", " << gp_quote(node_file) << " using 1:" << i + 2 << " with points pt 7 ps 3.5 lt " << i + 1 << " notitle";

@@ -6,24 +6,10 @@
 #include <sstream>
 #include <utility>
 
-#include "report/csv_text.hpp"
+#include "io/csv_names.hpp"
 
 namespace vi {
 namespace {
-
-// Column-name endings and their units, longest first so that "_m_s" wins over "_s".
-const std::vector<std::pair<std::string, std::string>>& unit_suffixes() {
-    static const std::vector<std::pair<std::string, std::string>> s{
-        {"_kg_m3", "kg/m³"}, {"_rad_s", "rad/s"}, {"_n_s_m", "N s/m"}, {"_pa_s", "Pa s"}, {"_m_s", "m/s"},
-        {"_n_s", "N s"},     {"_n_m", "N/m"},     {"_hz", "Hz"},       {"_pa", "Pa"},     {"_m", "m"},
-        {"_s", "s"},         {"_n", "N"},         {"_j", "J"},         {"_w", "W"},       {"_v", "V"},
-        {"_V", "V"},         {"_fF", "fF"}};
-    return s;
-}
-
-bool ends_with(const std::string& s, const std::string& tail) {
-    return s.size() > tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
-}
 
 std::string spaced(std::string s) {
     std::replace(s.begin(), s.end(), '_', ' ');
@@ -33,10 +19,8 @@ std::string spaced(std::string s) {
 }  // namespace
 
 ColumnUnit column_unit(const std::string& name) {
-    for (const auto& [tail, unit] : unit_suffixes()) {
-        if (ends_with(name, tail)) return {spaced(name.substr(0, name.size() - tail.size())), unit};
-    }
-    return {spaced(name), ""};
+    const CsvColumnUnit c = csv_column_unit(name);
+    return {spaced(c.stem), c.unit};
 }
 
 DisplayUnit display_unit(const std::string& unit, double largest) {
@@ -84,7 +68,7 @@ std::string gp_range(const std::string& axis, double lo, double hi) {
     if (!std::isfinite(lo) || !std::isfinite(hi)) return "set " + axis + "range [-1:1]\n";
     if (hi > lo) return "";
     const double half = lo == 0.0 ? 1.0 : 0.1 * std::fabs(lo);
-    return "set " + axis + "range [" + cell(lo - half) + ":" + cell(hi + half) + "]\n";
+    return "set " + axis + "range [" + gp_number(lo - half) + ":" + gp_number(hi + half) + "]\n";
 }
 
 void finite_range(const std::vector<const std::vector<double>*>& columns, double& lo, double& hi) {

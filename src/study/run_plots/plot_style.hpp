@@ -10,8 +10,8 @@
 
 namespace vi {
 
-// A column name split into the quantity and its SI unit: "tip_velocity_m_s" -> {"tip velocity", "m/s"},
-// "x_over_l" -> {"x over l", ""}.
+// A column name split into the quantity and its unit (io/csv_names.hpp): "tip_velocity_m_s" ->
+// {"tip velocity", "m/s"}, "x_over_l" -> {"x", "x/l"}, "z_max" -> {"z max", ""}.
 struct ColumnUnit {
     std::string quantity;
     std::string unit;

@@ -1,6 +1,7 @@
 // The figures of a sweep folder: each numeric reported quantity of sweep.csv against the one varying
 // axis of sweep.json, or as a heat map over two. Points without a value (a failed point, a quantity
-// the run does not define) are left out: a gap in the line, a grey cell in the map.
+// the run does not define) are left out: a gap in the line, a grey cell in the map. Each figure's CSV
+// holds sweep.csv's values as they are (SI, the same column names); the gnuplot script scales them.
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +11,7 @@
 
 #include "io/text_file.hpp"
 #include "model/input_error.hpp"
-#include "report/csv_text.hpp"
+#include "io/csv_writer.hpp"
 #include "study/run_plots/plot_style.hpp"
 #include "study/run_plots/run_figures.hpp"
 #include "study/run_plots/run_table.hpp"
@@ -21,6 +22,7 @@ namespace {
 // A varying axis of the grid: the case path, its unit, its values in grid order, its column in sweep.csv.
 struct SweepAxis {
     std::string path, unit;
+    std::string name;            // its column's name in sweep.csv ("supports[0].gap_m")
     std::vector<double> values;  // sorted, distinct
     bool log = false;            // a log:start:stop:count range: drawn on a log scale
     int column = -1;
@@ -41,8 +43,11 @@ std::vector<SweepAxis> varying_axes(const nlohmann::json& j, const RunTable& t, 
         x.values.erase(std::unique(x.values.begin(), x.values.end()), x.values.end());
         if (x.values.size() < 2) continue;  // a value set once: not an axis of the figures
         x.log = a.value("setting", std::string()).find("=log:") != std::string::npos && x.values.front() > 0.0;
-        x.column = t.find(x.path);
-        if (x.column < 0) throw InputError(t.file + ":1: no column " + x.path + " for the axis " + x.path + " of " + json_file);
+        // The column's name (sweep.json "column"); a folder written before the name carried the unit
+        // has the path alone.
+        x.name = a.value("column", x.path);
+        x.column = t.find(x.name);
+        if (x.column < 0) throw InputError(t.file + ":1: no column " + x.name + " for the axis " + x.path + " of " + json_file);
         x.shown = display_unit(x.unit, std::max(std::fabs(x.values.front()), std::fabs(x.values.back())));
         out.push_back(std::move(x));
     }
@@ -100,18 +105,19 @@ FigureSpec line_figure(const RunTable& t, const SweepAxis& a, const Quantity& q)
     std::vector<std::size_t> order(t.rows);
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return x[i] < x[j]; });
-    CsvText data;
-    data.header = {a.path + " [" + a.shown.text + "]", t.header[static_cast<std::size_t>(q.column)] + " [" + yu.text + "]"};
-    for (std::size_t r : order) data.add({cell(x[r] * a.shown.factor), cell(y[r] * yu.factor)});
+    CsvTable data;
+    data.header = {t.header[static_cast<std::size_t>(a.column)], t.header[static_cast<std::size_t>(q.column)]};
+    for (std::size_t r : order) data.add_row({x[r], y[r]});
     const std::string file = f.name + ".csv";
     f.data = {{file, data.str()}};
     double lo = 0.0, hi = 0.0;
     finite_range({&y}, lo, hi);
     std::ostringstream p;
     p << gp_frame(axis_text(a), axis_label(q.label, yu)) << "set key off\n"
-      << "set xrange [" << cell(a.values.front() * a.shown.factor) << ":" << cell(a.values.back() * a.shown.factor) << "]\n"
+      << "set xrange [" << gp_number(a.values.front() * a.shown.factor) << ":" << gp_number(a.values.back() * a.shown.factor) << "]\n"
       << gp_range("y", lo * yu.factor, hi * yu.factor) << (a.log ? "set logscale x\n" : "")
-      << "plot " << gp_quote(file) << " using 1:2 with linespoints lw 2 pt 7 ps 1.6 lc rgb '#1f77b4'\n";
+      << "plot " << gp_quote(file) << " using ($1*" << gp_number(a.shown.factor) << "):($2*" << gp_number(yu.factor)
+      << ") with linespoints lw 2 pt 7 ps 1.6 lc rgb '#1f77b4'\n";
     f.plot = p.str();
     return f;
 }
@@ -123,30 +129,33 @@ FigureSpec heat_figure(const RunTable& t, const SweepAxis& ax, const SweepAxis& 
                               t.header[static_cast<std::size_t>(q.column)] + " of sweep.csv, one cell per grid point; grey: a point "
                                   "without a value (failed, or the quantity undefined there).");
     const std::vector<double> ex = cell_edges(ax), ey = cell_edges(ay);
-    CsvText data;
-    data.header = {ax.path, ay.path, "x_low", "x_high", "y_low", "y_high", t.header[static_cast<std::size_t>(q.column)] + " [" + zu.text + "]"};
+    // Each point's cell spans low_<x> to high_<x> and low_<y> to high_<y>.
+    CsvTable data;
+    data.header = {ax.name, ay.name, "low_" + ax.name, "high_" + ax.name, "low_" + ay.name, "high_" + ay.name,
+                   t.header[static_cast<std::size_t>(q.column)]};
     const auto& xs = t.columns[static_cast<std::size_t>(ax.column)];
     const auto& ys = t.columns[static_cast<std::size_t>(ay.column)];
     for (std::size_t r = 0; r < t.rows; ++r) {
         if (!std::isfinite(z[r]) || !std::isfinite(xs[r]) || !std::isfinite(ys[r])) continue;
         const std::size_t i = index_of(ax, xs[r]), k = index_of(ay, ys[r]);
-        data.add({cell(xs[r] * ax.shown.factor), cell(ys[r] * ay.shown.factor), cell(ex[i] * ax.shown.factor), cell(ex[i + 1] * ax.shown.factor),
-                  cell(ey[k] * ay.shown.factor), cell(ey[k + 1] * ay.shown.factor), cell(z[r] * zu.factor)});
+        data.add_row({xs[r], ys[r], ex[i], ex[i + 1], ey[k], ey[k + 1], z[r]});
     }
     const std::string file = f.name + ".csv";
     f.data = {{file, data.str()}};
     double lo = 0.0, hi = 0.0;
     finite_range({&z}, lo, hi);
+    const std::string fx = gp_number(ax.shown.factor), fy = gp_number(ay.shown.factor);
     std::ostringstream p;
     p << gp_frame(axis_text(ax), axis_text(ay)) << "set key off\nunset grid\n"
       << "set cblabel " << gp_quote(axis_label(q.label, zu)) << " noenhanced\n"
       << "set palette defined (0 '#440154', 1 '#3b528b', 2 '#21908d', 3 '#5dc863', 4 '#fde725')\n"
       << "set object 1 rectangle from graph 0, graph 0 to graph 1, graph 1 behind fillcolor rgb '#bbbbbb' fillstyle solid 1.0 noborder\n"
-      << "set xrange [" << cell(ex.front() * ax.shown.factor) << ":" << cell(ex.back() * ax.shown.factor) << "]\n"
-      << "set yrange [" << cell(ey.front() * ay.shown.factor) << ":" << cell(ey.back() * ay.shown.factor) << "]\n"
+      << "set xrange [" << gp_number(ex.front() * ax.shown.factor) << ":" << gp_number(ex.back() * ax.shown.factor) << "]\n"
+      << "set yrange [" << gp_number(ey.front() * ay.shown.factor) << ":" << gp_number(ey.back() * ay.shown.factor) << "]\n"
       << (hi > lo ? std::string() : gp_range("cb", lo * zu.factor, hi * zu.factor)) << (ax.log ? "set logscale x\n" : "")
       << (ay.log ? "set logscale y\n" : "")
-      << "plot " << gp_quote(file) << " using 1:2:3:4:5:6:7 with boxxyerror fillstyle solid 1.0 noborder linecolor palette\n";
+      << "plot " << gp_quote(file) << " using ($1*" << fx << "):($2*" << fy << "):($3*" << fx << "):($4*" << fx << "):($5*" << fy
+      << "):($6*" << fy << "):($7*" << gp_number(zu.factor) << ") with boxxyerror fillstyle solid 1.0 noborder linecolor palette\n";
     f.plot = p.str();
     return f;
 }

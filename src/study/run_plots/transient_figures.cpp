@@ -1,6 +1,7 @@
 // The figures of a simulate folder: every column of history.csv against time, one figure per unit
 // (displacements with the supports' surfaces, velocities, forces, energies, any other), and the tip's
-// phase portrait.
+// phase portrait. Each figure's CSV holds its columns of history.csv as they are (SI, the same names);
+// the gnuplot script scales them to the axes' units.
 
 #include <algorithm>
 #include <cctype>
@@ -9,7 +10,7 @@
 #include <sstream>
 
 #include "model/input_error.hpp"
-#include "report/csv_text.hpp"
+#include "io/csv_writer.hpp"
 #include "study/run_plots/plot_style.hpp"
 #include "study/run_plots/run_figures.hpp"
 #include "study/run_plots/run_table.hpp"
@@ -47,7 +48,7 @@ std::string series_title(const std::string& column, const std::vector<SupportMar
         const std::size_t k = std::stoul(q.substr(7, end - 7));
         std::string rest = q.substr(end);
         q = "contact " + q.substr(7, end - 7) + rest;
-        if (k < supports.size() && std::isfinite(supports[k].position)) q += " (x/l = " + cell(supports[k].position) + ")";
+        if (k < supports.size() && std::isfinite(supports[k].position)) q += " (x/l = " + gp_number(supports[k].position) + ")";
     }
     return q;
 }
@@ -96,13 +97,13 @@ FigureSpec group_figure(const RunTable& h, int it, const UnitGroup& g, const std
     for (const SupportMark& s : surfaces) largest = std::max(largest, std::fabs(s.surface));
     const DisplayUnit tu = display_unit("s", largest_magnitude({&h.columns[static_cast<std::size_t>(it)]}));
     const DisplayUnit vu = display_unit(g.unit, largest);
-    CsvText data;
-    data.header = {"time [" + tu.text + "]"};
-    for (int k : g.columns) data.header.push_back(h.header[static_cast<std::size_t>(k)] + " [" + vu.text + "]");
+    CsvTable data;
+    data.header = {h.header[static_cast<std::size_t>(it)]};
+    for (int k : g.columns) data.header.push_back(h.header[static_cast<std::size_t>(k)]);
     for (std::size_t r : rows_to_draw(cols, h.rows)) {
-        std::vector<std::string> row{cell(h.columns[static_cast<std::size_t>(it)][r] * tu.factor)};
-        for (const auto* c : cols) row.push_back(cell((*c)[r] * vu.factor));
-        data.add(std::move(row));
+        std::vector<double> row{h.columns[static_cast<std::size_t>(it)][r]};
+        for (const auto* c : cols) row.push_back((*c)[r]);
+        data.add_row(row);
     }
     const std::string file = f.name + ".csv";
     f.data = {{file, data.str()}};
@@ -116,11 +117,12 @@ FigureSpec group_figure(const RunTable& h, int it, const UnitGroup& g, const std
     p << gp_frame(axis_label("time", tu), axis_label(text.axis, vu)) << gp_range("y", lo * vu.factor, hi * vu.factor);
     p << "plot ";
     for (std::size_t i = 0; i < g.columns.size(); ++i) {
-        p << (i ? ", " : "") << gp_quote(i ? "" : file) << " using 1:" << i + 2 << " with lines lw 2 dt " << (i % 4 + 1) << " title "
+        p << (i ? ", " : "") << gp_quote(i ? "" : file) << " using ($1*" << gp_number(tu.factor) << "):($" << i + 2 << "*"
+          << gp_number(vu.factor) << ") with lines lw 2 dt " << (i % 4 + 1) << " title "
           << gp_quote(series_title(h.header[static_cast<std::size_t>(g.columns[i])], supports)) << " noenhanced";
     }
     for (std::size_t k = 0; k < surfaces.size(); ++k) {
-        p << ", " << cell(surfaces[k].surface * vu.factor) << " with lines dt 3 lw 1.5 lc rgb '#555555' title "
+        p << ", " << gp_number(surfaces[k].surface * vu.factor) << " with lines dt 3 lw 1.5 lc rgb '#555555' title "
           << gp_quote("surface of support " + std::to_string(k)) << " noenhanced";
     }
     p << "\n";
@@ -135,9 +137,9 @@ FigureSpec phase_figure(const RunTable& h, int iy, int iv, const std::string& po
     const auto& v = h.columns[static_cast<std::size_t>(iv)];
     const DisplayUnit yu = display_unit("m", largest_magnitude({&y}));
     const DisplayUnit vu = display_unit("m/s", largest_magnitude({&v}));
-    CsvText data;
-    data.header = {point + " [" + yu.text + "]", point + " velocity [" + vu.text + "]"};
-    for (std::size_t r : rows_to_draw({&y, &v}, h.rows)) data.add({cell(y[r] * yu.factor), cell(v[r] * vu.factor)});
+    CsvTable data;
+    data.header = {h.header[static_cast<std::size_t>(iy)], h.header[static_cast<std::size_t>(iv)]};
+    for (std::size_t r : rows_to_draw({&y, &v}, h.rows)) data.add_row({y[r], v[r]});
     f.data = {{"transient_phase.csv", data.str()}};
     double ylo = 0.0, yhi = 0.0, vlo = 0.0, vhi = 0.0;
     finite_range({&y}, ylo, yhi);
@@ -146,10 +148,11 @@ FigureSpec phase_figure(const RunTable& h, int iy, int iv, const std::string& po
     p << gp_frame(axis_label(point + " displacement", yu), axis_label(point + " velocity", vu)) << gp_range("x", ylo * yu.factor, yhi * yu.factor)
       << gp_range("y", vlo * vu.factor, vhi * vu.factor) << "set key off\n";
     if (std::isfinite(y[0]) && std::isfinite(v[0])) {
-        p << "set label 1 '' at first " << cell(y[0] * yu.factor) << ", first " << cell(v[0] * vu.factor)
+        p << "set label 1 '' at first " << gp_number(y[0] * yu.factor) << ", first " << gp_number(v[0] * vu.factor)
           << " point pointtype 7 pointsize 2 lc rgb '#d62728' front\n";
     }
-    p << "plot 'transient_phase.csv' using 1:2 with lines lw 1.5 lc rgb '#1f77b4'\n";
+    p << "plot 'transient_phase.csv' using ($1*" << gp_number(yu.factor) << "):($2*" << gp_number(vu.factor)
+      << ") with lines lw 1.5 lc rgb '#1f77b4'\n";
     f.plot = p.str();
     return f;
 }

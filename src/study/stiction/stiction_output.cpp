@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "report/csv_text.hpp"
+#include "io/csv_writer.hpp"
 
 namespace vi {
 namespace {
@@ -73,14 +73,14 @@ std::string stiction_text(const StictionResult& r) {
 }
 
 OutputFiles stiction_files(const StictionResult& r) {
-    CsvText t;
-    t.header = {"support", "law", "restoring_force_N", "pull_off_force_N", "verdict", "critical_work_of_adhesion_J_m2",
+    CsvTable t;
+    t.header = {"support", "law", "restoring_force_n", "pull_off_force_n", "verdict", "critical_work_of_adhesion_j_m2",
                 "detached_length_m", "detached_length_fe_m"};
     for (const SupportStiction& s : r.supports) {
         const DetachedLength* d = detached_of(r, s.support);
-        t.add({std::to_string(s.support), s.law, cell(s.restoring_force), cell(s.pull_off_force), verdict(s),
-               cell(s.critical_work_of_adhesion), d ? cell(d->closed_form) : cell(std::optional<double>()),
-               d ? cell(d->finite_element) : cell(std::optional<double>())});
+        t.add_row({csv_count(s.support), csv_text(s.law), csv_number(s.restoring_force), csv_number(s.pull_off_force),
+                   csv_text(verdict(s)), csv_number(s.critical_work_of_adhesion), d ? csv_number(d->closed_form) : csv_missing(),
+                   d ? csv_number(d->finite_element) : csv_missing()});
     }
     return {{"stiction.json", stiction_json(r).dump(2) + "\n"}, {"stiction.csv", t.str()}};
 }

@@ -5,7 +5,7 @@
 #include <optional>
 #include <sstream>
 
-#include "report/csv_text.hpp"
+#include "io/csv_writer.hpp"
 #include "study/switch/switch_study.hpp"
 
 namespace vi {
@@ -16,12 +16,12 @@ constexpr const char* kGrid = "set grid lc rgb '#dddddd'\nset key top left\n";
 // The equilibria as CSV: stable and unstable points in separate columns so that gnuplot draws the
 // unstable branch dashed.
 std::string branch_csv(const PullinResult& r) {
-    CsvText t;
-    t.header = {"watched_travel_um", "mean_travel_um", "voltage_stable_V", "voltage_unstable_V", "capacitance_fF", "contact"};
+    CsvTable t;
+    t.header = {"watched_travel_um", "mean_travel_um", "voltage_stable_v", "voltage_unstable_v", "capacitance_ff", "contact"};
     for (const PullinPoint& p : r.branch) {
         const double nan = std::numeric_limits<double>::quiet_NaN();
-        t.add({cell(p.watched_travel * 1e6), cell(p.travel * 1e6), cell(p.stable ? p.voltage : nan),
-               cell(p.stable ? nan : p.voltage), cell(p.capacitance * 1e15), p.contact ? "1" : "0"});
+        t.add_row({csv_number(p.watched_travel * 1e6), csv_number(p.travel * 1e6), csv_number(p.stable ? p.voltage : nan),
+                   csv_number(p.stable ? nan : p.voltage), csv_number(p.capacitance * 1e15), csv_flag(p.contact)});
     }
     return t.str();
 }
@@ -49,7 +49,7 @@ FigureSpec pullin_figure(const SwitchStudy& s) {
     f.name = "switch_pullin";
     f.title = "Static pull-in: voltage against travel";
     f.caption = "Equilibria traced by displacement control (vibroimpact pullin): the voltage that holds the beam at each "
-                "travel of the watched point (x/l = " + cell(r.watched_x) +
+                "travel of the watched point (x/l = " + gp_number(r.watched_x) +
                 ") toward the electrode, stable (solid) and unstable (dashed). Pull-in is the fold of the open branch; "
                 "after touch-down the contact holds the beam; release is the lowest voltage of a stable closed state.";
     f.data = {{"switch_pullin.csv", branch_csv(r)}};
@@ -65,8 +65,8 @@ FigureSpec pullin_figure(const SwitchStudy& s) {
     ChartPanel c;
     c.x_label = "travel of the watched point toward the electrode [μm]";
     c.y_label = "voltage [V]";
-    c.series = {chart_series("stable", "watched_travel_um", "voltage_stable_V", "#1f77b4", false),
-                chart_series("unstable", "watched_travel_um", "voltage_unstable_V", "#ff7f0e", true)};
+    c.series = {chart_series("stable", "watched_travel_um", "voltage_stable_v", "#1f77b4", false),
+                chart_series("unstable", "watched_travel_um", "voltage_unstable_v", "#ff7f0e", true)};
     f.charts = {c};
     return f;
 }
@@ -84,30 +84,30 @@ FigureSpec cv_figure(const SwitchStudy& s) {
     ChartPanel c;
     c.x_label = "voltage [V]";
     c.y_label = "capacitance [fF]";
-    c.series = {chart_series("stable", "voltage_stable_V", "capacitance_fF", "#1f77b4", false),
-                chart_series("unstable", "voltage_unstable_V", "capacitance_fF", "#ff7f0e", true)};
+    c.series = {chart_series("stable", "voltage_stable_v", "capacitance_ff", "#1f77b4", false),
+                chart_series("unstable", "voltage_unstable_v", "capacitance_ff", "#ff7f0e", true)};
     f.charts = {c};
     return f;
 }
 
 FigureSpec fv_figure(const SwitchStudy& s) {
     const PullinResult& r = s.pullin;
-    CsvText t;
+    CsvTable t;
     std::size_t modes = 0;
     for (const PullinFrequencies& x : r.frequencies) modes = std::max(modes, x.frequency_hz.size());
-    t.header = {"voltage_V"};
+    t.header = {"voltage_v"};
     for (std::size_t k = 0; k < modes; ++k) {
-        std::string name = "f";
+        std::string name = "f";  // built step by step: GCC 12 warns (-Wrestrict) on "f" + ... + "_khz"
         name += std::to_string(k + 1);
-        name += "_kHz";
+        name += "_khz";
         t.header.push_back(name);
     }
     for (const PullinFrequencies& x : r.frequencies) {
-        std::vector<std::string> row{cell(x.voltage)};
+        std::vector<CsvCell> row{csv_number(x.voltage)};
         for (std::size_t k = 0; k < modes; ++k) {
-            row.push_back(k < x.frequency_hz.size() ? cell(x.frequency_hz[k] * 1e-3) : cell(std::optional<double>()));
+            row.push_back(k < x.frequency_hz.size() ? csv_number(x.frequency_hz[k] * 1e-3) : csv_missing());
         }
-        t.add(std::move(row));
+        t.add_row(row);
     }
     FigureSpec f;
     f.name = "switch_fv";
@@ -133,7 +133,7 @@ FigureSpec fv_figure(const SwitchStudy& s) {
     c.y_label = "frequency [kHz]";
     c.log_y = true;
     for (std::size_t k = 0; k < modes; ++k) {
-        ChartSeries m = chart_series("f_" + std::to_string(k + 1), "voltage_V", t.header[k + 1], "", false);
+        ChartSeries m = chart_series("f_" + std::to_string(k + 1), "voltage_v", t.header[k + 1], "", false);
         m.style = ChartSeries::Style::linespoints;
         c.series.push_back(m);
     }
@@ -144,12 +144,12 @@ FigureSpec fv_figure(const SwitchStudy& s) {
 FigureSpec transient_figure(const SwitchStudy& s) {
     const TimeHistory& h = s.transient.result.history;
     const Electrode& e = s.c.electrodes.front();
-    CsvText t;
-    t.header = {"t_us", "watched_um", "contact_force_uN", "voltage_V"};
+    CsvTable t;
+    t.header = {"t_us", "watched_um", "contact_force_un", "voltage_v"};
     for (std::size_t i = 0; i < h.t.size(); ++i) {
         double force = 0.0;
         for (const auto& f : h.contact_force) force += f[i];
-        t.add({cell(h.t[i] * 1e6), cell(h.tip_v[i] * 1e6), cell(force * 1e6), cell(e.voltage * e.time(h.t[i]))});
+        t.add_row({h.t[i] * 1e6, h.tip_v[i] * 1e6, force * 1e6, e.voltage * e.time(h.t[i])});
     }
     FigureSpec f;
     f.name = "switch_transient";
@@ -168,7 +168,7 @@ FigureSpec transient_figure(const SwitchStudy& s) {
           << ", graph 1 fillcolor rgb '#e8e8e8' fillstyle solid noborder behind\n";
     }
     p << "set ylabel 'displacement  [μm]'\nset y2label 'voltage  [V]'\nset y2tics\nset ytics nomirror\nset y2range [0:*]\n"
-         "set title '(a) watched point (x/l = " << cell(s.pullin.watched_x) << ") and voltage'\n"
+         "set title '(a) watched point (x/l = " << gp_number(s.pullin.watched_x) << ") and voltage'\n"
          "plot 'switch_transient.csv' using 1:2 with lines lw 1.5 lc rgb '#1f77b4' title 'displacement', "
          "'' using 1:4 axes x1y2 with lines lw 1 dt 2 lc rgb '#7f7f7f' title 'voltage'\n"
          "unset object\nunset y2label\nunset y2tics\nset ytics mirror\n"
@@ -176,12 +176,12 @@ FigureSpec transient_figure(const SwitchStudy& s) {
          "plot 'switch_transient.csv' using 1:3 with lines lw 1.5 lc rgb '#d62728' notitle\nunset multiplot\n";
     f.plot = p.str();
     ChartPanel a;
-    a.title = "(a) watched point (x/l = " + cell(s.pullin.watched_x) + ") and voltage; grey: in contact";
+    a.title = "(a) watched point (x/l = " + gp_number(s.pullin.watched_x) + ") and voltage; grey: in contact";
     a.x_label = "t [μs]";
     a.y_label = "displacement [μm]";
     a.y2_label = "voltage [V]";
     for (const ContactEpisode& c : s.transient.result.episodes) a.x_bands.emplace_back(c.t_on * 1e6, c.t_off * 1e6);
-    ChartSeries v = chart_series("voltage", "t_us", "voltage_V", "#7f7f7f", true);
+    ChartSeries v = chart_series("voltage", "t_us", "voltage_v", "#7f7f7f", true);
     v.right_axis = true;
     a.series = {chart_series("displacement", "t_us", "watched_um", "#1f77b4", false), v};
     ChartPanel b;
@@ -189,7 +189,7 @@ FigureSpec transient_figure(const SwitchStudy& s) {
     b.x_label = a.x_label;
     b.y_label = "force [μN]";
     b.x_bands = a.x_bands;
-    b.series = {chart_series("contact force", "t_us", "contact_force_uN", "#d62728", false)};
+    b.series = {chart_series("contact force", "t_us", "contact_force_un", "#d62728", false)};
     f.charts = {a, b};
     return f;
 }

@@ -9,7 +9,6 @@
 #include "model/input_error.hpp"
 #include "model/run_control.hpp"
 #include "plot/chart_json.hpp"
-#include "report/csv_text.hpp"
 #include "report/pullin_output.hpp"
 #include "report/transient_output.hpp"
 
