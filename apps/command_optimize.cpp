@@ -1,6 +1,7 @@
 // `vibroimpact optimize CASE --vary PATH=LOW:HIGH ... --minimize QUANTITY [--constraint ...]`:
 // the best design in a box of case values (docs/optimization.md).
 
+#include <chrono>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -75,6 +76,16 @@ nlohmann::json result_json(const DesignProblem& p, const OptimizeResult& r, cons
     return j;
 }
 
+// How the work went: the only part of optimize.json that depends on the threads.
+nlohmann::json run_json(const OptimizeResult& r, double wall_s) {
+    return {{"threads", r.threads},
+            {"designs_computed", r.computed},
+            {"rounds", r.batches},
+            {"computed_ahead_unused", r.unused_guesses},
+            {"look_ahead_stopped_after_rounds", r.look_ahead_stopped_after},
+            {"wall_s", wall_s}};
+}
+
 FigureSpec convergence_figure(const DesignProblem& p, const OptimizeResult& r) {
     std::string data = "index,value,best\n";
     for (const DesignEvaluation& e : r.evaluations) {
@@ -99,7 +110,7 @@ CommandBody add_optimize_command(CLI::App& app) {
         std::string case_path;
         std::vector<std::string> vary, constraints;
         std::string minimize, maximize;
-        int max_evals = 100, global_evals = 0;
+        int max_evals = 100, global_evals = 0, threads = 0;
         double point_timeout = 60.0;
         std::string out = "out/optimize";
         std::string gnuplot = "gnuplot";
@@ -119,6 +130,9 @@ CommandBody add_optimize_command(CLI::App& app) {
         ->check(CLI::Range(0, 100000))->capture_default_str();
     sub->add_option("--point-timeout", opt->point_timeout, "Wall-clock limit of one design [s] (0: none)")
         ->check(CLI::Range(0.0, 1e9))->capture_default_str();
+    sub->add_option("--threads,-j", opt->threads,
+                    "Worker threads (0: every CPU this process may use, as sweep); the result does not depend on it")
+        ->check(CLI::Range(0, 4096))->capture_default_str();
     sub->add_option("--out,-o", opt->out, "Folder for optimize.json, evaluations.csv and the convergence figure")
         ->capture_default_str();
     sub->add_option("--gnuplot", opt->gnuplot, "gnuplot executable (name on PATH or path)")->capture_default_str();
@@ -139,14 +153,18 @@ CommandBody add_optimize_command(CLI::App& app) {
         OptimizeOptions o;
         o.max_evaluations = opt->max_evals;
         o.global_evaluations = opt->global_evals;
+        o.threads = opt->threads;
 
+        const auto t0 = std::chrono::steady_clock::now();
         const OptimizeResult r = optimize_design(p, o);
+        const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         std::string command = "vibroimpact optimize " + opt->case_path;
         for (const std::string& v : opt->vary) command += " --vary '" + v + "'";
         command += p.maximize ? " --maximize " + opt->maximize : " --minimize " + opt->minimize;
         for (const std::string& c : opt->constraints) command += " --constraint '" + c + "'";
         command += " --max-evals " + std::to_string(opt->max_evals);
-        const nlohmann::json j = result_json(p, r, command);
+        nlohmann::json j = result_json(p, r, command);
+        j["run"] = run_json(r, wall_s);
         OutputFiles files;
         files["optimize.json"] = j.dump(2) + "\n";
         files["evaluations.csv"] = evaluations_csv(p, r);
@@ -157,6 +175,8 @@ CommandBody add_optimize_command(CLI::App& app) {
         } else {
             std::printf("%s %s: %zu designs (global stage: %s; local stage: %s)\n", p.maximize ? "Maximise" : "Minimise",
                         p.columns[p.objective].name.c_str(), r.evaluations.size(), r.global_end.c_str(), r.local_end.c_str());
+            std::printf("Computed %zu designs in %zu rounds on %d threads (%zu computed ahead and not used), %.3g s\n",
+                        r.computed, r.batches, r.threads, r.unused_guesses, wall_s);
             if (r.best) {
                 const DesignEvaluation& b = r.evaluations[*r.best];
                 std::printf("Best design (evaluation %zu): %s = %s\n", b.index, p.columns[p.objective].name.c_str(),
