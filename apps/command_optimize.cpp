@@ -87,6 +87,7 @@ nlohmann::json run_json(const OptimizeResult& r, double wall_s) {
             {"rounds", r.batches},
             {"computed_ahead_unused", r.unused_guesses},
             {"look_ahead_stopped_after_rounds", r.look_ahead_stopped_after},
+            {"look_ahead_s", r.look_ahead_s},
             {"wall_s", wall_s}};
 }
 

@@ -328,6 +328,7 @@ public:
         return d;
     }
     std::size_t gave_up_after = 0;  // batches before the look-ahead stopped; 0 while it runs
+    [[nodiscard]] double replay_s() const { return replay_s_; }
 
 private:
     const DesignProblem& p_;
@@ -351,6 +352,7 @@ OptimizeResult optimize_design(const DesignProblem& p, const OptimizeOptions& o,
     r.computed = store.computed();
     r.batches = store.batches();
     r.look_ahead_stopped_after = oracle.gave_up_after;
+    r.look_ahead_s = oracle.replay_s();
     for (const DesignEvaluation& e : r.evaluations) r.reused += store.is_known(e.x) ? 1 : 0;
     r.unused_guesses = store.computed() - (r.evaluations.size() - r.reused);
     return r;

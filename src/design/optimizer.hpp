@@ -48,6 +48,7 @@ struct OptimizeResult {
     std::size_t unused_guesses = 0; // designs computed ahead that the search never asked for
     std::size_t batches = 0;        // rounds of designs computed together (the wall time's unit)
     std::size_t look_ahead_stopped_after = 0;  // batches after which the look-ahead cost too much; 0: never
+    double look_ahead_s = 0.0;      // wall time of the look-ahead's replays [s]
 };
 
 // Runs both stages. `progress`, if given, sees every evaluation as the search uses it. A design that
