@@ -345,7 +345,12 @@ OptimizeResult optimize_design(const DesignProblem& p, const OptimizeOptions& o,
     if (p.variables.empty()) throw std::invalid_argument("optimize_design: no variables");
     if (o.max_evaluations < 2) throw std::invalid_argument("optimize_design: max_evaluations below 2");
     DesignStore store(p, o.threads, o.computed);
-    for (const ComputedDesign& d : o.known) store.add_known(d);
+    for (const ComputedDesign& d : o.known) {
+        if (d.x.size() != p.variables.size() || d.outcome.constraints.size() != p.constraints.size()) {
+            throw std::invalid_argument("optimize_design: a known design of another problem (its variables or constraints)");
+        }
+        store.add_known(d);
+    }
     Computing oracle(p, o, store);
     OptimizeResult r = run_stages(p, o, oracle, progress);
     r.threads = store.threads();
