@@ -5,7 +5,6 @@
 #include <mutex>
 #include <optional>
 
-#include "model/parallel_for.hpp"
 #include "model/run_control.hpp"
 
 namespace vi {
@@ -17,7 +16,7 @@ std::vector<std::uint64_t> design_key(const std::vector<double>& x) {
 }
 
 DesignStore::DesignStore(const DesignProblem& p, int threads, std::function<void(const ComputedDesign&)> computed)
-    : p_(p), threads_(resolve_thread_count(threads)), computed_sink_(std::move(computed)) {}
+    : p_(p), pool_(threads), computed_sink_(std::move(computed)) {}
 
 void DesignStore::add_known(const ComputedDesign& d) {
     if (outcomes_.emplace(design_key(d.x), Entry{d.outcome, true}).second) ++known_;
@@ -42,8 +41,8 @@ void DesignStore::compute(const std::vector<std::vector<double>>& batch) {
     ++batches_;
     std::mutex mutex;
     std::atomic<bool> abandoned{false};
-    parallel_for(
-        todo.size(), threads_,
+    pool_.run(
+        todo.size(),
         [&](std::size_t k) {
             std::optional<DesignOutcome> o;
             try {

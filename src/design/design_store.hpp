@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "design/design_problem.hpp"
+#include "model/worker_pool.hpp"
 
 namespace vi {
 
@@ -36,13 +37,13 @@ public:
     // True when x came from add_known.
     [[nodiscard]] bool is_known(const std::vector<double>& x) const;
 
-    // Computes the designs of `batch` not yet known, on the store's threads. A stop (StopRequested
-    // inside a design, or the stop flag) lets no further design start, abandons the running ones
-    // (never stored) and is thrown once the threads have joined; the designs that finished before
-    // are stored and passed to `computed`.
+    // Computes the designs of `batch` not yet known, on the store's threads (the caller's among
+    // them). A stop (StopRequested inside a design, or the stop flag) lets no further design start,
+    // abandons the running ones (never stored) and is thrown once every thread is done with the
+    // batch; the designs that finished before are stored and passed to `computed`.
     void compute(const std::vector<std::vector<double>>& batch);
 
-    [[nodiscard]] int threads() const { return threads_; }
+    [[nodiscard]] int threads() const { return pool_.threads(); }
     [[nodiscard]] std::size_t size() const { return outcomes_.size(); }
     [[nodiscard]] std::size_t known() const { return known_; }          // added with add_known
     [[nodiscard]] std::size_t computed() const { return computed_; }    // computed by compute()
@@ -50,7 +51,7 @@ public:
 
 private:
     const DesignProblem& p_;
-    int threads_;
+    WorkerPool pool_;  // lives as long as the store: a thread's memo of the last modes lasts
     std::function<void(const ComputedDesign&)> computed_sink_;
     struct Entry {
         DesignOutcome outcome;
