@@ -1,6 +1,8 @@
 // `vibroimpact optimize CASE --vary PATH=LOW:HIGH ... --minimize QUANTITY [--constraint ...]`:
 // the best design in a box of case values (docs/optimization.md).
 
+#include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -10,10 +12,12 @@
 
 #include "commands.hpp"
 #include "figure_output.hpp"
+#include "design/design_journal.hpp"
 #include "design/optimizer.hpp"
 #include "io/case_reader.hpp"
 #include "io/csv_writer.hpp"
 #include "io/number_text.hpp"
+#include "io/text_file.hpp"
 #include "io/output_files.hpp"
 #include "model/input_error.hpp"
 #include "model/run_control.hpp"
@@ -72,6 +76,18 @@ nlohmann::json result_json(const DesignProblem& p, const OptimizeResult& r, cons
     return j;
 }
 
+// How the work went: the only part of optimize.json that depends on the threads.
+nlohmann::json run_json(const OptimizeResult& r, double wall_s) {
+    return {{"threads", r.threads},
+            {"from_journal", r.reused},
+            {"designs_computed", r.computed},
+            {"rounds", r.batches},
+            {"computed_ahead_unused", r.unused_guesses},
+            {"look_ahead_stopped_after_rounds", r.look_ahead_stopped_after},
+            {"look_ahead_s", r.look_ahead_s},
+            {"wall_s", wall_s}};
+}
+
 FigureSpec convergence_figure(const DesignProblem& p, const OptimizeResult& r) {
     const std::string q = p.columns[p.objective].name;
     CsvTable t;
@@ -91,19 +107,115 @@ FigureSpec convergence_figure(const DesignProblem& p, const OptimizeResult& r) {
     return f;
 }
 
+struct Options {
+    std::string case_path;
+    std::vector<std::string> vary, constraints;
+    std::string minimize, maximize;
+    int max_evals = 100, global_evals = 0, threads = 0;
+    double point_timeout = 60.0;
+    std::string out = "out/optimize";
+    std::string gnuplot = "gnuplot";
+    bool json = false;
+    bool resume = false;
+};
+
+std::string command_text(const Options& o, const DesignProblem& p) {
+    std::string command = "vibroimpact optimize " + o.case_path;
+    for (const std::string& v : o.vary) command += " --vary '" + v + "'";
+    command += p.maximize ? " --maximize " + o.maximize : " --minimize " + o.minimize;
+    for (const std::string& c : o.constraints) command += " --constraint '" + c + "'";
+    command += " --max-evals " + std::to_string(o.max_evals);
+    if (o.global_evals > 0) command += " --global-evals " + std::to_string(o.global_evals);
+    return command;
+}
+
+void print_result(const Options& o, const DesignProblem& p, const OptimizeResult& r, double wall_s) {
+    std::printf("%s %s: %zu designs (global stage: %s; local stage: %s)\n", p.maximize ? "Maximise" : "Minimise",
+                p.columns[p.objective].name.c_str(), r.evaluations.size(), r.global_end.c_str(), r.local_end.c_str());
+    std::printf("Computed %zu designs in %zu rounds on %d threads (%zu computed ahead and not used), %.3g s",
+                r.computed, r.batches, r.threads, r.unused_guesses, wall_s);
+    if (r.reused > 0) std::printf("; %zu designs from the journal of a stopped run", r.reused);
+    std::printf("\n");
+    if (r.best) {
+        const DesignEvaluation& b = r.evaluations[*r.best];
+        std::printf("Best design (evaluation %zu): %s = %s\n", b.index, p.columns[p.objective].name.c_str(),
+                    round_trip_text(*b.outcome.objective).c_str());
+        for (std::size_t i = 0; i < b.x.size(); ++i) {
+            std::printf("  %s = %s\n", p.variables[i].path.text().c_str(), round_trip_text(b.x[i]).c_str());
+        }
+        for (std::size_t k = 0; k < p.constraints.size(); ++k) {
+            std::printf("  constraint %s: %s\n", p.constraints[k].text.c_str(),
+                        round_trip_text(*b.outcome.constraints[k]).c_str());
+        }
+    }
+    std::printf("Written to %s/\n", o.out.c_str());
+}
+
+DesignProblem read_problem(const Options& o, const std::string& case_text) {
+    DesignProblem p;
+    p.base = read_case_text(case_text, o.case_path);
+    p.columns = sweep_result_columns(SweepAnalysis::simulate, 0);
+    p.settings.point_timeout = o.point_timeout;
+    for (const std::string& v : o.vary) p.variables.push_back(parse_design_variable(v, p.base));
+    p.maximize = !o.maximize.empty();
+    p.objective = quantity_column(p.maximize ? o.maximize : o.minimize, p.columns, p.maximize ? "--maximize" : "--minimize");
+    for (const std::string& c : o.constraints) p.constraints.push_back(parse_design_constraint(c, p.columns));
+    return p;
+}
+
+// The search with its journal, then the files all together; a stop keeps the journal and says how
+// to go on.
+int run_optimize(const Options& opt) {
+    if (opt.minimize.empty() == opt.maximize.empty()) throw InputError("optimize: give one of --minimize or --maximize");
+    const std::string gnuplot = require_gnuplot(opt.gnuplot, "the convergence figure");
+    std::string reason;
+    const auto case_text = file_text(opt.case_path, reason);
+    if (!case_text) throw InputError(one_line(opt.case_path + ": cannot read file (" + reason + ")"));
+    const DesignProblem p = read_problem(opt, *case_text);
+    OptimizeOptions o;
+    o.max_evaluations = opt.max_evals;
+    o.global_evaluations = opt.global_evals;
+    o.threads = opt.threads;
+    DesignJournal journal(opt.out, opt.resume, design_identity_text(*case_text, p), p);
+    o.known = journal.designs();
+    o.computed = [&journal](const ComputedDesign& d) { journal.append(d); };
+
+    OptimizeResult r;
+    nlohmann::json j;
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+        r = optimize_design(p, o);
+        const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        j = result_json(p, r, command_text(opt, p));
+        j["run"] = run_json(r, wall_s);
+        OutputFiles files;
+        files["optimize.json"] = j.dump(2) + "\n";
+        files["evaluations.csv"] = evaluations_csv(p, r);
+        write_with_figures(opt.out, std::move(files), {convergence_figure(p, r)}, gnuplot);
+        journal.remove();
+        if (opt.json) {
+            std::printf("%s\n", j.dump(2).c_str());
+        } else {
+            print_result(opt, p, r, wall_s);
+        }
+    } catch (const StopRequested& s) {
+        std::fprintf(stderr,
+                     "vibroimpact: optimize interrupted: %zu designs computed, kept in %s; run the same command with "
+                     "--resume to go on\n",
+                     journal.size(), journal.path().c_str());
+        return kExitStoppedBase + (s.signal() > 0 ? s.signal() : SIGINT);
+    }
+    if (!r.best) {
+        std::fprintf(stderr, "vibroimpact: optimize: no design met the constraints and ran to the end in %zu evaluations "
+                             "(evaluations.csv says why each failed)\n", r.evaluations.size());
+        return kExitFailure;
+    }
+    return kExitOk;
+}
+
 }  // namespace
 
 CommandBody add_optimize_command(CLI::App& app) {
-    struct Options {
-        std::string case_path;
-        std::vector<std::string> vary, constraints;
-        std::string minimize, maximize;
-        int max_evals = 100, global_evals = 0;
-        double point_timeout = 60.0;
-        std::string out = "out/optimize";
-        std::string gnuplot = "gnuplot";
-        bool json = false;
-    };
     auto opt = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand("optimize", "The design that minimises (or maximises) a reported quantity in a box of case values");
     sub->add_option("case", opt->case_path, "Case file (TOML)")->required();
@@ -118,65 +230,18 @@ CommandBody add_optimize_command(CLI::App& app) {
         ->check(CLI::Range(0, 100000))->capture_default_str();
     sub->add_option("--point-timeout", opt->point_timeout, "Wall-clock limit of one design [s] (0: none)")
         ->check(CLI::Range(0.0, 1e9))->capture_default_str();
+    sub->add_option("--threads,-j", opt->threads,
+                    "Worker threads (0: every CPU this process may use, as sweep); the result does not depend on it")
+        ->check(CLI::Range(0, 4096))->capture_default_str();
     sub->add_option("--out,-o", opt->out, "Folder for optimize.json, evaluations.csv and the convergence figure")
         ->capture_default_str();
+    sub->add_flag("--resume", opt->resume,
+                  "Go on with the optimisation stopped in --out (its journal): the designs computed are not computed "
+                  "again, and the result is the one of an uninterrupted run");
     sub->add_option("--gnuplot", opt->gnuplot, "gnuplot executable (name on PATH or path)")->capture_default_str();
     sub->add_flag("--json", opt->json, "Print optimize.json on stdout instead of text");
 
-    return [opt]() {
-        if (opt->minimize.empty() == opt->maximize.empty()) throw InputError("optimize: give one of --minimize or --maximize");
-        const std::string gnuplot = require_gnuplot(opt->gnuplot, "the convergence figure");
-        DesignProblem p;
-        p.base = read_case_file(opt->case_path);
-        p.columns = sweep_result_columns(SweepAnalysis::simulate, 0);
-        p.settings.point_timeout = opt->point_timeout;
-        for (const std::string& v : opt->vary) p.variables.push_back(parse_design_variable(v, p.base));
-        p.maximize = !opt->maximize.empty();
-        p.objective = quantity_column(p.maximize ? opt->maximize : opt->minimize, p.columns,
-                                      p.maximize ? "--maximize" : "--minimize");
-        for (const std::string& c : opt->constraints) p.constraints.push_back(parse_design_constraint(c, p.columns));
-        OptimizeOptions o;
-        o.max_evaluations = opt->max_evals;
-        o.global_evaluations = opt->global_evals;
-
-        const OptimizeResult r = optimize_design(p, o);
-        std::string command = "vibroimpact optimize " + opt->case_path;
-        for (const std::string& v : opt->vary) command += " --vary '" + v + "'";
-        command += p.maximize ? " --maximize " + opt->maximize : " --minimize " + opt->minimize;
-        for (const std::string& c : opt->constraints) command += " --constraint '" + c + "'";
-        command += " --max-evals " + std::to_string(opt->max_evals);
-        const nlohmann::json j = result_json(p, r, command);
-        OutputFiles files;
-        files["optimize.json"] = j.dump(2) + "\n";
-        files["evaluations.csv"] = evaluations_csv(p, r);
-        const std::vector<FigureSpec> figures = {convergence_figure(p, r)};
-        write_with_figures(opt->out, std::move(files), figures, gnuplot);
-        if (opt->json) {
-            std::printf("%s\n", j.dump(2).c_str());
-        } else {
-            std::printf("%s %s: %zu designs (global stage: %s; local stage: %s)\n", p.maximize ? "Maximise" : "Minimise",
-                        p.columns[p.objective].name.c_str(), r.evaluations.size(), r.global_end.c_str(), r.local_end.c_str());
-            if (r.best) {
-                const DesignEvaluation& b = r.evaluations[*r.best];
-                std::printf("Best design (evaluation %zu): %s = %s\n", b.index, p.columns[p.objective].name.c_str(),
-                            round_trip_text(*b.outcome.objective).c_str());
-                for (std::size_t i = 0; i < b.x.size(); ++i) {
-                    std::printf("  %s = %s\n", p.variables[i].path.text().c_str(), round_trip_text(b.x[i]).c_str());
-                }
-                for (std::size_t k = 0; k < p.constraints.size(); ++k) {
-                    std::printf("  constraint %s: %s\n", p.constraints[k].text.c_str(),
-                                round_trip_text(*b.outcome.constraints[k]).c_str());
-                }
-            }
-            std::printf("Written to %s/\n", opt->out.c_str());
-        }
-        if (!r.best) {
-            std::fprintf(stderr, "vibroimpact: optimize: no design met the constraints and ran to the end in %zu evaluations "
-                                 "(evaluations.csv says why each failed)\n", r.evaluations.size());
-            return kExitFailure;
-        }
-        return kExitOk;
-    };
+    return [opt]() { return run_optimize(*opt); };
 }
 
 }  // namespace vi::cli

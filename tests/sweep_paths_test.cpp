@@ -11,12 +11,15 @@
 #include "io/case_reader.hpp"
 #include "model/input_error.hpp"
 #include "model/case_checks.hpp"
+#include "sweep/grid.hpp"
+#include "sweep/runner.hpp"
 
 namespace vi {
 namespace {
 
 // The base case with two supports, ratio damping, a harmonic and a step load, a displacement step
-// with a modal velocity: every path has something to address.
+// with a modal velocity, electrodes with a sine, a step, a pulse and a two-step drive: every path
+// has something to address.
 Case full_case() {
     const std::string text = test::kBaseCase +
                              "[damping]\nratios = [0.01, 0.02]\nmodes = [1, 3]\n"
@@ -30,6 +33,8 @@ Case full_case() {
                              "[[loads]]\nposition = 0.6\namplitude = \"2 uN\"\nkind = \"step\"\nt_on = \"1 us\"\n"
                              "[[electrodes]]\nfrom = 0.1\nto = 0.5\ngap = \"2 um\"\nvoltage = \"5 V\"\nwaveform = \"sine\"\nfrequency = \"1 kHz\"\n"
                              "[[electrodes]]\nfrom = 0.2\nto = 0.9\ngap = \"2 um\"\ndielectric_thickness = \"0.1 um\"\nvoltage = \"5 V\"\nwaveform = \"step\"\nt_on = \"1 us\"\n"
+                             "[[electrodes]]\nfrom = 0.6\nto = 0.7\ngap = \"3 um\"\nvoltage = \"5 V\"\nwaveform = \"pulse\"\nrise = \"1 us\"\nhold = \"2 us\"\nfall = \"1 us\"\n"
+                             "[[electrodes]]\nfrom = 0.7\nto = 0.8\ngap = \"3 um\"\nvoltage = \"5 V\"\nwaveform = \"two_step\"\nrise = \"10 ns\"\nlevel = 0.8\nhold = \"2 us\"\n"
                              "[air]\npressure = \"100 Pa\"\n"
                              "[solver]\nhorizon = \"50 us\"\n";
     return read_case_text(text, "full.toml");
@@ -76,7 +81,12 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
                                                 text.find("offset") != std::string::npos)) {
             text[6] = '0';  // the harmonic load is loads[0]
         }
-        if (text == "electrodes[1].frequency") text[11] = '0';  // the sine electrode is electrodes[0]
+        // The sine electrode is electrodes[0], the pulse electrodes[2], the two-step drive electrodes[3].
+        for (const char* key : {".frequency", ".phase", ".bias"}) {
+            if (text == std::string("electrodes[1]") + key) text[11] = '0';
+        }
+        if (text == "electrodes[1].rise" || text == "electrodes[1].hold" || text == "electrodes[1].fall") text[11] = '2';
+        if (text == "electrodes[1].level") text[11] = '3';
         SCOPED_TRACE(text);
         const CasePath p = resolve_case_path(text, base);
         EXPECT_EQ(p.text(), text);
@@ -87,7 +97,9 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
         EXPECT_FALSE(case_path_unit(p).empty());
         ++checked;
     }
-    EXPECT_EQ(checked, 55);  // 47, the adhesion keys (3), the air keys (4) and solver.settle_velocity
+    // 47, the adhesion keys (3), the air keys (4), solver.settle_velocity and the waveform's shape
+    // keys beyond t_on and frequency (rise, hold, fall, level, phase, bias).
+    EXPECT_EQ(checked, 61);
 }
 
 TEST(SweepCasePaths, ValuesLandWhereTheCaseFileWouldPutThem) {
@@ -172,6 +184,10 @@ TEST(SweepCasePaths, BadPathsSayWhatIsWrong) {
         {"initial.velocity", &alpha, "initial.velocity: only with an initial velocity"},
         {"loads[1].frequency", &full, "loads[1].frequency: only for a load of kind \"harmonic\""},
         {"loads[0].t_on", &full, "loads[0].t_on: only for a load of kind \"step\""},
+        {"electrodes[1].rise", &full, "electrodes[1].rise: only for waveform = \"ramp\", \"pulse\" or \"two_step\""},
+        {"electrodes[2].level", &full, "electrodes[2].level: only for waveform = \"two_step\""},
+        {"electrodes[0].t_on", &full, "electrodes[0].t_on: only for waveform = \"step\", \"ramp\", \"pulse\" or"},
+        {"electrodes[3].bias", &full, "electrodes[3].bias: only for waveform = \"sine\""},
         {"supports[x].position", &full, "supports: expected an index in brackets"},
         {"Beam.length", &full, "is not a path like"},
         {"beam.length ", &full, "is not a path like"},
@@ -181,6 +197,105 @@ TEST(SweepCasePaths, BadPathsSayWhatIsWrong) {
         const std::string err = error_of(k.path, *k.on);
         EXPECT_NE(err.find(k.reason), std::string::npos) << k.path << " -> " << err;
         EXPECT_EQ(err.find('\n'), std::string::npos) << k.path;
+    }
+}
+
+// A shape key set by a sweep builds the waveform again, exactly as a case file with that value
+// would: the two-step drive, the pulse's start, the sine's bias (volts, kept when the voltage
+// changes), and a ramp's voltage (a ramp is a table inside, but not a table waveform).
+TEST(SweepCasePaths, WaveformShapeKeysBuildTheWaveformAsACaseFileWould) {
+    const Case base = full_case();
+    Case c = base;
+    set_case_value(c, resolve_case_path("electrodes[3].rise", c), 20e-9);
+    set_case_value(c, resolve_case_path("electrodes[3].level", c), 0.5);
+    set_case_value(c, resolve_case_path("electrodes[3].hold", c), 3e-6);
+    set_case_value(c, resolve_case_path("electrodes[2].t_on", c), 4e-6);
+    set_case_value(c, resolve_case_path("electrodes[0].bias", c), 2.0);
+    set_case_value(c, resolve_case_path("electrodes[0].phase", c), 0.5);
+    set_case_value(c, resolve_case_path("electrodes[0].voltage", c), 4.0);
+    EXPECT_TRUE(check_case(c).empty());
+    std::string text = test::kBaseCase +
+                       "[damping]\nratios = [0.01, 0.02]\nmodes = [1, 3]\n"
+                       "[[supports]]\nposition = 1.0\ngap = \"1 um\"\nstiffness = \"100 N/m\"\n"
+                       "[[electrodes]]\nfrom = 0.1\nto = 0.5\ngap = \"2 um\"\nvoltage = \"4 V\"\nwaveform = \"sine\"\n"
+                       "frequency = \"1 kHz\"\nphase = 0.5\nbias = \"2 V\"\n"
+                       "[[electrodes]]\nfrom = 0.2\nto = 0.9\ngap = \"2 um\"\nvoltage = \"5 V\"\nwaveform = \"step\"\n"
+                       "[[electrodes]]\nfrom = 0.6\nto = 0.7\ngap = \"3 um\"\nvoltage = \"5 V\"\nwaveform = \"pulse\"\n"
+                       "t_on = \"4 us\"\nrise = \"1 us\"\nhold = \"2 us\"\nfall = \"1 us\"\n"
+                       "[[electrodes]]\nfrom = 0.7\nto = 0.8\ngap = \"3 um\"\nvoltage = \"5 V\"\nwaveform = \"two_step\"\n"
+                       "rise = \"20 ns\"\nlevel = 0.5\nhold = \"3 us\"\n";
+    const Case file = read_case_text(text, "file.toml");
+    for (std::size_t i : {0u, 2u, 3u}) {
+        SCOPED_TRACE(i);
+        const TimeFunction& a = c.electrodes[i].time;
+        const TimeFunction& b = file.electrodes[i].time;
+        EXPECT_EQ(a.kind, b.kind);
+        EXPECT_EQ(a.times, b.times);
+        EXPECT_EQ(a.values, b.values);
+        EXPECT_EQ(a.frequency_hz, b.frequency_hz);
+        EXPECT_EQ(a.phase, b.phase);
+        EXPECT_EQ(a.offset, b.offset);
+    }
+    const TimeFunction& two = c.electrodes[3].time;
+    EXPECT_EQ(two.values, (std::vector<double>{0.0, 0.5, 0.5, 1.0}));
+    EXPECT_DOUBLE_EQ(two(1e-6), 0.5);
+    EXPECT_DOUBLE_EQ(two(4e-6), 1.0);
+    EXPECT_EQ(c.electrodes[0].time.offset, 0.5);  // 2 V of bias over 4 V of amplitude
+    set_case_value(c, resolve_case_path("electrodes[0].voltage", c), 8.0);
+    EXPECT_EQ(c.electrodes[0].time.offset, 0.25) << "the bias stays 2 V when the amplitude changes";
+
+    Case ramp = read_case_text(test::kBaseCase + "[[electrodes]]\nfrom = 0.1\nto = 0.9\ngap = \"2 um\"\n"
+                                                 "voltage = \"5 V\"\nwaveform = \"ramp\"\nrise = \"1 us\"\n",
+                               "ramp.toml");
+    set_case_value(ramp, resolve_case_path("electrodes[0].voltage", ramp), 7.0);
+    set_case_value(ramp, resolve_case_path("electrodes[0].rise", ramp), 2e-6);
+    EXPECT_EQ(ramp.electrodes[0].voltage, 7.0);
+    EXPECT_EQ(ramp.electrodes[0].time.times, (std::vector<double>{0.0, 2e-6}));
+}
+
+// Set values are checked as a case file's: a negative rise, a hold of zero, a negative level, a
+// bias with no amplitude are refused with the case file's own message, and a sweep point with
+// one fails with it instead of running.
+TEST(SweepCasePaths, WaveformShapeKeysAreCheckedAsInACaseFile) {
+    const Case base = full_case();
+    const struct {
+        const char* path;
+        double value;
+        const char* problem;
+    } bad[] = {
+        {"electrodes[3].rise", -1e-9, "electrodes[3].rise: must be positive"},
+        {"electrodes[2].hold", 0.0, "electrodes[2].hold: must be positive"},
+        {"electrodes[2].fall", -1e-6, "electrodes[2].fall: must be positive"},
+        {"electrodes[1].t_on", -1e-6, "electrodes[1].t_on: must not be negative"},
+        {"electrodes[3].level", -0.5, "electrodes[3].level: must not be negative"},
+        {"electrodes[0].frequency", 0.0, "electrodes[0].frequency: must be positive"},
+    };
+    for (const auto& b : bad) {
+        SCOPED_TRACE(b.path);
+        Case c = base;
+        set_case_value(c, resolve_case_path(b.path, c), b.value);
+        const std::vector<CaseProblem> problems = check_case(c);
+        ASSERT_EQ(problems.size(), 1u);
+        EXPECT_EQ(problems[0].key + ": " + problems[0].message, b.problem);
+        const SweepGrid grid({SweepAxis{b.path, resolve_case_path(b.path, base), {b.value}}});
+        const SweepPointResult r = run_sweep_point(base, grid, 0, SweepSettings{});
+        EXPECT_EQ(r.status, std::string("error: ") + b.problem);
+    }
+    Case c = base;
+    set_case_value(c, resolve_case_path("electrodes[0].bias", c), 1.0);
+    set_case_value(c, resolve_case_path("electrodes[0].voltage", c), 0.0);
+    const std::vector<CaseProblem> problems = check_case(c);
+    ASSERT_EQ(problems.size(), 1u);
+    EXPECT_EQ(problems[0].key, "electrodes[0].voltage");
+    // The same values in a case file: the same message, at the key's line.
+    const std::string two_step = test::kBaseCase + "[[electrodes]]\nfrom = 0.1\nto = 0.9\ngap = \"2 um\"\n"
+                                                   "voltage = \"5 V\"\nwaveform = \"two_step\"\nlevel = 0.5\n"
+                                                   "hold = \"1 us\"\nrise = \"-1 ns\"\n";
+    try {
+        read_case_text(two_step, "bad.toml");
+        ADD_FAILURE() << "a negative rise was read";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find(": electrodes[0].rise: must be positive"), std::string::npos) << e.what();
     }
 }
 

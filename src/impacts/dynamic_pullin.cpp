@@ -26,6 +26,7 @@ Case stepped(const Case& c, double voltage, double horizon, PullinCriterion crit
     Case k = c;
     for (Electrode& e : k.electrodes) {
         e.voltage = voltage;
+        e.waveform = Waveform{};  // g(t) given here, not built from the case file's shape
         e.time = TimeFunction{};
         e.time.kind = TimeFunction::Kind::step;
         e.time.t_on = 0.0;

@@ -7,34 +7,12 @@ namespace vi {
 using tomlio::FieldReader;
 using tomlio::only_with;
 
-namespace {
-
-// Ramps and pulses are piecewise linear, so they become tables: every solver already integrates
-// those exactly between knots and stops at each knot.
-TimeFunction ramp(double t_on, double rise) {
-    TimeFunction g;
-    g.kind = TimeFunction::Kind::table;
-    g.times = {t_on, t_on + rise};
-    g.values = {0.0, 1.0};
-    return g;
-}
-
-TimeFunction pulse(double t_on, double rise, double hold, double fall) {
-    TimeFunction g;
-    g.kind = TimeFunction::Kind::table;
-    g.times = {t_on, t_on + rise, t_on + rise + hold, t_on + rise + hold + fall};
-    g.values = {0.0, 1.0, 1.0, 0.0};
-    return g;
-}
-
-}  // namespace
-
 Electrode read_electrode(const toml::table& t, const std::string& path, tomlio::Position at, tomlio::ReadLog& log,
                          std::vector<CaseProblem>& value_problems, std::optional<std::string>& table_file) {
     FieldReader f(t, path, at, log,
                   {"from", "to", "side", "gap", "dielectric_thickness", "dielectric_permittivity", "dielectric_modulus",
-                   "width", "fringing", "voltage", "waveform", "t_on", "rise", "hold", "fall", "frequency", "phase", "bias",
-                   "table"});
+                   "width", "fringing", "voltage", "waveform", "t_on", "rise", "hold", "fall", "level", "frequency", "phase",
+                   "bias", "table"});
     Electrode e;
     if (auto v = f.quantity("from", Dimension::dimensionless, true)) e.from = *v;
     if (auto v = f.quantity("to", Dimension::dimensionless, true)) e.to = *v;
@@ -56,63 +34,39 @@ Electrode read_electrode(const toml::table& t, const std::string& path, tomlio::
     if (auto v = f.choice("fringing", {"none", "meijs-fokkema"}, false)) {
         e.fringing = *v == "none" ? Fringing::none : Fringing::meijs_fokkema;
     }
-    const auto kind = f.choice("waveform", {"constant", "step", "ramp", "pulse", "sine", "table"}, false);
+    const auto kind = f.choice("waveform", {"constant", "step", "ramp", "pulse", "two_step", "sine", "table"}, false);
     const std::string w = kind ? *kind : (f.has("waveform") ? "" : "constant");
+    using Kind = Waveform::Kind;
+    for (const Kind k : {Kind::constant, Kind::step, Kind::ramp, Kind::pulse, Kind::two_step, Kind::sine, Kind::table}) {
+        if (w == waveform_name(k)) e.waveform.kind = k;
+    }
     // A table gives volts itself (columns t_s,V_V); every other waveform scales g(t) by `voltage`.
     e.voltage = 1.0;
     if (only_with(f, "voltage", w != "table", path + ".waveform other than \"table\" (a table gives volts)")) {
         if (auto v = f.quantity("voltage", Dimension::voltage, w != "table" && !w.empty())) e.voltage = *v;
     }
-    const auto only = [&](std::string_view key, bool allowed, const char* which) {
-        return only_with(f, key, allowed, path + ".waveform = " + which);
+    // Which keys belong to which waveform is the reader's to say; their values are check_case's
+    // (a sweep or an optimisation may set them too).
+    const auto key = [&](std::string_view name, Dimension d, bool allowed, const char* which, bool required,
+                         double& out) {
+        if (!only_with(f, name, allowed, path + ".waveform = " + which)) return;
+        if (auto v = f.quantity(name, d, required)) out = *v;
     };
-    const auto time_key = [&](std::string_view key, bool allowed, const char* which, bool required, double fallback) {
-        double out = fallback;
-        if (only(key, allowed, which)) {
-            if (auto v = f.quantity(key, Dimension::time, required)) {
-                out = *v;
-                if (key != "t_on" && !(*v > 0.0)) value_problems.push_back({path + "." + std::string(key), "must be positive"});
-                if (key == "t_on" && *v < 0.0) value_problems.push_back({path + ".t_on", "must not be negative"});
-            }
-        }
-        return out;
-    };
-    const bool timed = w == "step" || w == "ramp" || w == "pulse";
-    const double t_on = time_key("t_on", timed, "\"step\", \"ramp\" or \"pulse\"", false, 0.0);
-    const double rise = time_key("rise", w == "ramp" || w == "pulse", "\"ramp\" or \"pulse\"", true, 1.0);
-    const double hold = time_key("hold", w == "pulse", "\"pulse\"", true, 1.0);
-    const double fall = time_key("fall", w == "pulse", "\"pulse\"", true, 1.0);
-    using Kind = TimeFunction::Kind;
-    if (w == "step") {
-        e.time.kind = Kind::step;
-        e.time.t_on = t_on;
-    } else if (w == "ramp") {
-        e.time = ramp(t_on, rise);
-    } else if (w == "pulse") {
-        e.time = pulse(t_on, rise, hold, fall);
-    } else if (w == "sine") {
-        // V = bias + voltage sin(2 pi f t + phase): the harmonic g(t) with offset = bias / voltage.
-        e.time.kind = Kind::harmonic;
-    } else if (w == "table") {
-        e.time.kind = Kind::table;
-    }
+    Waveform& g = e.waveform;
+    const bool timed = w == "step" || w == "ramp" || w == "pulse" || w == "two_step";
+    const bool edged = w == "ramp" || w == "pulse" || w == "two_step";
+    key("t_on", Dimension::time, timed, "\"step\", \"ramp\", \"pulse\" or \"two_step\"", false, g.t_on);
+    key("rise", Dimension::time, edged, "\"ramp\", \"pulse\" or \"two_step\"", true, g.rise);
+    key("hold", Dimension::time, w == "pulse" || w == "two_step", "\"pulse\" or \"two_step\"", true, g.hold);
+    key("fall", Dimension::time, w == "pulse", "\"pulse\"", true, g.fall);
+    key("level", Dimension::dimensionless, w == "two_step", "\"two_step\"", true, g.level);
     const bool sine = w == "sine";
-    if (only("frequency", sine, "\"sine\"")) {
-        if (auto v = f.quantity("frequency", Dimension::frequency, true)) {
-            e.time.frequency_hz = *v;
-            if (!(*v > 0.0)) value_problems.push_back({path + ".frequency", "must be positive"});
-        }
-    }
-    if (only("phase", sine, "\"sine\"")) {
-        if (auto v = f.quantity("phase", Dimension::dimensionless, false)) e.time.phase = *v;
-    }
-    if (only("bias", sine, "\"sine\"")) {
-        if (auto v = f.quantity("bias", Dimension::voltage, false)) {
-            if (e.voltage > 0.0) e.time.offset = *v / e.voltage;
-            else value_problems.push_back({path + ".voltage", "must be positive with waveform = \"sine\" (the amplitude)"});
-        }
-    }
-    if (only("table", w == "table", "\"table\"")) {
+    key("frequency", Dimension::frequency, sine, "\"sine\"", true, g.frequency);
+    key("phase", Dimension::dimensionless, sine, "\"sine\"", false, g.phase);
+    key("bias", Dimension::voltage, sine, "\"sine\"", false, g.bias);
+    if (built_from_shape(g.kind)) e.time = waveform_function(g, e.voltage);
+    if (g.kind == Kind::table) e.time.kind = TimeFunction::Kind::table;
+    if (only_with(f, "table", w == "table", path + ".waveform = \"table\"")) {
         if (auto v = f.string("table", true)) {
             if (v->empty()) f.reject("table", "must not be empty (a CSV file name with columns t_s,V_V)");
             else table_file = *v;

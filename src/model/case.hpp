@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "model/time_function.hpp"
+#include "model/waveform.hpp"
 
 namespace vi {
 
@@ -131,7 +132,11 @@ struct Electrode {
     double width = 0.0;                    // effective electrode width w_e [m]; 0 = the beam's width
     Fringing fringing = Fringing::none;
     double voltage = 0.0;                  // amplitude [V]
-    TimeFunction time;                     // g(t) (ramps and pulses are tables)
+    // The waveform as the case file gives it; `time` is built from it (waveform_function) unless
+    // it is a table or given: set a shape key or the voltage through set_case_value, which builds
+    // `time` again.
+    Waveform waveform;
+    TimeFunction time;                     // g(t) (ramps, pulses and two-step drives are tables)
 };
 
 // The gas around the beam (docs/squeeze-film.md). Its presence in a case ([air]) turns on the

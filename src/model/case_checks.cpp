@@ -136,6 +136,26 @@ void check_time_function(std::vector<CaseProblem>& out, const std::string& at, c
     }
 }
 
+// The shape keys of an electrode's waveform under `at` ("electrodes[1]."), as a case file gives them
+// or a sweep sets them.
+void check_waveform(std::vector<CaseProblem>& out, const std::string& at, const Waveform& w, double voltage) {
+    using Kind = Waveform::Kind;
+    const bool timed = w.kind == Kind::step || w.kind == Kind::ramp || w.kind == Kind::pulse || w.kind == Kind::two_step;
+    if (timed) require_non_negative(out, at + "t_on", w.t_on);
+    if (w.kind == Kind::ramp || w.kind == Kind::pulse || w.kind == Kind::two_step) require_positive(out, at + "rise", w.rise);
+    if (w.kind == Kind::pulse || w.kind == Kind::two_step) require_positive(out, at + "hold", w.hold);
+    if (w.kind == Kind::pulse) require_positive(out, at + "fall", w.fall);
+    if (w.kind == Kind::two_step) require_non_negative(out, at + "level", w.level);
+    if (w.kind == Kind::sine) {
+        require_positive(out, at + "frequency", w.frequency);
+        require_finite(out, at + "phase", w.phase);
+        require_finite(out, at + "bias", w.bias);
+        if (w.bias != 0.0 && !(voltage > 0.0)) {
+            out.push_back({at + "voltage", "must be positive with waveform = \"sine\" and a bias (the amplitude)"});
+        }
+    }
+}
+
 void check_load(std::vector<CaseProblem>& out, const Case& c, std::size_t k) {
     const PointLoad& p = c.loads[k];
     const std::string at = "loads[" + std::to_string(k) + "].";
@@ -192,7 +212,11 @@ void check_electrode(std::vector<CaseProblem>& out, const Case& c, std::size_t k
     require_positive(out, at + "dielectric_modulus", e.dielectric_modulus);
     check_fringing_range(out, c, k);
     require_finite(out, at + "voltage", e.voltage);
-    check_time_function(out, at, e.time);
+    if (built_from_shape(e.waveform.kind)) {
+        check_waveform(out, at, e.waveform, e.voltage);
+    } else {
+        check_time_function(out, at, e.time);
+    }
 }
 
 // The gas and the explicit film spans (docs/squeeze-film.md §1). A film span must lie on the beam

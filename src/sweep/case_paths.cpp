@@ -74,14 +74,44 @@ const char* needs_adhesion(const Case& c, std::size_t i) {
                                                      : "only for a support with adhesion (give its adhesion = \"dmt\" or \"jkr\")";
 }
 
+using WaveKind = Waveform::Kind;
+
 const char* needs_not_table(const Case& c, std::size_t i) {
-    return c.electrodes[i].time.kind == FunctionKind::table ? "not for a table waveform (it gives volts itself)" : nullptr;
+    return c.electrodes[i].waveform.kind == WaveKind::table ? "not for a table waveform (it gives volts itself)" : nullptr;
 }
-const char* needs_electrode_step(const Case& c, std::size_t i) {
-    return c.electrodes[i].time.kind == FunctionKind::step ? nullptr : "only for waveform = \"step\"";
+// A shape key of the waveforms `kinds`; `message` says which when the electrode has another.
+template <WaveKind... kinds>
+const char* needs_waveform(const Case& c, std::size_t i, const char* message) {
+    const WaveKind k = c.electrodes[i].waveform.kind;
+    return ((k == kinds) || ...) ? nullptr : message;
+}
+const char* needs_timed(const Case& c, std::size_t i) {
+    return needs_waveform<WaveKind::step, WaveKind::ramp, WaveKind::pulse, WaveKind::two_step>(
+        c, i, "only for waveform = \"step\", \"ramp\", \"pulse\" or \"two_step\"");
+}
+const char* needs_edges(const Case& c, std::size_t i) {
+    return needs_waveform<WaveKind::ramp, WaveKind::pulse, WaveKind::two_step>(
+        c, i, "only for waveform = \"ramp\", \"pulse\" or \"two_step\"");
+}
+const char* needs_hold(const Case& c, std::size_t i) {
+    return needs_waveform<WaveKind::pulse, WaveKind::two_step>(c, i, "only for waveform = \"pulse\" or \"two_step\"");
+}
+const char* needs_pulse(const Case& c, std::size_t i) {
+    return needs_waveform<WaveKind::pulse>(c, i, "only for waveform = \"pulse\"");
+}
+const char* needs_two_step(const Case& c, std::size_t i) {
+    return needs_waveform<WaveKind::two_step>(c, i, "only for waveform = \"two_step\"");
 }
 const char* needs_electrode_sine(const Case& c, std::size_t i) {
-    return c.electrodes[i].time.kind == FunctionKind::harmonic ? nullptr : "only for waveform = \"sine\"";
+    return needs_waveform<WaveKind::sine>(c, i, "only for waveform = \"sine\"");
+}
+
+// Sets a value of electrode i's waveform (or its voltage) and builds its g(t) again.
+template <class Set>
+void set_waveform(Case& c, std::size_t i, Set set) {
+    Electrode& e = c.electrodes[i];
+    set(e);
+    if (built_from_shape(e.waveform.kind)) e.time = waveform_function(e.waveform, e.voltage);
 }
 const char* needs_dielectric(const Case& c, std::size_t i) {
     return c.electrodes[i].dielectric_thickness > 0.0 ? nullptr : "only with a dielectric_thickness above 0";
@@ -161,11 +191,23 @@ const FieldSpec kFields[] = {
     {"electrodes", "dielectric_permittivity", "-", false, false, VI_GET(c.electrodes[i].dielectric_permittivity),
      VI_SET(c.electrodes[i].dielectric_permittivity = v), needs_dielectric},
     {"electrodes", "voltage", "V", false, false, VI_GET(c.electrodes[i].voltage),
-     VI_SET(c.electrodes[i].voltage = v), needs_not_table},
-    {"electrodes", "t_on", "s", false, false, VI_GET(c.electrodes[i].time.t_on),
-     VI_SET(c.electrodes[i].time.t_on = v), needs_electrode_step},
-    {"electrodes", "frequency", "Hz", false, false, VI_GET(c.electrodes[i].time.frequency_hz),
-     VI_SET(c.electrodes[i].time.frequency_hz = v), needs_electrode_sine},
+     VI_SET(set_waveform(c, i, [v](Electrode& e) { e.voltage = v; })), needs_not_table},
+    {"electrodes", "t_on", "s", false, false, VI_GET(c.electrodes[i].waveform.t_on),
+     VI_SET(set_waveform(c, i, [v](Electrode& e) { e.waveform.t_on = v; })), needs_timed},
+    {"electrodes", "rise", "s", false, false, VI_GET(c.electrodes[i].waveform.rise),
+     VI_SET(set_waveform(c, i, [v](Electrode& e) { e.waveform.rise = v; })), needs_edges},
+    {"electrodes", "hold", "s", false, false, VI_GET(c.electrodes[i].waveform.hold),
+     VI_SET(set_waveform(c, i, [v](Electrode& e) { e.waveform.hold = v; })), needs_hold},
+    {"electrodes", "fall", "s", false, false, VI_GET(c.electrodes[i].waveform.fall),
+     VI_SET(set_waveform(c, i, [v](Electrode& e) { e.waveform.fall = v; })), needs_pulse},
+    {"electrodes", "level", "-", false, false, VI_GET(c.electrodes[i].waveform.level),
+     VI_SET(set_waveform(c, i, [v](Electrode& e) { e.waveform.level = v; })), needs_two_step},
+    {"electrodes", "frequency", "Hz", false, false, VI_GET(c.electrodes[i].waveform.frequency),
+     VI_SET(set_waveform(c, i, [v](Electrode& e) { e.waveform.frequency = v; })), needs_electrode_sine},
+    {"electrodes", "phase", "rad", false, false, VI_GET(c.electrodes[i].waveform.phase),
+     VI_SET(set_waveform(c, i, [v](Electrode& e) { e.waveform.phase = v; })), needs_electrode_sine},
+    {"electrodes", "bias", "V", false, false, VI_GET(c.electrodes[i].waveform.bias),
+     VI_SET(set_waveform(c, i, [v](Electrode& e) { e.waveform.bias = v; })), needs_electrode_sine},
     {"air", "pressure", "Pa", false, false, VI_GET(c.air ? c.air->pressure : 0.0), VI_SET(c.air->pressure = v), needs_air},
     {"air", "temperature", "K", false, false, VI_GET(c.air ? c.air->temperature : 0.0), VI_SET(c.air->temperature = v),
      needs_air},

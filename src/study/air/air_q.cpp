@@ -44,6 +44,7 @@ Case air_q_case(const Case& base, double gap) {
     c.air->film = true;
     for (Electrode& e : c.electrodes) {
         e.voltage = 0.0;
+        e.waveform = Waveform{};
         e.time = TimeFunction{};
     }
     if (c.electrodes.empty() && c.films.empty()) c.films.push_back(Film{0.0, 1.0, Side::below, gap});
