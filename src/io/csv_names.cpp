@@ -51,6 +51,7 @@ const std::vector<std::string_view>& dimensionless() {
         "ratio", "ratio_#", "ratios[#]", "over_peak", "over_sigma", "tau", "tau#", "tau_p", "z_max", "z_min", "z_equilibrium",
         "z_top", "amplitude", "Y_#", "Phi_#", "Y_#_#", "Phi_#_#", "knudsen", "squeeze_number", "q_modal",
         "q_ringdown", "unproven_excess", "offset", "permittivity", "tolerance", "rtol",
+        "level",  // a two-step drive's first level, a fraction of the voltage
         // text
         "status", "stage", "kind", "law", "verdict", "reason", "feature", "solver",
     };
