@@ -1,6 +1,7 @@
 // `vibroimpact optimize CASE --vary PATH=LOW:HIGH ... --minimize QUANTITY [--constraint ...]`:
 // the best design in a box of case values (docs/optimization.md).
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -102,8 +103,17 @@ FigureSpec convergence_figure(const DesignProblem& p, const OptimizeResult& r) {
     f.caption = "Each feasible design's " + q + " (points) and the best so far (line), global stage then local.";
     f.data = {{"convergence.csv", data}};
     f.plot = "set datafile separator ','\nset key top right\nset xlabel 'evaluation'\nset ylabel " + gp_quote(q) +
-             " noenhanced\nplot 'convergence.csv' using 1:2 every ::1 with points pt 7 ps 0.6 title 'design', "
-             "'' using 1:3 every ::1 with steps lw 2 title 'best so far'\n";
+             " noenhanced\n";
+    if (!r.best) {
+        // Nothing to draw (gnuplot refuses a plot without one defined point): an empty frame that says so.
+        f.caption = "No design was feasible: evaluations.csv says why each failed.";
+        f.plot += "set xrange [0:" + std::to_string(std::max<std::size_t>(r.evaluations.size(), 1)) +
+                  "]\nset yrange [0:1]\nunset ytics\nset label 1 'no feasible design' at graph 0.5, 0.5 center\n"
+                  "plot NaN notitle\n";
+        return f;
+    }
+    f.plot += "plot 'convergence.csv' using 1:2 every ::1 with points pt 7 ps 0.6 title 'design', "
+              "'' using 1:3 every ::1 with steps lw 2 title 'best so far'\n";
     return f;
 }
 

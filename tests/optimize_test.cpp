@@ -140,5 +140,27 @@ TEST(Optimize, TheCommandWritesItsRecordAndRefusesBadInputWithExit2) {
     fs::remove_all(tmp);
 }
 
+// When no design gives the objective (a horizon too short for the transient to settle, so no T_p),
+// the record is still written, the figure says there is nothing to draw, and the exit code is 1.
+TEST(Optimize, NoFeasibleDesignStillWritesTheRecordAndExitsOne) {
+    const std::string tmp = test::make_temp_dir();
+    std::string text = test::read_text(test::source_path("examples/paper/free_impact_tip.toml"));
+    const std::string from = "horizon = \"150 us\"";
+    const auto at = text.find(from);
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, from.size(), "horizon = \"20 us\"");
+    test::write_text(tmp + "/short.toml", text);
+    const auto r = test::run_vibroimpact({"optimize", tmp + "/short.toml", "--vary", "supports[0].position=0.5:1",
+                                          "--minimize", "Tp_s", "--max-evals", "6", "--out", tmp + "/opt"});
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find("no design"), std::string::npos) << r.err;
+    for (const char* name : {"optimize.json", "evaluations.csv", "convergence.png", "convergence.svg"}) {
+        EXPECT_TRUE(fs::exists(tmp + "/opt/" + name)) << name;
+    }
+    const json j = json::parse(test::read_text(tmp + "/opt/optimize.json"));
+    EXPECT_TRUE(j["best"].is_null());
+    fs::remove_all(tmp);
+}
+
 }  // namespace
 }  // namespace vi
