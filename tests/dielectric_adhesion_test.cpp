@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -242,6 +243,172 @@ TEST(DielectricAdhesion, TheLayerSolutionTendsToTheClosedForm) {
         EXPECT_NEAR(s / ld - 1.0, -1.0 / (b * ld), 2.0 / (b * ld * b * ld) + 1e-12);
         EXPECT_LT(error, previous);
         previous = error;
+    }
+}
+
+// The peel balance of the stiction check against the clamped-guided span's closed forms: a cantilever
+// held on a layer under x in [a, l] peels from a until its free span is l_d long (G = 18 E I h^2 / s^4
+// = w w_e), pulls off its layer with the span's shear 12 E I h / l_d^3 and sticks for w above
+// 1.5 E t^3 h^2 / l^4 (l_d = l); a clamped-clamped beam held at mid-span peels from both sides.
+TEST(DielectricAdhesion, ThePeelBalanceIsTheClampedGuidedSpans) {
+    const double E = 200e9, t = 2e-6, we = 30e-6, l = 100e-6, h = 1.5e-6, w = 0.2;
+    const double EI = E * we * t * t * t / 12.0;
+    const auto layer = [&](const char* ends, double from, double work) {
+        char buf[1024];
+        std::snprintf(buf, sizeof buf,
+                      "[beam]\nlength = \"100 um\"\nwidth = \"30 um\"\nthickness = \"2 um\"\nelements = 20\n%s"
+                      "[material]\nyoungs_modulus = \"200 GPa\"\ndensity = \"8900 kg/m^3\"\npoisson_ratio = 0.3\n"
+                      "[[electrodes]]\nfrom = %.17g\nto = 1.0\ngap = \"1.7 um\"\ndielectric_thickness = \"0.2 um\"\n"
+                      "work_of_adhesion = %.17g\nvoltage = \"0 V\"\n",
+                      ends, from, work);
+        return read_case_text(buf, "layer.toml");
+    };
+    const double ld = detached_length_closed_form(E, t, h, w);
+    const LayerHold c = layer_hold(layer("", 0.2, w), 0);
+    ASSERT_TRUE(c.sticks);
+    EXPECT_NEAR(c.air_gap, h, 1e-18);
+    EXPECT_NEAR(c.adhesion_energy, w * we, 1e-18);
+    EXPECT_NEAR(c.release_from, 18.0 * EI * h * h / std::pow(0.2 * l, 4), 1e-9 * c.release_from);
+    EXPECT_EQ(c.release_to, 0.0);  // a free overhang stays flat
+    EXPECT_NEAR(c.contact_from, ld, 1e-9 * ld);
+    EXPECT_NEAR(c.contact_to, l, 1e-15);
+    EXPECT_NEAR(c.restoring_force, 12.0 * EI * h / (ld * ld * ld), 1e-8 * c.restoring_force);
+    EXPECT_NEAR(c.critical_work_of_adhesion, 1.5 * E * t * t * t * h * h / std::pow(l, 4), 1e-9 * c.critical_work_of_adhesion);
+    EXPECT_NEAR(c.holding_moment, std::sqrt(2.0 * EI * w * we), 1e-12 * c.holding_moment);
+
+    // Clamped at both ends, the layer under all of it: it peels from both clamps, and sticks while the
+    // two free spans of l_d leave some contact between them (w above 18 E I h^2 / ((l/2)^4 w_e)).
+    const double w_c = 18.0 * EI * h * h / std::pow(0.5 * l, 4) / we;
+    EXPECT_FALSE(layer_hold(layer("right = \"clamped\"\n", 0.0, 0.9 * w_c), 0).sticks);
+    const double strong = 2.0 * w_c, ld_strong = detached_length_closed_form(E, t, h, strong);
+    const LayerHold b = layer_hold(layer("right = \"clamped\"\n", 0.0, strong), 0);
+    ASSERT_TRUE(b.sticks);
+    EXPECT_EQ(b.release_from, std::numeric_limits<double>::infinity());  // the layer starts at a clamp
+    EXPECT_NEAR(b.contact_from, ld_strong, 1e-9 * ld_strong);
+    EXPECT_NEAR(b.contact_to, l - ld_strong, 1e-9 * ld_strong);
+    EXPECT_NEAR(b.restoring_force, 2.0 * 12.0 * EI * h / std::pow(ld_strong, 3), 1e-8 * b.restoring_force);
+    EXPECT_NEAR(b.critical_work_of_adhesion, w_c, 1e-9 * w_c);
+}
+
+// The case keys: a layer's work of adhesion and range, the refusals (one line naming file:line:key).
+TEST(DielectricAdhesion, CaseKeysAndRefusals) {
+    const std::string base = R"(name = "t"
+[beam]
+length = "100 um"
+width = "30 um"
+thickness = "2 um"
+elements = 10
+[material]
+youngs_modulus = "200 GPa"
+density = "8900 kg/m^3"
+poisson_ratio = 0.3
+[[electrodes]]
+from = 0.2
+to = 1.0
+gap = "2 um"
+voltage = "5 V"
+)";  // the electrode's keys from line 16 on
+    const Case c = read_case_text(base + "dielectric_thickness = \"0.2 um\"\nwork_of_adhesion = \"50 mJ/m^2\"\n"
+                                         "adhesion_range = \"1 nm\"\n",
+                                  "ok.toml");
+    ASSERT_TRUE(c.electrodes[0].work_of_adhesion);
+    EXPECT_DOUBLE_EQ(*c.electrodes[0].work_of_adhesion, 0.05);
+    EXPECT_DOUBLE_EQ(c.electrodes[0].adhesion_range, 1e-9);
+    const Case d = read_case_text(base + "dielectric_thickness = \"0.2 um\"\nwork_of_adhesion = 0.1\n", "ok.toml");
+    EXPECT_DOUBLE_EQ(d.electrodes[0].adhesion_range, kDefaultAdhesionRange);
+    EXPECT_FALSE(read_case_text(base, "ok.toml").electrodes[0].work_of_adhesion);
+    const auto refused = [&](const std::string& keys, const std::string& prefix) {
+        try {
+            (void)read_case_text(base + keys, "bad.toml");
+            ADD_FAILURE() << "accepted:\n" << keys;
+        } catch (const InputError& e) {
+            const std::string what = e.what();
+            EXPECT_EQ(what.substr(0, prefix.size()), prefix) << "full message: " << what;
+            EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+        }
+    };
+    refused("work_of_adhesion = 0.1\n", "bad.toml:16: electrodes[0].work_of_adhesion: needs dielectric_thickness");
+    refused("dielectric_thickness = \"0.2 um\"\nadhesion_range = \"1 nm\"\n",
+            "bad.toml:17: electrodes[0].adhesion_range: needs work_of_adhesion");
+    refused("dielectric_thickness = \"0.2 um\"\nwork_of_adhesion = 0\n",
+            "bad.toml:17: electrodes[0].work_of_adhesion: must be positive");
+    refused("dielectric_thickness = \"0.2 um\"\nwork_of_adhesion = -0.1\n",
+            "bad.toml:17: electrodes[0].work_of_adhesion: must be positive");
+    refused("dielectric_thickness = \"0.2 um\"\nwork_of_adhesion = 0.1\nadhesion_range = \"-1 nm\"\n",
+            "bad.toml:18: electrodes[0].adhesion_range: must be positive");
+    refused("dielectric_thickness = \"0.2 um\"\nwork_of_adhesion = \"0.1 N\"\n", "bad.toml:17: electrodes[0].work_of_adhesion:");
+    refused("dielectric_thickness = \"0.2 um\"\nwork_of_adhesion = 0.1\n[solver]\nmethod = \"exact\"\n",
+            "bad.toml:19: solver.method: \"exact\" cannot take the adhesive dielectric contact of electrodes[0]");
+}
+
+// A capacitive cantilever (10 elements, Rayleigh damping) lands on its adhesive nitride under a 60 V
+// pulse; when the voltage falls it stays stuck (w = 0.1 J/m^2) or lets go (0.01 J/m^2). kinetic +
+// strain + layer (the adhesion's potential included) + electrical + dissipated - source work stays
+// constant at every sample, to 1e-6 of the source's work.
+TEST(DielectricAdhesion, TheEnergyLedgerIsConstantThroughLandingStickingAndRelease) {
+    const auto run = [](double w, double horizon_us, double rtol) {
+        char buf[2048];
+        std::snprintf(buf, sizeof buf, R"(
+[beam]
+length = "117 um"
+width = "30 um"
+thickness = "2 um"
+elements = 10
+[material]
+youngs_modulus = "207 GPa"
+density = "8902 kg/m^3"
+poisson_ratio = 0.31
+[damping]
+ratios = [0.005, 0.005]
+modes = [1, 2]
+[[electrodes]]
+from = 0.1
+to = 1.0
+gap = "2 um"
+dielectric_thickness = "0.2 um"
+dielectric_permittivity = 7.5
+work_of_adhesion = "%.17g J/m^2"
+voltage = "60 V"
+waveform = "pulse"
+t_on = "0 us"
+rise = "0.5 us"
+hold = "3 us"
+fall = "0.5 us"
+[initial]
+kind = "rest"
+[solver]
+method = "cvode"
+horizon = "%.17g us"
+output_step = "20 ns"
+rtol = %.17g
+)",
+                      w, horizon_us, rtol);
+        const Case c = read_case_text(buf, "landing.toml");
+        const BuiltProblem b = build_transient_problem(c);
+        CvodeOptions o;
+        o.rtol = rtol;
+        return solve_cvode(b.problem, o);
+    };
+    const auto total = [](const EnergyLedger& e) {
+        return e.kinetic + e.strain + e.contact_spring + e.electrical + e.rayleigh_dissipated + e.contact_dissipated -
+               e.external_work;
+    };
+    for (const double w : {0.1, 0.01}) {
+        const TransientResult r = w > 0.05 ? run(w, 8.0, 1e-9) : run(w, 20.0, 1e-9);
+        ASSERT_FALSE(r.episodes.empty());
+        const double scale = r.final_energy.external_work;
+        ASSERT_GT(scale, 0.0);
+        double worst = 0.0, deepest = 0.0;
+        for (const EnergyLedger& e : r.history.energy) {
+            worst = std::max(worst, std::abs(total(e) - total(r.initial_energy)) / scale);
+            deepest = std::min(deepest, e.contact_spring);
+        }
+        EXPECT_LT(worst, 1e-6) << w;
+        EXPECT_LT(deepest, 0.0) << w;  // the adhesion's potential well was entered
+        const bool stuck = r.episodes.back().closed_at_end;
+        EXPECT_EQ(stuck, w > 0.05) << w;
+        std::printf("w = %.3g J/m^2: %zu episodes, %s at %.3g us, ledger constant to %.2e of the source's work\n", w,
+                    r.episodes.size(), stuck ? "stuck" : "released", r.t_end * 1e6, worst);
     }
 }
 

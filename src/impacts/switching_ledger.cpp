@@ -95,23 +95,42 @@ std::string newton_text(double f) {
     return buf;
 }
 
-// The first adhesive contact closed at the horizon that pulls (its force negative): adhesion holds it.
+// A layer's force over the last period of mode 1 before the horizon (from `from` on, if later) [N]:
+// a beam held down still vibrates, and its layer's force swings about the holding force with it.
+double mean_force(const TimeHistory& h, const std::vector<double>& f, double from, double to) {
+    double sum = 0.0;
+    int n = 0;
+    for (std::size_t i = 0; i < f.size() && i < h.t.size(); ++i) {
+        if (h.t[i] < from || h.t[i] > to) continue;
+        sum += f[i];
+        ++n;
+    }
+    return n > 0 ? sum / n : f.back();
+}
+
+// The first adhesive contact closed at the horizon that pulls (its force negative; a layer's on
+// average over the last period, from `settled` on): adhesion holds it.
 std::optional<StuckBalance> stuck_balance(const TransientResult& r, const std::vector<std::optional<ContactHold>>& holds,
-                                          const std::vector<std::optional<LayerHold>>& layers) {
+                                          const std::vector<std::optional<LayerHold>>& layers, double settled) {
     for (const ContactEpisode& e : r.episodes) {
         const auto j = static_cast<std::size_t>(e.support);
         const bool support = j < holds.size() && holds[j];
         const bool layer = j < layers.size() && layers[j];
         if (!e.closed_at_end || !(support || layer) || j >= r.history.contact_force.size()) continue;
         const std::vector<double>& f = r.history.contact_force[j];
-        if (f.empty() || !(f.back() < 0.0)) continue;
+        if (f.empty()) continue;
+        if (layer) {
+            const double mean = mean_force(r.history, f, settled, r.t_end);
+            if (!(mean < 0.0)) continue;
+            const LayerHold& h = *layers[j];
+            return StuckBalance{e.support, "electrodes[" + std::to_string(h.electrode) + "].dielectric",
+                                h.restoring_force, h.even_pull_off_force, mean, h};
+        }
+        if (!(f.back() < 0.0)) continue;
         if (support) {
             return StuckBalance{e.support, "supports[" + std::to_string(j) + "]", holds[j]->restoring_force,
                                 holds[j]->pull_off_force, f.back(), std::nullopt};
         }
-        const LayerHold& h = *layers[j];
-        return StuckBalance{e.support, "electrodes[" + std::to_string(h.electrode) + "].dielectric", h.restoring_force,
-                            h.even_pull_off_force, f.back(), h};
     }
     return std::nullopt;
 }
@@ -144,7 +163,7 @@ std::string layer_reason(const StuckBalance& b, double held_for) {
         why.append(", so by the static balance it peels off entirely (it sticks only above w = ");
         why.append(number_text(h.critical_work_of_adhesion, "J/m^2")).append(")");
     }
-    why.append("; the layer pulls with ").append(newton_text(-b.contact_force)).append(" at the horizon");
+    why.append("; the layer pulls with ").append(newton_text(-b.contact_force)).append(" on average over the last period");
     return why;
 }
 
@@ -198,7 +217,7 @@ SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Ele
         L.state = "closed";
         if (fell) {
             L.reason = "the horizon ended " + us_text(horizon - *L.voltage.off) + " after the voltage fell";
-            L.stuck = stuck_balance(r, holds, layers);
+            L.stuck = stuck_balance(r, holds, layers, std::max(*L.voltage.off, horizon - period));
             if (L.stuck && L.stuck->layer) {
                 L.state = "stuck";
                 L.reason = layer_reason(*L.stuck, horizon - *L.voltage.off);

@@ -44,7 +44,9 @@ struct StuckBalance {
     double restoring_force = 0.0;  // the beam's static pull off the surface (ContactHold, LayerHold) [N]
     // F_po of a support; for a layer the pull of its stuck contact lifted evenly (LayerHold) [N].
     double pull_off_force = 0.0;
-    double contact_force = 0.0;    // the contact's force at the horizon, negative while it pulls [N]
+    // The contact's force at the horizon, negative while it pulls [N]; a layer's, averaged over the
+    // last period of mode 1 (the beam held down still vibrates).
+    double contact_force = 0.0;
     std::optional<LayerHold> layer;  // a layer's peel balance
 };
 

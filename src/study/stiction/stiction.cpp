@@ -85,10 +85,13 @@ StictionResult stiction_check(const Case& c) {
         if (h.restoring_force > 0.0) st.critical_work_of_adhesion = s.work_of_adhesion * h.restoring_force / h.pull_off_force;
         r.supports.push_back(st);
     }
-    if (r.supports.empty()) {
-        throw InputError("supports: no support has adhesion (give one adhesion = \"dmt\" or \"jkr\" with its "
-                         "work_of_adhesion and contact_radius)");
+    r.layers = layer_stiction(c);
+    if (r.supports.empty() && r.layers.empty()) {
+        throw InputError("supports: no support has adhesion and no electrode's dielectric adheres (give a support "
+                         "adhesion = \"dmt\" or \"jkr\" with its work_of_adhesion and contact_radius, or an electrode "
+                         "with a dielectric_thickness its work_of_adhesion)");
     }
+    if (r.supports.empty()) return r;
     const bool cantilever = (c.beam.left == EndCondition::free) != (c.beam.right == EndCondition::free);
     if (!cantilever) {
         r.note = "the detached length is for a cantilever (one end free); this beam has none or two";

@@ -1,12 +1,14 @@
 #pragma once
-// The stiction check of a case: whether each adhesive support holds the unloaded beam down, and the
-// detached length of a long cantilever lying on its substrate (docs/adhesion.md §4-5).
+// The stiction check of a case: whether each adhesive support holds the unloaded beam down, the
+// detached length of a long cantilever lying on its substrate, and the peel balance of the beam on
+// each adhesive dielectric layer (docs/adhesion.md §4-5, §10).
 
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "model/case.hpp"
+#include "study/stiction/layer_stiction.hpp"
 
 namespace vi {
 
@@ -40,10 +42,11 @@ struct DetachedLength {
 struct StictionResult {
     std::vector<SupportStiction> supports;      // the adhesive ones, in case order
     std::vector<DetachedLength> detached;       // for a cantilever (one end free) only
-    std::string note;                           // why `detached` is empty, or ""
+    std::string note;                           // why `detached` is empty with adhesive supports, or ""
+    std::vector<LayerStiction> layers;          // the electrodes' adhesive layers, in case order
 };
 
-// Throws InputError when the case has no adhesive support.
+// Throws InputError when the case has neither an adhesive support nor an adhesive layer.
 StictionResult stiction_check(const Case& c);
 
 // l_d from the closed form (E the beam's effective modulus) [m].
