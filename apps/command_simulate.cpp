@@ -31,7 +31,13 @@ void print_switching(const SwitchingLedger& l) {
     std::printf("  stable contact from              %s\n", us(l.stable_contact).c_str());
     if (!l.contacts.empty()) std::printf("  peak contact force               %.4g N\n", l.peak_force);
     std::printf("  release                          %s\n", us(l.release_time).c_str());
-    if (l.stuck) {
+    if (l.stuck && l.stuck->layer) {
+        const LayerHold& h = *l.stuck->layer;
+        std::printf("  stuck on %s: restoring force %.4g N (the layer pulls %.4g N); peel balance: released %.4g J/m vs "
+                    "w w_e %.4g J/m\n",
+                    l.stuck->contact.c_str(), l.stuck->restoring_force, -l.stuck->contact_force,
+                    std::max(h.release_from, h.release_to), h.adhesion_energy);
+    } else if (l.stuck) {
         std::printf("  stuck on supports[%d]: restoring force %.4g N vs pull-off force %.4g N (the contact pulls %.4g N)\n",
                     l.stuck->support, l.stuck->restoring_force, l.stuck->pull_off_force, -l.stuck->contact_force);
     }

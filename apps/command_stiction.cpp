@@ -1,5 +1,6 @@
-// `vibroimpact stiction CASE`: whether the unloaded beam stays stuck on its adhesive supports, and
-// the detached length of a long cantilever lying on the substrate (docs/adhesion.md).
+// `vibroimpact stiction CASE`: whether the unloaded beam stays stuck on its adhesive supports and
+// adhesive dielectric layers, and the detached length of a long cantilever lying on the substrate
+// (docs/adhesion.md).
 
 #include <cstdio>
 #include <memory>
@@ -18,16 +19,24 @@ CommandBody add_stiction_command(CLI::App& app) {
         std::string case_path;
         bool json = false;
         std::string out_dir;
+        int elements = 0;
     };
     auto opt = std::make_shared<Options>();
     CLI::App* sub = app.add_subcommand(
-        "stiction", "Stiction check: restoring force vs pull-off force at each adhesive support, detached length");
-    sub->add_option("case", opt->case_path, "Case file (TOML) with a support that has adhesion")->required();
+        "stiction",
+        "Stiction check: restoring force vs pull-off force at each adhesive support, the peel balance on each "
+        "adhesive dielectric layer, detached length");
+    sub->add_option("case", opt->case_path, "Case file (TOML) with an adhesive support or dielectric layer")->required();
     sub->add_flag("--json", opt->json, "Print one JSON document on stdout instead of text");
     sub->add_option("--out,-o", opt->out_dir, "Folder for stiction.json and stiction.csv");
+    sub->add_option("--elements", opt->elements,
+                    "Elements of the beam for these static checks, instead of the case's beam.elements (an adhesive "
+                    "layer's settled front needs elements shorter than its attraction zone)")
+        ->check(CLI::Range(1, 100000));
 
     return [opt]() {
-        const Case c = read_case_file(opt->case_path);
+        Case c = read_case_file(opt->case_path);
+        if (opt->elements > 0) c.beam.elements = opt->elements;
         StictionResult r;
         try {
             r = stiction_check(c);

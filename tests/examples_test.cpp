@@ -118,5 +118,51 @@ TEST(Examples, CantileverStictionReleasesOrSticksWithTheWorkOfAdhesion) {
     fs::remove_all(dir);
 }
 
+// The capacitive switch that sticks on its adhesive nitride (examples/switch/capacitive_stiction.toml):
+// `stiction` gives the peel balance (it sticks above w = 0.0430 J/m^2, lying flat from l_d = 94.7 um
+// on) and the FE beam settled on the layer; with w = 0.1 J/m^2 the transient ends stuck with the
+// peel balance in summary.json (run here to 8 us, 4 us after the voltage fell); with 0.02 J/m^2 it lets go.
+TEST(Examples, CapacitiveStictionSticksOrLetsGoWithTheWorkOfAdhesion) {
+    const std::string file = test::source_path("examples/switch/capacitive_stiction.toml");
+    const auto st = run_vibroimpact({"stiction", file, "--json", "--elements", "100"});
+    ASSERT_EQ(st.exit_code, 0) << st.err;
+    const json layer = json::parse(st.out)["layers"][0];
+    EXPECT_EQ(layer["verdict"], "sticks");
+    EXPECT_NEAR(layer["critical_work_of_adhesion_j_m2"].get<double>(), 0.04295, 1e-5);
+    EXPECT_NEAR(layer["contact_from_m"].get<double>(), 94.716e-6, 1e-9);
+    EXPECT_TRUE(layer["settled"]["stuck"].get<bool>());
+    // The FE front on 100 elements against the layer's semi-analytic solution (docs/adhesion.md §8).
+    EXPECT_NEAR(layer["detached_length_fe_m"].get<double>() / layer["detached_length_on_layer_m"].get<double>(), 1.0, 1e-3);
+
+    const std::string dir = (fs::temp_directory_path() / ("vi_capacitive_" + std::to_string(::getpid()))).string();
+    fs::create_directories(dir);
+    const std::string text = read_text(file);
+    const auto variant = [&](const std::string& name, const std::string& from, const std::string& to) {
+        std::string t = text;
+        EXPECT_NE(t.find(from), std::string::npos) << from;
+        if (t.find(from) != std::string::npos) t.replace(t.find(from), from.size(), to);
+        test::write_text(dir + "/" + name, t);
+        return dir + "/" + name;
+    };
+    const auto stuck = run_vibroimpact({"simulate", variant("stuck.toml", "horizon = \"20 us\"", "horizon = \"8 us\""), "--json"});
+    ASSERT_EQ(stuck.exit_code, 0) << stuck.err;
+    const json sw = json::parse(stuck.out)["switching"];
+    EXPECT_EQ(sw["state"], "stuck");
+    EXPECT_EQ(sw["stuck"]["contact"], "electrodes[0].dielectric");
+    EXPECT_NEAR(sw["stuck"]["restoring_force_n"].get<double>(), 1.052e-4, 1e-7);
+    EXPECT_LT(sw["stuck"]["contact_force_n"].get<double>(), 0.0);
+    EXPECT_NEAR(sw["stuck"]["adhesion_energy_j_m"].get<double>(), 0.1 * 30e-6, 1e-15);
+    EXPECT_NE(sw["reason"].get<std::string>().find("peels back and stays down"), std::string::npos) << sw["reason"];
+
+    const auto free =
+        run_vibroimpact({"simulate", variant("free.toml", "work_of_adhesion = \"0.1 J/m^2\"", "work_of_adhesion = \"0.02 J/m^2\""), "--json"});
+    ASSERT_EQ(free.exit_code, 0) << free.err;
+    const json fw = json::parse(free.out)["switching"];
+    EXPECT_EQ(fw["state"], "released");
+    ASSERT_TRUE(fw["release_time_s"].is_number());
+    EXPECT_GT(fw["release_time_s"].get<double>(), 4e-6);  // after the voltage fell
+    fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace vi

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <random>
 #include <string>
 #include <type_traits>
@@ -16,6 +17,7 @@
 #include <vector>
 
 #include "forces/adhesive_contact.hpp"
+#include "forces/dielectric_contact.hpp"
 #include "forces/force_set.hpp"
 #include "forces/kelvin_voigt_contact.hpp"
 #include "forces/point_load_element.hpp"
@@ -51,6 +53,19 @@ std::vector<Sample> samples(std::size_t dofs) {
         out.push_back(s);
     }
     return out;
+}
+
+// A dielectric layer on an element of length 1 m: gap 0.3 um, layer 0.2 um, line stiffness 1e3 N/m^2.
+ForceElementPtr dielectric_layer(double sign, std::optional<AdhesiveLayerLaw> law) {
+    PadGeometry g;
+    g.sign = sign;
+    g.gap = 0.3e-6;
+    g.dielectric_thickness = 0.2e-6;
+    g.width = 30e-6;
+    g.to = 1.0;
+    const std::string name = sign < 0.0 ? "electrodes[0].dielectric" : "electrodes[1].dielectric";
+    if (law) return std::make_shared<DielectricContact>(name, std::vector<int>{0, 1, 2, 3}, test::one_element_points(1.0), g, *law);
+    return std::make_shared<DielectricContact>(name, std::vector<int>{0, 1, 2, 3}, test::one_element_points(1.0), g, 1e3);
 }
 
 struct Named {
@@ -110,6 +125,19 @@ std::vector<Named> elements() {
              return std::make_shared<SqueezeFilm>("films[1]", std::vector<int>{0, 1, 2, 3}, test::one_element_points(L),
                                                   FilmGeometry{1.0, 2.5e-6, 20e-6, 0.0, L}, FilmGas{1.85e-5, 7e-6});
          }},
+        // The layers on one element 1 m long (as the films), their face 0.1 um from the axis, so that
+        // the samples' +-1 um press in, pass through the attraction's range and leave it.
+        {"dielectric contact below",
+         [] { return dielectric_layer(-1.0, std::nullopt); },
+         false},
+        // W = 0.1 k r^2: the rest penetration lies where the layer's stiffness comes in (d_0 < r).
+        {"adhesive dielectric contact below, soft pull",
+         [] { return dielectric_layer(-1.0, AdhesiveLayerLaw(1e3, 0.1 * 1e3 * 0.3e-6 * 0.3e-6, 0.3e-6)); },
+         false},
+        // W = 5 k r^2: it lies beyond (d_0 > r), where the layer is a linear spring.
+        {"adhesive dielectric contact above, strong pull",
+         [] { return dielectric_layer(1.0, AdhesiveLayerLaw(1e3, 5.0 * 1e3 * 0.2e-6 * 0.2e-6, 0.2e-6)); },
+         false},
     };
 }
 
@@ -224,7 +252,7 @@ TEST_P(ForceElementContract, LinearFormGivesTheSameForce) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(AllElements, ForceElementContract, ::testing::Range<std::size_t>(0, 6));
+INSTANTIATE_TEST_SUITE_P(AllElements, ForceElementContract, ::testing::Range<std::size_t>(0, elements().size()));
 
 // The contact's switching rules: open, it closes exactly where d > 0 and F > 0 both hold (its
 // switching function crosses zero upward there); closed, it opens where F falls through 0.

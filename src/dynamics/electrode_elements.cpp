@@ -134,6 +134,13 @@ std::vector<std::shared_ptr<const DielectricContact>> dielectric_contacts(const 
         const double stiffness = e.dielectric_modulus * m.geometry.width / e.dielectric_thickness;
         std::string name = "electrodes[" + std::to_string(k) + "]";
         name += ".dielectric";
+        if (e.work_of_adhesion) {
+            // The adhesion energy per unit length of beam lying on the layer: w over the width w_e.
+            const AdhesiveLayerLaw law(stiffness, *e.work_of_adhesion * m.geometry.width, e.adhesion_range);
+            out.push_back(std::make_shared<const DielectricContact>(std::move(name), std::move(m.dofs),
+                                                                    std::move(m.points), m.geometry, law));
+            continue;
+        }
         out.push_back(std::make_shared<const DielectricContact>(std::move(name), std::move(m.dofs), std::move(m.points),
                                                                 m.geometry, stiffness));
     }

@@ -15,6 +15,12 @@ DielectricContact::DielectricContact(std::string name, std::vector<int> dofs, st
     }
 }
 
+DielectricContact::DielectricContact(std::string name, std::vector<int> dofs, std::vector<PadPoint> points,
+                                     PadGeometry geometry, const AdhesiveLayerLaw& law)
+    : DielectricContact(std::move(name), std::move(dofs), std::move(points), geometry, law.stiffness()) {
+    law_ = law;
+}
+
 double DielectricContact::penetration(const PadPoint& p, const double* q) const {
     return geometry_.sign * point_displacement(p, q) - (geometry_.gap - geometry_.dielectric_thickness);
 }
@@ -33,6 +39,14 @@ std::size_t DielectricContact::deepest(const double* q) const {
 }
 
 void DielectricContact::add_force(const ElementState& s, int mode, double* f) const {
+    if (law_) {
+        // The same law in both modes: it derives from one energy, with no memory of the contact.
+        for (const PadPoint& p : points_) {
+            const double q = law_->at(penetration(p, s.q)).force;
+            if (q != 0.0) add_point_load(p, -geometry_.sign * q * p.weight, f);
+        }
+        return;
+    }
     if (mode != 1) return;
     for (const PadPoint& p : points_) {
         const double d = penetration(p, s.q);
@@ -43,8 +57,15 @@ void DielectricContact::add_force(const ElementState& s, int mode, double* f) co
 }
 
 void DielectricContact::add_tangent(const ElementState& s, int mode, double* dfdq, double*) const {
-    if (mode != 1) return;
     const std::size_t n = dofs_.size();
+    if (law_) {
+        for (const PadPoint& p : points_) {
+            const double k = law_->at(penetration(p, s.q)).slope;
+            if (k != 0.0) add_point_stiffness(p, -k * p.weight, n, dfdq);
+        }
+        return;
+    }
+    if (mode != 1) return;
     for (const PadPoint& p : points_) {
         if (penetration(p, s.q) <= 0.0) continue;
         // d f_i / d q_j = -sign k (d d / d q_j) N_i w = -k N_i N_j w (sign^2 = 1).
@@ -53,8 +74,12 @@ void DielectricContact::add_tangent(const ElementState& s, int mode, double* dfd
 }
 
 double DielectricContact::stored_energy(const ElementState& s, int mode) const {
-    if (mode != 1) return 0.0;
     double e = 0.0;
+    if (law_) {
+        for (const PadPoint& p : points_) e += law_->at(penetration(p, s.q)).energy * p.weight;
+        return e;
+    }
+    if (mode != 1) return 0.0;
     for (const PadPoint& p : points_) {
         const double d = penetration(p, s.q);
         if (d > 0.0) e += 0.5 * stiffness_ * d * d * p.weight;
@@ -64,6 +89,9 @@ double DielectricContact::stored_energy(const ElementState& s, int mode) const {
 
 double DielectricContact::switching_function(const ElementState& s, int mode) const {
     const double d = penetration(points_[deepest(s.q)], s.q);
+    // Adhesive: closed until the last point leaves the attraction's range, so the episode ends where
+    // the beam is free (not at each sub-nm vibration of a held beam about the face).
+    if (law_ && mode == 1) return -(d + law_->range());
     return mode == 1 ? -d : d;
 }
 
@@ -80,6 +108,11 @@ ContactReading DielectricContact::contact_reading(const ElementState& s) const {
     ContactReading r;
     const PadPoint& p = points_[deepest(s.q)];
     r.penetration = penetration(p, s.q);
+    if (law_) {
+        for (const PadPoint& x : points_) r.force += law_->at(penetration(x, s.q)).force * x.weight;
+        r.point_velocity = point_displacement(p, s.v);
+        return r;
+    }
     for (const PadPoint& x : points_) {
         const double d = penetration(x, s.q);
         if (d > 0.0) r.force += stiffness_ * d * x.weight;

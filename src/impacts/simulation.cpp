@@ -104,7 +104,14 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
         for (std::size_t k = 0; k < c.supports.size(); ++k) {
             if (c.supports[k].adhesion != Adhesion::none) holds[k] = contact_hold(run.built.system, c, k);
         }
-        run.switching = switching_ledger(run.result, c.electrodes, run.built.omega1, holds);
+        // The electrodes' layers follow, in electrode order (dynamics/electrode_elements.hpp).
+        std::vector<std::optional<LayerHold>> layers(c.supports.size());
+        for (std::size_t k = 0; k < c.electrodes.size(); ++k) {
+            if (!(c.electrodes[k].dielectric_thickness > 0.0)) continue;
+            layers.emplace_back();
+            if (c.electrodes[k].work_of_adhesion) layers.back() = layer_hold(c, k);
+        }
+        run.switching = switching_ledger(run.result, c.electrodes, run.built.omega1, holds, layers);
     }
     return run;
 }

@@ -95,22 +95,83 @@ std::string newton_text(double f) {
     return buf;
 }
 
-// The first adhesive contact closed at the horizon that pulls (its force negative): adhesion holds it.
-std::optional<StuckBalance> stuck_balance(const TransientResult& r, const std::vector<std::optional<ContactHold>>& holds) {
+// A layer's force over the last period of mode 1 before the horizon (from `from` on, if later) [N]:
+// a beam held down still vibrates, and its layer's force swings about the holding force with it.
+double mean_force(const TimeHistory& h, const std::vector<double>& f, double from, double to) {
+    double sum = 0.0;
+    int n = 0;
+    for (std::size_t i = 0; i < f.size() && i < h.t.size(); ++i) {
+        if (h.t[i] < from || h.t[i] > to) continue;
+        sum += f[i];
+        ++n;
+    }
+    return n > 0 ? sum / n : f.back();
+}
+
+// The first adhesive contact closed at the horizon that pulls (its force negative; a layer's on
+// average over the last period, from `settled` on): adhesion holds it.
+std::optional<StuckBalance> stuck_balance(const TransientResult& r, const std::vector<std::optional<ContactHold>>& holds,
+                                          const std::vector<std::optional<LayerHold>>& layers, double settled) {
     for (const ContactEpisode& e : r.episodes) {
         const auto j = static_cast<std::size_t>(e.support);
-        if (!e.closed_at_end || j >= holds.size() || !holds[j] || j >= r.history.contact_force.size()) continue;
+        const bool support = j < holds.size() && holds[j];
+        const bool layer = j < layers.size() && layers[j];
+        if (!e.closed_at_end || !(support || layer) || j >= r.history.contact_force.size()) continue;
         const std::vector<double>& f = r.history.contact_force[j];
-        if (f.empty() || !(f.back() < 0.0)) continue;
-        return StuckBalance{e.support, holds[j]->restoring_force, holds[j]->pull_off_force, f.back()};
+        if (f.empty()) continue;
+        if (layer) {
+            const double mean = mean_force(r.history, f, settled, r.t_end);
+            if (!(mean < 0.0)) continue;
+            const LayerHold& h = *layers[j];
+            return StuckBalance{e.support, "electrodes[" + std::to_string(h.electrode) + "].dielectric",
+                                h.restoring_force, h.even_pull_off_force, mean, h};
+        }
+        if (!(f.back() < 0.0)) continue;
+        if (support) {
+            return StuckBalance{e.support, "supports[" + std::to_string(j) + "]", holds[j]->restoring_force,
+                                holds[j]->pull_off_force, f.back(), std::nullopt};
+        }
     }
     return std::nullopt;
+}
+
+std::string number_text(double v, const char* unit) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.4g %s", v, unit);
+    return buf;
+}
+
+// The peel balance of a layer that holds the beam (docs/adhesion.md §10).
+std::string layer_reason(const StuckBalance& b, double held_for) {
+    const LayerHold& h = *b.layer;
+    std::string why = b.contact;
+    why.append(" still holds ").append(us_text(held_for)).append(" after the voltage fell: ");
+    const double released = std::max(h.release_from, h.release_to);
+    why.append("held flat on its layer, the beam would release at most ");
+    why.append(std::isfinite(released) ? number_text(released, "J/m") : std::string("unbounded strain energy"));
+    why.append(" per unit length peeled at the span's edges, against the adhesion energy w w_e = ");
+    why.append(number_text(h.adhesion_energy, "J/m"));
+    if (h.sticks) {
+        char span[96];
+        std::snprintf(span, sizeof span, "x = %.4g to %.4g um", h.contact_from * 1e6, h.contact_to * 1e6);
+        why.append(released > h.adhesion_energy ? ", so it peels back and stays down over " : ", so it stays down over ");
+        why.append(span).append(" (the static balance sticks above w = ");
+        why.append(number_text(h.critical_work_of_adhesion, "J/m^2")).append("); its restoring force there is ");
+        why.append(newton_text(b.restoring_force)).append(", against the ").append(newton_text(b.pull_off_force));
+        why.append(" that contact would hold if lifted evenly");
+    } else {
+        why.append(", so by the static balance it peels off entirely (it sticks only above w = ");
+        why.append(number_text(h.critical_work_of_adhesion, "J/m^2")).append(")");
+    }
+    why.append("; the layer pulls with ").append(newton_text(-b.contact_force)).append(" on average over the last period");
+    return why;
 }
 
 }  // namespace
 
 SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1,
-                                 const std::vector<std::optional<ContactHold>>& holds) {
+                                 const std::vector<std::optional<ContactHold>>& holds,
+                                 const std::vector<std::optional<LayerHold>>& layers) {
     SwitchingLedger L;
     L.voltage = voltage_window(electrodes);
     const std::vector<ContactEpisode>& eps = r.episodes;
@@ -156,8 +217,11 @@ SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Ele
         L.state = "closed";
         if (fell) {
             L.reason = "the horizon ended " + us_text(horizon - *L.voltage.off) + " after the voltage fell";
-            L.stuck = stuck_balance(r, holds);
-            if (L.stuck) {
+            L.stuck = stuck_balance(r, holds, layers, std::max(*L.voltage.off, horizon - period));
+            if (L.stuck && L.stuck->layer) {
+                L.state = "stuck";
+                L.reason = layer_reason(*L.stuck, horizon - *L.voltage.off);
+            } else if (L.stuck) {
                 const StuckBalance& b = *L.stuck;
                 L.state = "stuck";
                 std::string why = "supports[";

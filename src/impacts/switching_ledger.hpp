@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "dynamics/contact_hold.hpp"
+#include "dynamics/layer_hold.hpp"
 #include "dynamics/transient_result.hpp"
 #include "model/case.hpp"
 
@@ -34,13 +35,19 @@ struct SwitchingContact {
     bool closed_at_end = false;
 };
 
-// Why a switch is stuck: an adhesive support still closed at the horizon after the voltage fell,
-// pulled on by the beam less hard than its pull-off force.
+// Why a switch is stuck: an adhesive contact still closed at the horizon after the voltage fell and
+// pulling: a support, pulled on by the beam less hard than its pull-off force, or an electrode's
+// adhesive layer, which the beam peels only where it releases more strain energy than w w_e.
 struct StuckBalance {
-    int support = 0;
-    double restoring_force = 0.0;  // the beam's static pull off the surface (ContactHold) [N]
-    double pull_off_force = 0.0;   // F_po [N]
-    double contact_force = 0.0;    // the contact's force at the horizon, negative while it pulls [N]
+    int support = 0;               // the contact's index (the supports', then the layers')
+    std::string contact;           // "supports[i]" or "electrodes[k].dielectric"
+    double restoring_force = 0.0;  // the beam's static pull off the surface (ContactHold, LayerHold) [N]
+    // F_po of a support; for a layer the pull of its stuck contact lifted evenly (LayerHold) [N].
+    double pull_off_force = 0.0;
+    // The contact's force at the horizon, negative while it pulls [N]; a layer's, averaged over the
+    // last period of mode 1 (the beam held down still vibrates).
+    double contact_force = 0.0;
+    std::optional<LayerHold> layer;  // a layer's peel balance
 };
 
 struct SwitchingLedger {
@@ -61,8 +68,10 @@ struct SwitchingLedger {
 
 // What the ledger needs besides the transient: the first circular frequency of the unsupported beam
 // (a contact must last one period 2 pi / omega1 to count as stable) [rad/s]; and, per contact (the
-// index of the time history's contact columns), the hold of an adhesive support (empty otherwise).
+// index of the time history's contact columns), the hold of an adhesive support and the peel balance
+// of an adhesive dielectric layer (empty otherwise).
 SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1,
-                                 const std::vector<std::optional<ContactHold>>& holds = {});
+                                 const std::vector<std::optional<ContactHold>>& holds = {},
+                                 const std::vector<std::optional<LayerHold>>& layers = {});
 
 }  // namespace vi

@@ -11,8 +11,8 @@ Electrode read_electrode(const toml::table& t, const std::string& path, tomlio::
                          std::vector<CaseProblem>& value_problems, std::optional<std::string>& table_file) {
     FieldReader f(t, path, at, log,
                   {"from", "to", "side", "gap", "dielectric_thickness", "dielectric_permittivity", "dielectric_modulus",
-                   "width", "fringing", "voltage", "waveform", "t_on", "rise", "hold", "fall", "level", "frequency", "phase",
-                   "bias", "table"});
+                   "work_of_adhesion", "adhesion_range", "width", "fringing", "voltage", "waveform", "t_on", "rise", "hold",
+                   "fall", "level", "frequency", "phase", "bias", "table"});
     Electrode e;
     if (auto v = f.quantity("from", Dimension::dimensionless, true)) e.from = *v;
     if (auto v = f.quantity("to", Dimension::dimensionless, true)) e.to = *v;
@@ -26,6 +26,15 @@ Electrode read_electrode(const toml::table& t, const std::string& path, tomlio::
     }
     if (f.has("dielectric_permittivity") && !f.has("dielectric_thickness")) {
         f.reject("dielectric_permittivity", "needs dielectric_thickness (the layer it belongs to)");
+    }
+    // The beam's adhesion to the layer (docs/adhesion.md §9); values are checked by check_case.
+    if (auto v = f.quantity("work_of_adhesion", Dimension::surface_energy, false)) e.work_of_adhesion = *v;
+    if (f.has("work_of_adhesion") && !f.has("dielectric_thickness")) {
+        f.reject("work_of_adhesion", "needs dielectric_thickness (the layer the beam adheres to)");
+    }
+    if (auto v = f.quantity("adhesion_range", Dimension::length, false)) e.adhesion_range = *v;
+    if (f.has("adhesion_range") && !f.has("work_of_adhesion")) {
+        f.reject("adhesion_range", "needs work_of_adhesion (the adhesion it is the range of)");
     }
     if (auto v = f.quantity("width", Dimension::length, false)) {
         e.width = *v;

@@ -129,6 +129,10 @@ struct Electrode {
     // Young's modulus E_d of that layer [Pa]: where the beam lands on it, the layer is an elastic
     // foundation of line stiffness E_d w_e / t_d (the default: silicon nitride, 250 GPa).
     double dielectric_modulus = 250e9;
+    // Adhesion of the beam to that layer: the work of adhesion w [J/m^2] (none when empty) and the
+    // range over which the attraction falls to 0 above the face [m] (docs/adhesion.md §9).
+    std::optional<double> work_of_adhesion;
+    double adhesion_range = kDefaultAdhesionRange;
     double width = 0.0;                    // effective electrode width w_e [m]; 0 = the beam's width
     Fringing fringing = Fringing::none;
     double voltage = 0.0;                  // amplitude [V]

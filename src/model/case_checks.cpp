@@ -210,6 +210,15 @@ void check_electrode(std::vector<CaseProblem>& out, const Case& c, std::size_t k
     }
     if (!std::isfinite(e.width) || e.width < 0.0) out.push_back({at + "width", "must be positive"});
     require_positive(out, at + "dielectric_modulus", e.dielectric_modulus);
+    if (e.work_of_adhesion) {
+        require_positive(out, at + "work_of_adhesion", *e.work_of_adhesion);
+        require_positive(out, at + "adhesion_range", e.adhesion_range);
+        if (c.solver.method == SolverSettings::Method::exact) {
+            out.push_back({"solver.method", "\"exact\" cannot take the adhesive dielectric contact of " + at +
+                                                "work_of_adhesion (its law is not one of the exact solver's linear "
+                                                "forms); use \"cvode\" or \"auto\""});
+        }
+    }
     check_fringing_range(out, c, k);
     require_finite(out, at + "voltage", e.voltage);
     if (built_from_shape(e.waveform.kind)) {

@@ -1,5 +1,6 @@
 #include "report/transient_output.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <string>
 
@@ -122,6 +123,16 @@ nlohmann::json switching_json(const SwitchingLedger& l) {
                  {"restoring_force_n", l.stuck->restoring_force},
                  {"pull_off_force_n", l.stuck->pull_off_force},
                  {"contact_force_n", l.stuck->contact_force}};
+        // A layer's peel balance (docs/adhesion.md §10); a support's object stays as it was.
+        if (const auto& h = l.stuck->layer) {
+            stuck["contact"] = l.stuck->contact;
+            stuck["adhesion_energy_j_m"] = h->adhesion_energy;
+            stuck["release_rate_j_m"] = std::max(h->release_from, h->release_to);
+            stuck["statically_stuck"] = h->sticks;
+            stuck["contact_from_m"] = h->sticks ? nlohmann::json(h->contact_from) : nlohmann::json(nullptr);
+            stuck["contact_to_m"] = h->sticks ? nlohmann::json(h->contact_to) : nlohmann::json(nullptr);
+            stuck["critical_work_of_adhesion_j_m2"] = h->critical_work_of_adhesion;
+        }
     }
     nlohmann::json j = {{"voltage_on_s", opt(l.voltage.on)},
             {"voltage_off_s", opt(l.voltage.off)},

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "dynamics/contact_hold.hpp"
+#include "dynamics/layer_hold.hpp"
 #include "fem/system.hpp"
 #include "model/case_checks.hpp"
 #include "model/input_error.hpp"
@@ -15,45 +16,11 @@ namespace vi {
 namespace {
 
 // The energy release rate -dU/ds [J/m] of the beam section of c over [0, s], clamped at x = 0 and
-// held at v = -gap, theta = 0 at x = s (flat on the substrate from there on), on `elements` elements:
-// M^2 / (2 E I), M the FE reaction moment at x = s. The span's bending moment jumps from M to 0 where
-// it meets the substrate, and moving that front by ds releases the strain energy M^2 / (2 E I) ds
-// (the J-integral of a peeled beam). A difference quotient of U would lose digits (the FE energy's
-// rounding grows with the mesh's condition and is divided by the step).
+// held at v = -gap, theta = 0 at x = s (flat on the substrate from there on), on `elements` elements
+// (dynamics/layer_hold.hpp). A difference quotient of U would lose digits (the FE energy's rounding
+// grows with the mesh's condition and is divided by the step).
 double release_rate(const Case& c, double s, double gap, int elements) {
-    Case span = c;
-    span.beam.length = s;
-    span.beam.elements = elements;
-    span.beam.left = EndCondition::clamped;
-    span.beam.right = EndCondition::free;
-    span.beam.residual_stress = 0.0;
-    span.beam.stretching = false;
-    span.supports.clear();
-    span.electrodes.clear();
-    span.loads.clear();
-    const System sys = build_system(span, SupportModel::none);
-    const Eigen::MatrixXd K(sys.K);
-    const int last = sys.mesh.node_count() - 1;
-    const int rv = sys.reduced_of[static_cast<std::size_t>(global_dof(last, 1))];
-    const int rt = sys.reduced_of[static_cast<std::size_t>(global_dof(last, 2))];
-    const Eigen::Index n = K.rows();
-    // The free DOFs are all but the held end's v and theta: K_ff q_f = -K_fp q_p.
-    std::vector<Eigen::Index> free;
-    for (Eigen::Index i = 0; i < n; ++i) {
-        if (i != rv && i != rt) free.push_back(i);
-    }
-    Eigen::MatrixXd Kff(free.size(), free.size());
-    Eigen::VectorXd rhs(free.size());
-    for (std::size_t a = 0; a < free.size(); ++a) {
-        rhs[static_cast<Eigen::Index>(a)] = K(free[a], rv) * gap;  // -K_fp q_p with q_p = (-gap, 0)
-        for (std::size_t b = 0; b < free.size(); ++b) Kff(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b)) = K(free[a], free[b]);
-    }
-    const Eigen::VectorXd qf = Kff.ldlt().solve(rhs);
-    Eigen::VectorXd q = Eigen::VectorXd::Zero(n);
-    for (std::size_t a = 0; a < free.size(); ++a) q[free[a]] = qf[static_cast<Eigen::Index>(a)];
-    q[rv] = -gap;
-    const double moment = K.row(rt).dot(q);
-    return moment * moment / (2.0 * sys.props.E * sys.props.I);
+    return peel_release_rate(c, EndCondition::clamped, s, gap, elements).release_rate;
 }
 
 std::string law_name(Adhesion a) { return a == Adhesion::dmt ? "DMT" : "JKR"; }
@@ -62,6 +29,20 @@ std::string law_name(Adhesion a) { return a == Adhesion::dmt ? "DMT" : "JKR"; }
 
 double detached_length_closed_form(double youngs_modulus, double thickness, double gap, double work_of_adhesion) {
     return std::pow(1.5 * youngs_modulus * thickness * thickness * thickness * gap * gap / work_of_adhesion, 0.25);
+}
+
+double detached_length_on_layer(double bending_stiffness, double gap, double adhesion_energy, double line_stiffness) {
+    const double d0 = std::sqrt(2.0 * adhesion_energy / line_stiffness);
+    const double beta = std::pow(line_stiffness / (4.0 * bending_stiffness), 0.25);
+    const double target = gap / d0;
+    // z^2 (z + 3) / (3 (z + 1)) rises from 0 with z and exceeds z^2 / 3, so sqrt(3 target) bounds the root.
+    const auto f = [](double z) { return z * z * (z + 3.0) / (3.0 * (z + 1.0)); };
+    double lo = 0.0, hi = std::sqrt(3.0 * target);
+    for (int it = 0; it < 200 && hi - lo > 1e-15 * hi; ++it) {
+        const double mid = 0.5 * (lo + hi);
+        (f(mid) < target ? lo : hi) = mid;
+    }
+    return 0.5 * (lo + hi) / beta;
 }
 
 double detached_length_fe(const Case& c, double gap, double work_of_adhesion, int elements) {
@@ -104,10 +85,13 @@ StictionResult stiction_check(const Case& c) {
         if (h.restoring_force > 0.0) st.critical_work_of_adhesion = s.work_of_adhesion * h.restoring_force / h.pull_off_force;
         r.supports.push_back(st);
     }
-    if (r.supports.empty()) {
-        throw InputError("supports: no support has adhesion (give one adhesion = \"dmt\" or \"jkr\" with its "
-                         "work_of_adhesion and contact_radius)");
+    r.layers = layer_stiction(c);
+    if (r.supports.empty() && r.layers.empty()) {
+        throw InputError("supports: no support has adhesion and no electrode's dielectric adheres (give a support "
+                         "adhesion = \"dmt\" or \"jkr\" with its work_of_adhesion and contact_radius, or an electrode "
+                         "with a dielectric_thickness its work_of_adhesion)");
     }
+    if (r.supports.empty()) return r;
     const bool cantilever = (c.beam.left == EndCondition::free) != (c.beam.right == EndCondition::free);
     if (!cantilever) {
         r.note = "the detached length is for a cantilever (one end free); this beam has none or two";

@@ -1,12 +1,14 @@
 #pragma once
-// The stiction check of a case: whether each adhesive support holds the unloaded beam down, and the
-// detached length of a long cantilever lying on its substrate (docs/adhesion.md §4-5).
+// The stiction check of a case: whether each adhesive support holds the unloaded beam down, the
+// detached length of a long cantilever lying on its substrate, and the peel balance of the beam on
+// each adhesive dielectric layer (docs/adhesion.md §4-5, §10).
 
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "model/case.hpp"
+#include "study/stiction/layer_stiction.hpp"
 
 namespace vi {
 
@@ -40,14 +42,25 @@ struct DetachedLength {
 struct StictionResult {
     std::vector<SupportStiction> supports;      // the adhesive ones, in case order
     std::vector<DetachedLength> detached;       // for a cantilever (one end free) only
-    std::string note;                           // why `detached` is empty, or ""
+    std::string note;                           // why `detached` is empty with adhesive supports, or ""
+    std::vector<LayerStiction> layers;          // the electrodes' adhesive layers, in case order
 };
 
-// Throws InputError when the case has no adhesive support.
+// Throws InputError when the case has neither an adhesive support nor an adhesive layer.
 StictionResult stiction_check(const Case& c);
 
 // l_d from the closed form (E the beam's effective modulus) [m].
 double detached_length_closed_form(double youngs_modulus, double thickness, double gap, double work_of_adhesion);
+
+// The same cantilever lying on a compliant adhesive layer, in the limit of the layer's law
+// (docs/adhesion.md §9) as its range vanishes: a Winkler foundation of line stiffness k [N/m^2] that
+// pulls the beam in to its rest d_0 = sqrt(2 W / k) and lets go at its face, W = w w_e [J/m]. The
+// free span s is the cubic from the clamp at the gap h [m] above the face down to the face; beyond
+// it the beam rests on the foundation, u = -d_0 + e^(-b x')(d_0 cos b x' + C sin b x') with
+// b = (k / (4 E I))^(1/4) (EI [N m^2]); matching u and its first three derivatives at the face gives
+// h / d_0 = z^2 (z + 3) / (3 (z + 1)), z = b s, solved by bisection [m]. As k grows,
+// s = l_d - 1 / b + O(1 / (b^2 l_d)).
+double detached_length_on_layer(double bending_stiffness, double gap, double adhesion_energy, double line_stiffness);
 
 // l_d from the FE model of the case's beam section: the span [0, s] clamped at the gap above the
 // substrate and flat on it at s (v = -h, theta = 0 there), a static solve on `elements` elements,
