@@ -47,6 +47,7 @@ extern "C" void on_stop_signal(int signal) {
         return;
     }
     if (now - first < kDuplicateWindowMs * 1000000LL) return;  // the same stop, delivered twice
+    if (vi::stop_signals_held()) return;  // a rank nudging mpirun: mpirun's SIGTERM, its SIGKILL follows
     if (g_in_commit.load()) {
         g_deferred.store(signal);
         return;

@@ -9,6 +9,7 @@ namespace {
 std::atomic<bool> g_stop{false};
 std::atomic<int> g_signal{0};
 std::atomic<bool> g_launcher{false};
+std::atomic<bool> g_holding{false};
 static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free,
               "a signal handler may only touch lock-free atomics");
 
@@ -34,11 +35,14 @@ int stop_signal() noexcept { return g_signal.load(); }
 
 void note_launcher_stop() noexcept { g_launcher.store(true); }
 bool launcher_stop() noexcept { return g_launcher.load(); }
+void hold_stop_signals(bool hold) noexcept { g_holding.store(hold); }
+bool stop_signals_held() noexcept { return g_holding.load(); }
 
 void clear_stop() noexcept {
     g_stop.store(false);
     g_signal.store(0);
     g_launcher.store(false);
+    g_holding.store(false);
 }
 
 ScopedTimeLimit::ScopedTimeLimit(double seconds, std::string setting)

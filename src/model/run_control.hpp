@@ -44,6 +44,11 @@ int stop_signal() noexcept;
 // the process); safe inside a signal handler. launcher_stop() tells.
 void note_launcher_stop() noexcept;
 bool launcher_stop() noexcept;
+// While a stopped rank nudges its launcher (sweep/mpi.cpp), a further stop signal must not end the
+// process: the launcher's SIGTERM comes just before it sleeps, and the nudges that go on are what cut
+// that sleep. The handlers of the stop signals ignore them while held; safe inside a signal handler.
+void hold_stop_signals(bool hold) noexcept;
+bool stop_signals_held() noexcept;
 // Clears the flag and the signal (start of a command, or of a test).
 void clear_stop() noexcept;
 

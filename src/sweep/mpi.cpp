@@ -79,20 +79,25 @@ bool parent_is_open_mpi_launcher() {
 }
 
 // Open MPI 4.1 ends a signalled job with SIGCONT to every rank, sleep(odls_base_sigkill_timeout =
-// 1 s), SIGTERM, the same sleep, SIGKILL; a signal (a rank's exit raises SIGCHLD) cuts a sleep short.
-// Ranks that all exit at one instant cut only the first sleep, so mpirun ended 1.3 s after its
-// signal in 4 runs of 20 (0.3 s in the others). A stopped rank therefore sends its launcher a SIGCHLD
-// while it still lives: that cuts the first sleep, mpirun's SIGTERM follows at once and ends the
-// rank (a second stop signal), and that exit cuts the second sleep. A signal may land on another of
-// mpirun's threads, so the nudge repeats every 10 ms, at most 150 times (past mpirun's first sleep,
-// after which its SIGTERM ends the rank); the caller then exits anyway. A spurious SIGCHLD only makes the launcher look for exited children.
+// 1 s), SIGTERM, the same sleep, SIGKILL; a signal (a rank's exit raises SIGCHLD) cuts a sleep short,
+// but only on the thread that sleeps. Ranks that all exit at one instant cut only the first sleep, so
+// mpirun ended 1.3 s after its signal in 4 runs of 20 (0.3 s in the others). A stopped rank therefore
+// sends its launcher a SIGCHLD every 10 ms while it still lives (a signal may land on another of
+// mpirun's threads, hence the repeats): that cuts the first sleep. mpirun's SIGTERM then follows,
+// but ending the rank at it left the second sleep to the one SIGCHLD of the rank's exit, which came
+// before the sleep began or landed on another thread in about one run of a hundred (1.3 s again).
+// So the stop signals are held while the rank nudges: the nudges go on, cut the second sleep too, and
+// mpirun's SIGKILL ends the rank. At most 150 nudges (1.5 s); the caller then exits anyway. A
+// spurious SIGCHLD only makes the launcher look for exited children.
 void nudge_launcher() {
     // Only a launcher that is ending the job sleeps; one whose ranks were signalled directly is not.
     if (!launcher_stop() || !parent_is_open_mpi_launcher()) return;
+    hold_stop_signals(true);
     for (int k = 0; k < 150; ++k) {
-        if (kill(getppid(), SIGCHLD) != 0) return;
+        if (kill(getppid(), SIGCHLD) != 0) break;
         std::this_thread::sleep_for(std::chrono::milliseconds(10));
     }
+    hold_stop_signals(false);
 }
 
 std::vector<char> encode(const FinishedPoint& p) {
