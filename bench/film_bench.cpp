@@ -36,6 +36,8 @@ void BM_SwitchTransientWithFilm(benchmark::State& state) {
     state.counters["bounces"] = r.switching ? r.switching->bounces : -1;
     state.counters["episodes"] = static_cast<double>(r.result.episodes.size());
     state.counters["steps"] = r.result.stats.steps;
+    state.counters["setups"] = r.result.stats.decompositions;
+    state.counters["events"] = r.result.stats.events;
 }
 BENCHMARK(BM_SwitchTransientWithFilm)
     ->Arg(0)

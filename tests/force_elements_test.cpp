@@ -215,6 +215,25 @@ TEST_P(ForceElementContract, EnergyAndPowersMatchTheForce) {
     }
 }
 
+// The fused call a solver's right-hand side makes gives the same force and power as the two calls.
+TEST_P(ForceElementContract, FusedForceAndPowerMatchTheSeparateCalls) {
+    const Named n = elements()[GetParam()];
+    const ForceElementPtr e = n.make();
+    const std::size_t m = e->dofs().size();
+    for (int mode = 0; mode < e->modes(); ++mode) {
+        for (const Sample& s : samples(m)) {
+            const ElementState st{s.t, s.q.data(), s.v.data(), nullptr};
+            const std::vector<double> f = force_at(*e, s, mode);
+            std::vector<double> fused(m, 0.0);
+            const double power = e->add_force_and_power(st, mode, fused.data());
+            const double separate = e->dissipated_power(st, mode);
+            EXPECT_NEAR(power, separate, 1e-13 * std::abs(separate) + 1e-300) << n.label << " mode " << mode;
+            for (std::size_t i = 0; i < m; ++i)
+                EXPECT_NEAR(fused[i], f[i], 1e-13 * std::abs(f[i]) + 1e-300) << n.label << " mode " << mode;
+        }
+    }
+}
+
 // The exact solver integrates the element through its linear form: the same force in every mode
 // (a unilateral spring-damper acts in its closed mode only). A squeeze film is not piecewise linear
 // and must say so (the exact solver then refuses it by name).

@@ -10,19 +10,27 @@
 #include <sundials/sundials_matrix.h>
 
 #include <Eigen/Dense>
+#include <memory>
 #include <vector>
 
 #include "dynamics/cvode_system.hpp"
 
 namespace vi::cvode_detail {
 
+// The elements' tangents at one state: d f_e / d q_e and d f_e / d v_e per element (row-major
+// |D_e| x |D_e|; empty or zero: no tangent).
+struct ElementTangents {
+    std::vector<Eigen::MatrixXd> dfdq, dfdv;
+};
+
 // The matrix a J + b I. J is filled by the Jacobian callback (a = 1, b = 0 then); CVODE forms
-// I - gamma J from it with SUNMatCopy and SUNMatScaleAddI.
+// I - gamma J from it with SUNMatCopy and SUNMatScaleAddI. The tangents are shared, never changed
+// once made: a copy costs a pointer, and the solver knows a Jacobian it has already projected.
 struct StructuredJacobian {
     const ModalSystem* system = nullptr;
     double a = 0.0;
     double b = 0.0;
-    std::vector<Eigen::MatrixXd> dfdq, dfdv;  // per element (empty or zero: no tangent)
+    std::shared_ptr<const ElementTangents> tangents;  // null: J has no element part
 };
 
 // A new SUNMatrix holding a StructuredJacobian of `system` (zero).

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -92,7 +93,9 @@ int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void* ud) {
 int jac_fn(realtype t, N_Vector y, N_Vector, SUNMatrix J, void* ud, N_Vector, N_Vector, N_Vector) {
     try {
         cvode_detail::StructuredJacobian& j = cvode_detail::structured_content(J);
-        static_cast<const ModalSystem*>(ud)->tangents(t, N_VGetArrayPointer(y), j.dfdq, j.dfdv);
+        auto tangents = std::make_shared<cvode_detail::ElementTangents>();
+        static_cast<const ModalSystem*>(ud)->tangents(t, N_VGetArrayPointer(y), tangents->dfdq, tangents->dfdv);
+        j.tangents = std::move(tangents);
         j.a = 1.0;
         j.b = 0.0;
         return 0;
@@ -230,7 +233,7 @@ void Driver::record(double t, const double* y) {
         h.contact_velocity[j].push_back(c.point_velocity);
         h.contact_force[j].push_back(modes_[static_cast<std::size_t>(e)] == sys_.element(e).contact_mode() ? c.force : 0.0);
     }
-    h.energy.push_back(sys_.energy(t, y, jump_));
+    if (o_.energy_history) h.energy.push_back(sys_.energy(t, y, jump_));
 }
 
 double Driver::handle_roots(double tret) {

@@ -43,7 +43,6 @@ ModalSystem::ModalSystem(const TransientProblem& p, ModalBasis basis)
         switch_root_.push_back(e->modes() > 1 ? root++ : -1);
         watch_root_.push_back(root);
         root += e->watch_count();
-        needs_acceleration_ = needs_acceleration_ || (e->watch_count() > 0 && e->watch_needs_acceleration());
     }
     roots_ = root + 2;
     modes_.assign(p.forces.size(), 0);
@@ -97,14 +96,9 @@ void ModalSystem::pick(int e, bool acc, Gathered& g) const {
     }
 }
 
-void ModalSystem::rhs(double t, const double* y, double* ydot) const {
-    const ConstVec eta(y, r_), vel(y + r_, r_);
-    Eigen::Map<Eigen::VectorXd>(ydot, r_) = vel;
-    Eigen::Map<Eigen::VectorXd> acc(ydot + r_, r_);
-    acc = -w2_.cwiseProduct(eta) - d_.cwiseProduct(vel);
-    const double te = element_time(t);
-    double dissipated = 0.0, work = 0.0;
-    std::vector<double> f;
+double ModalSystem::add_element_forces(double te, const double* y, Eigen::Map<Eigen::VectorXd>& acc,
+                                       double* work) const {
+    double dissipated = 0.0;
     gather_union(y, nullptr);
     uf_.setZero();
     for (int e = 0; e < elements(); ++e) {
@@ -112,14 +106,24 @@ void ModalSystem::rhs(double t, const double* y, double* ydot) const {
         pick(e, false, scratch_);
         const ElementState s{te, scratch_.q.data(), scratch_.v.data(), nullptr};
         const int mode = modes_[static_cast<std::size_t>(e)];
-        f.assign(scratch_.q.size(), 0.0);
-        el.add_force(s, mode, f.data());
+        force_.assign(scratch_.q.size(), 0.0);
+        dissipated += el.add_force_and_power(s, mode, force_.data());
         const std::vector<int>& at = local_[static_cast<std::size_t>(e)];
-        for (std::size_t k = 0; k < at.size(); ++k) uf_[at[k]] += f[k];
-        dissipated += el.dissipated_power(s, mode);
-        work += el.input_power(s, mode);
+        for (std::size_t k = 0; k < at.size(); ++k) uf_[at[k]] += force_[k];
+        if (work) *work += el.input_power(s, mode);
     }
     acc.noalias() += union_rows_.transpose() * uf_;
+    return dissipated;
+}
+
+void ModalSystem::rhs(double t, const double* y, double* ydot) const {
+    const ConstVec eta(y, r_), vel(y + r_, r_);
+    Eigen::Map<Eigen::VectorXd>(ydot, r_) = vel;
+    Eigen::Map<Eigen::VectorXd> acc(ydot + r_, r_);
+    acc = -w2_.cwiseProduct(eta) - d_.cwiseProduct(vel);
+    const double te = element_time(t);
+    double work = 0.0;
+    const double dissipated = add_element_forces(te, y, acc, &work);
     ydot[rayleigh_index()] = vel.dot(d_.cwiseProduct(vel));
     ydot[dissipation_index()] = dissipated;
     ydot[work_index()] = work;
@@ -136,21 +140,36 @@ void ModalSystem::rhs(double t, const double* y, double* ydot) const {
 }
 
 void ModalSystem::acceleration(double t, const double* y, Eigen::VectorXd& acc) const {
-    std::vector<double> ydot(static_cast<std::size_t>(size()));
-    rhs(t, y, ydot.data());
-    acc = ConstVec(ydot.data() + r_, r_);
+    acc.resize(r_);
+    acc = -w2_.cwiseProduct(ConstVec(y, r_)) - d_.cwiseProduct(ConstVec(y + r_, r_));
+    Eigen::Map<Eigen::VectorXd> out(acc.data(), r_);
+    static_cast<void>(add_element_forces(element_time(t), y, out, nullptr));
+}
+
+bool ModalSystem::watches_need_acceleration() const {
+    for (int e = 0; e < elements(); ++e) {
+        const ForceElement& el = element(e);
+        if (el.watch_count() > 0 && el.watch_needs_acceleration(modes_[static_cast<std::size_t>(e)])) return true;
+    }
+    return false;
 }
 
 void ModalSystem::root_functions(double t, const double* y, double* g) const {
     const double te = element_time(t);
-    if (needs_acceleration_) acceleration(t, y, acc_);
-    gather_union(y, needs_acceleration_ ? acc_.data() : nullptr);
+    // acceleration() leaves q and v on the union at y; only a is still to project.
+    const bool need = watches_need_acceleration();
+    if (need) {
+        acceleration(t, y, acc_);
+        ua_.noalias() = union_rows_ * acc_;
+    } else {
+        gather_union(y, nullptr);
+    }
     for (int e = 0; e < elements(); ++e) {
         const ForceElement& el = element(e);
         const std::size_t ue = static_cast<std::size_t>(e);
         if (switch_root_[ue] < 0 && el.watch_count() == 0) continue;
-        pick(e, needs_acceleration_, scratch_);
-        const ElementState s{te, scratch_.q.data(), scratch_.v.data(), needs_acceleration_ ? scratch_.a.data() : nullptr};
+        pick(e, need, scratch_);
+        const ElementState s{te, scratch_.q.data(), scratch_.v.data(), need ? scratch_.a.data() : nullptr};
         if (switch_root_[ue] >= 0) g[switch_root_[ue]] = el.switching_function(s, modes_[ue]);
         if (el.watch_count() > 0) el.watch_functions(s, modes_[ue], g + watch_root_[ue]);
     }

@@ -102,7 +102,13 @@ private:
     void gather_union(const double* y, const double* acc) const;
     void pick(int e, bool acc, Gathered& g) const;
     [[nodiscard]] double element_time(double t) const;
+    // The modal accelerations at y without the ledger's integrals.
     void acceleration(double t, const double* y, Eigen::VectorXd& acc) const;
+    // Adds the elements' generalised forces at y to acc and returns the power they dissipate (and
+    // adds the power they take in to *work unless null); leaves q and v on the union at y.
+    double add_element_forces(double te, const double* y, Eigen::Map<Eigen::VectorXd>& acc, double* work) const;
+    // Whether a watch function needs the accelerations in the elements' current modes.
+    [[nodiscard]] bool watches_need_acceleration() const;
 
     const TransientProblem& p_;
     ModalBasis basis_;
@@ -116,11 +122,11 @@ private:
     std::vector<int> modes_;
     std::vector<int> switch_root_, watch_root_;
     int roots_ = 0;
-    bool needs_acceleration_ = false;
     double t_limit_ = 0.0;
     mutable Gathered scratch_;
     mutable Eigen::VectorXd uq_, uv_, ua_, uf_;  // on the union: q, v, a, summed element forces
     mutable Eigen::VectorXd acc_;
+    mutable std::vector<double> force_;          // one element's force, in the order of its DOFs
 };
 
 // Throws std::invalid_argument when p is inconsistent (sizes, DOF indices, horizon).

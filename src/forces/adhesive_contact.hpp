@@ -48,7 +48,7 @@ public:
     [[nodiscard]] int watch_count() const override { return 3; }
     void watch_functions(const ElementState& s, int mode, double* g) const override;
     [[nodiscard]] std::vector<int> watch_directions() const override { return {-1, -1, 0}; }
-    [[nodiscard]] bool watch_needs_acceleration() const override { return true; }
+    [[nodiscard]] bool watch_needs_acceleration(int mode) const override { return mode == 1; }
 
     [[nodiscard]] bool is_contact() const override { return true; }
     [[nodiscard]] int contact_mode() const override { return 1; }

@@ -8,30 +8,6 @@
 
 namespace vi {
 
-double point_displacement(const PadPoint& p, const double* q) {
-    double v = 0.0;
-    for (int i = 0; i < 4; ++i) {
-        if (p.local[i] >= 0) v += p.shape[i] * q[p.local[i]];
-    }
-    return v;
-}
-
-void add_point_load(const PadPoint& p, double load, double* f) {
-    for (int i = 0; i < 4; ++i) {
-        if (p.local[i] >= 0) f[p.local[i]] += load * p.shape[i];
-    }
-}
-
-void add_point_stiffness(const PadPoint& p, double k, std::size_t n, double* dfdq) {
-    for (int i = 0; i < 4; ++i) {
-        if (p.local[i] < 0) continue;
-        for (int j = 0; j < 4; ++j) {
-            if (p.local[j] < 0) continue;
-            dfdq[static_cast<std::size_t>(p.local[i]) * n + static_cast<std::size_t>(p.local[j])] += k * p.shape[i] * p.shape[j];
-        }
-    }
-}
-
 void add_fringing(const PadGeometry& g, double gap, LineCapacitance& out) {
     // eps0 (0.77 + 1.06 (w/g)^(1/4) + 1.06 (t/g)^(1/2)) and its derivatives in g.
     const double a = 1.06 * std::pow(g.width, 0.25), b = 1.06 * std::sqrt(g.beam_thickness);

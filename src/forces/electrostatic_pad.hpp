@@ -23,12 +23,31 @@ struct PadPoint {
     std::array<double, 4> shape{};
 };
 
-// v at the point from the DOFs q (in the order the point's local indices refer to) [m].
-double point_displacement(const PadPoint& p, const double* q);
+// v at the point from the DOFs q (in the order the point's local indices refer to) [m]. Inline,
+// as the two below: distributed elements call them at every quadrature point of every evaluation.
+inline double point_displacement(const PadPoint& p, const double* q) {
+    double v = 0.0;
+    for (int i = 0; i < 4; ++i) {
+        if (p.local[i] >= 0) v += p.shape[i] * q[p.local[i]];
+    }
+    return v;
+}
 // Adds a transverse load [N] at the point to the generalised forces f (its shape functions).
-void add_point_load(const PadPoint& p, double load, double* f);
+inline void add_point_load(const PadPoint& p, double load, double* f) {
+    for (int i = 0; i < 4; ++i) {
+        if (p.local[i] >= 0) f[p.local[i]] += load * p.shape[i];
+    }
+}
 // Adds k N_i N_j [N/m] at the point to the row-major n x n tangent dfdq.
-void add_point_stiffness(const PadPoint& p, double k, std::size_t n, double* dfdq);
+inline void add_point_stiffness(const PadPoint& p, double k, std::size_t n, double* dfdq) {
+    for (int i = 0; i < 4; ++i) {
+        if (p.local[i] < 0) continue;
+        for (int j = 0; j < 4; ++j) {
+            if (p.local[j] < 0) continue;
+            dfdq[static_cast<std::size_t>(p.local[i]) * n + static_cast<std::size_t>(p.local[j])] += k * p.shape[i] * p.shape[j];
+        }
+    }
+}
 
 // The electrode as the force sees it. Electrical gap at a point: g_e = (gap - t_d) - sign v + t_d /
 // eps_r, with sign = +1 for an electrode above (it pulls +v), -1 below.

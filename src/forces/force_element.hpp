@@ -67,6 +67,13 @@ public:
     [[nodiscard]] virtual StoredEnergyKind stored_energy_kind() const { return StoredEnergyKind::contact_spring; }
     // Power it dissipates [W], >= 0 (a contact damper's Cc (dd/dt)^2).
     [[nodiscard]] virtual double dissipated_power(const ElementState& s, int mode) const = 0;
+    // add_force and dissipated_power in one call, returning the power: a solver's right-hand side
+    // needs both at every evaluation, and an element whose power shares costly work with its force
+    // (a squeeze film's gap law at every quadrature point) overrides it to do that work once.
+    virtual double add_force_and_power(const ElementState& s, int mode, double* f) const {
+        add_force(s, mode, f);
+        return dissipated_power(s, mode);
+    }
     // Power an external source delivers through it [W] (a load's Q(t) v).
     [[nodiscard]] virtual double input_power(const ElementState& s, int mode) const = 0;
 
@@ -85,8 +92,10 @@ public:
     [[nodiscard]] virtual int watch_count() const { return 0; }
     virtual void watch_functions(const ElementState& /*s*/, int /*mode*/, double* /*g*/) const {}
     [[nodiscard]] virtual std::vector<int> watch_directions() const { return {}; }
-    // Whether a watch function needs the accelerations (ElementState::a).
-    [[nodiscard]] virtual bool watch_needs_acceleration() const { return false; }
+    // Whether a watch function in `mode` needs the accelerations (ElementState::a): a solver then
+    // evaluates its whole right-hand side for the watch, so an element asks only in the modes that
+    // use them (a contact's peak-force watch, when closed).
+    [[nodiscard]] virtual bool watch_needs_acceleration(int /*mode*/) const { return false; }
 
     // Generalised load patterns over dofs() whose static responses a reduced-order model adds to its
     // modes (modal truncation augmentation, docs/model.md §13): by default a unit force at each DOF;

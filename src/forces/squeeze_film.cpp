@@ -73,11 +73,19 @@ double SqueezeFilm::local_gap(const PadPoint& p, const double* q) const {
     throw std::domain_error(message);
 }
 
-void SqueezeFilm::add_force(const ElementState& s, int, double* f) const {
+void SqueezeFilm::add_force(const ElementState& s, int mode, double* f) const {
+    static_cast<void>(add_force_and_power(s, mode, f));
+}
+
+double SqueezeFilm::add_force_and_power(const ElementState& s, int, double* f) const {
+    double power = 0.0;
     for (const PadPoint& p : points_) {
         const double c = film_coefficient(gas_, geometry_.width, local_gap(p, s.q)).c;
-        add_point_load(p, -c * point_displacement(p, s.v) * p.weight, f);
+        const double rate = point_displacement(p, s.v);
+        add_point_load(p, -c * rate * p.weight, f);
+        power += c * rate * rate * p.weight;
     }
+    return power;
 }
 
 void SqueezeFilm::add_tangent(const ElementState& s, int, double* dfdq, double* dfdv) const {

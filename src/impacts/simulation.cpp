@@ -40,6 +40,7 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
     co.max_steps = c.solver.max_steps;
     co.max_events = c.solver.max_events;
     co.reduced_modes = c.solver.reduced_modes;
+    co.energy_history = o.energy;
     if (!use_exact(c, p)) {
         run.result = solve_cvode(p, co);
     } else {

@@ -23,7 +23,7 @@ struct SimulationRun {
 // What to compute besides the impact characteristics.
 struct SimulationOptions {
     bool history = true;  // sampled time history
-    bool energy = true;   // energy ledger (exact solver: O(n^2) per sample and per piece)
+    bool energy = true;   // energy ledger at every sample (exact solver: O(n^2) per sample and per piece)
 };
 
 // Runs the case's transient. Throws InputError when the case cannot run (no horizon, a horizon too
