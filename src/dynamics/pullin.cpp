@@ -283,8 +283,8 @@ void add_frequencies(const Model& m, const std::vector<State>& open, double top,
         PullinFrequencies f;
         f.voltage = std::sqrt(std::max(best->lambda, 0.0));
         try {
-            const ModeSet modes = lowest_modes(a, m.M, o.frequency_count);
-            for (Index k = 0; k < modes.omega.size(); ++k) f.frequency_hz.push_back(modes.omega[k] / (2.0 * std::numbers::pi));
+            const Eigen::VectorXd omega = lowest_frequencies(a, m.M, o.frequency_count);
+            for (Index k = 0; k < omega.size(); ++k) f.frequency_hz.push_back(omega[k] / (2.0 * std::numbers::pi));
         } catch (const std::runtime_error&) {
             continue;  // at the fold itself the tangent is singular: no frequencies there
         }

@@ -21,6 +21,10 @@ inline constexpr int kDenseEigenLimit = 200;
 // std::runtime_error when the solver does not converge or K is not positive definite.
 ModeSet lowest_modes(const SparseMatrix& K, const SparseMatrix& M, int count);
 
+// The lowest count circular frequencies [rad/s] of (K, M) alone, as lowest_modes gives them, for a
+// caller that needs no shapes (the frequencies under bias of `pullin`).
+Eigen::VectorXd lowest_frequencies(const SparseMatrix& K, const SparseMatrix& M, int count);
+
 // Every mode of (K, M) by a dense solver, whatever the size.
 ModeSet all_modes_dense(const SparseMatrix& K, const SparseMatrix& M);
 
