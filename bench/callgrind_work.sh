@@ -1,0 +1,22 @@
+#!/usr/bin/env bash
+# The work (instructions counted by callgrind inside solve_cvode, a figure the machine's load does
+# not change) of the two switching transients whose speed docs/squeeze-film.md §6 and
+# docs/electrostatics.md §9 compare between builds:
+#   film: the cantilever switch in air at 1 kPa, 50 us, m = 50, full model (cantilever_switch_air.toml);
+#   red8: the cantilever switch at 1.2 V_PI (70.0989 V), reduced_modes = 8, rtol = 1e-6.
+# Both through `vibroimpact simulate` (history and energy on). Run it once per build to compare:
+#   bash bench/callgrind_work.sh [VIBROIMPACT]      (needs valgrind; about two minutes)
+set -euo pipefail
+bin=$(realpath "${1:-build/apps/vibroimpact}")
+examples=$(dirname "$(realpath "$0")")/../examples/switch
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+sed -e 's/^pressure = .*/pressure = "1000 Pa"/' "$examples/cantilever_switch_air.toml" > film.toml
+sed -e 's/^rtol = 1e-8/rtol = 1e-6\nreduced_modes = 8/' -e 's/^voltage = .*/voltage = "70.0989 V"/' \
+    "$examples/cantilever_switch.toml" > red8.toml
+for c in film red8; do
+  valgrind --tool=callgrind --callgrind-out-file="$c.out" --toggle-collect='vi::solve_cvode*' \
+      "$bin" simulate "$c.toml" > /dev/null 2> "$c.err"
+  echo "$c $(grep -o 'Collected : [0-9]*' "$c.err" | grep -o '[0-9]*$') instructions"
+done
