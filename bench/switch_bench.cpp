@@ -37,6 +37,7 @@ void BM_Pullin(benchmark::State& state) {
     state.counters["V_PI"] = r.pullin ? r.pullin->voltage : 0.0;
     state.counters["points"] = static_cast<double>(r.branch.size());
     state.counters["newton"] = r.newton_iterations;
+    state.counters["lu_fallbacks"] = r.lu_fallbacks;
 }
 BENCHMARK(BM_Pullin)
     ->Args({20, 16})

@@ -1,7 +1,5 @@
 #include "dynamics/pullin.hpp"
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseLU>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +8,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "dynamics/bordered_solver.hpp"
 #include "dynamics/electrode_elements.hpp"
 #include "dynamics/problem_builder.hpp"
 #include "dynamics/static_solution.hpp"
@@ -45,13 +44,21 @@ std::vector<double> gather(const ForceElement& e, const Eigen::VectorXd& q) {
     return out;
 }
 
-// Adds scale x the element's static force to f and -scale x its tangent to jt (the Jacobian of
-// K q - F). Returns false when the element cannot be evaluated there (the beam past an electrode).
+// Adds scale x the element's static force to f (and the force itself to unscaled if given) and
+// -scale x its tangent to jt (the Jacobian of K q - F). Returns false when the element cannot be
+// evaluated there (the beam past an electrode).
 bool add_element(const ForceElement& e, int mode, const Eigen::VectorXd& q, double scale, Eigen::VectorXd& f,
-                 std::vector<Triplet>* jt) {
+                 std::vector<Triplet>* jt, Eigen::VectorXd* unscaled = nullptr) {
     const std::size_t m = e.dofs().size();
-    const std::vector<double> qe = gather(e, q), ve(m, 0.0);
-    std::vector<double> fe(m, 0.0), dq(jt ? m * m : 0, 0.0), dv(jt ? m * m : 0, 0.0);
+    // An electrode's tangent is a dense block over the DOFs it faces (10^4 entries at m = 50):
+    // buffers kept per thread spare an allocation and its page faults at every Newton step.
+    thread_local std::vector<double> qe, ve, fe, dq, dv;
+    qe.resize(m);
+    for (std::size_t i = 0; i < m; ++i) qe[i] = q[e.dofs()[i]];
+    ve.assign(m, 0.0);
+    fe.assign(m, 0.0);
+    dq.assign(jt ? m * m : 0, 0.0);
+    dv.assign(jt ? m * m : 0, 0.0);
     const ElementState s{0.0, qe.data(), ve.data(), nullptr};
     try {
         e.add_force(s, mode, fe.data());
@@ -61,6 +68,7 @@ bool add_element(const ForceElement& e, int mode, const Eigen::VectorXd& q, doub
     }
     for (std::size_t i = 0; i < m; ++i) {
         f[e.dofs()[i]] += scale * fe[i];
+        if (unscaled) (*unscaled)[e.dofs()[i]] += fe[i];
         if (!jt) continue;
         for (std::size_t j = 0; j < m; ++j) {
             if (dq[i * m + j] != 0.0) jt->emplace_back(e.dofs()[i], e.dofs()[j], -scale * dq[i * m + j]);
@@ -74,10 +82,13 @@ int contact_mode_at(const ForceElement& e, const Eigen::VectorXd& q) {
     return e.static_mode(ElementState{0.0, qe.data(), ve.data(), nullptr});
 }
 
-// F_contacts + lambda F_e at the state and the tangent A = K - dF/dq; false where undefined.
-bool evaluate(const Model& m, const State& s, Eigen::VectorXd& force, SparseMatrix* tangent) {
+// F_contacts + lambda F_e at the state, the tangent A = K - dF/dq and F_e, the electrodes' force
+// at 1 V; false where undefined.
+bool evaluate(const Model& m, const State& s, Eigen::VectorXd& force, SparseMatrix* tangent,
+              Eigen::VectorXd* pad_force = nullptr) {
     const Index n = m.K.rows();
     force = Eigen::VectorXd::Zero(n);
+    if (pad_force) *pad_force = Eigen::VectorXd::Zero(n);
     std::vector<Triplet> jt;
     std::vector<Triplet>* pj = tangent ? &jt : nullptr;
     for (std::size_t k = 0; k < m.contacts.size(); ++k) {
@@ -87,7 +98,7 @@ bool evaluate(const Model& m, const State& s, Eigen::VectorXd& force, SparseMatr
         if (!add_element(*e, 0, s.q, 1.0, force, pj)) return false;
     }
     for (const PadPtr& p : m.pads) {
-        if (!add_element(*p, 0, s.q, s.lambda, force, pj)) return false;
+        if (!add_element(*p, 0, s.q, s.lambda, force, pj, pad_force)) return false;
     }
     if (tangent) {
         SparseMatrix d(n, n);
@@ -97,48 +108,25 @@ bool evaluate(const Model& m, const State& s, Eigen::VectorXd& force, SparseMatr
     return true;
 }
 
-// The bordered matrix [A -F_e; r^T 0].
-SparseMatrix bordered(const Model& m, const State& s, const SparseMatrix& a) {
-    const Index n = a.rows();
-    Eigen::VectorXd fe = Eigen::VectorXd::Zero(n);
-    for (const PadPtr& p : m.pads) add_element(*p, 0, s.q, 1.0, fe, nullptr);
-    std::vector<Triplet> t;
-    t.reserve(static_cast<std::size_t>(a.nonZeros() + 2 * n));
-    for (Index k = 0; k < a.outerSize(); ++k) {
-        for (SparseMatrix::InnerIterator it(a, k); it; ++it) t.emplace_back(it.row(), it.col(), it.value());
-    }
-    for (Index i = 0; i < n; ++i) {
-        if (fe[i] != 0.0) t.emplace_back(i, n, -fe[i]);
-        if (m.row[i] != 0.0) t.emplace_back(n, i, m.row[i]);
-    }
-    SparseMatrix j(n + 1, n + 1);
-    j.setFromTriplets(t.begin(), t.end());
-    return j;
-}
-
 // Newton's method at travel tau from the guess s (modes re-decided after every step unless fixed).
 // Returns false when it does not converge within the model's iteration bound.
-bool solve_at(const Model& m, double tau, State& s, bool fix_modes, int& iterations) {
+bool solve_at(const Model& m, double tau, State& s, bool fix_modes, int& iterations, BorderedSolver& ls) {
     s.tau = tau;
-    const Index n = m.K.rows();
     const double q_scale = 1e-3 * m.air_gap;
     double previous_step = std::numeric_limits<double>::infinity();
     for (int it = 0; it < m.max_iterations; ++it) {
         check_run();
         ++iterations;
-        Eigen::VectorXd force;
+        Eigen::VectorXd force, fe;
         SparseMatrix a;
-        if (!evaluate(m, s, force, &a)) return false;
-        Eigen::VectorXd rhs(n + 1);
-        rhs.head(n) = -(m.K * s.q - force);
-        rhs[n] = -(m.row.dot(s.q) - tau);
-        Eigen::SparseLU<SparseMatrix> lu;
-        lu.compute(bordered(m, s, a));
-        if (lu.info() != Eigen::Success) return false;
-        const Eigen::VectorXd d = lu.solve(rhs);
-        if (!d.allFinite()) return false;
-        s.q += d.head(n);
-        s.lambda += d[n];
+        if (!evaluate(m, s, force, &a, &fe)) return false;
+        const Eigen::VectorXd rhs = -(m.K * s.q - force);
+        if (!ls.factorize(std::move(a), -fe, m.row)) return false;
+        Eigen::VectorXd dq;
+        double dlambda = 0.0;
+        if (!ls.solve(rhs, tau - m.row.dot(s.q), dq, dlambda)) return false;
+        s.q += dq;
+        s.lambda += dlambda;
         bool changed = false;
         if (!fix_modes) {
             for (std::size_t k = 0; k < m.contacts.size(); ++k) {
@@ -151,8 +139,7 @@ bool solve_at(const Model& m, double tau, State& s, bool fix_modes, int& iterati
         // about 1e-9 at m = 50): a step that small, or a step in Newton's quadratic regime (small,
         // and contracting fast) after which the error left, about step^3 / previous^2, is that small.
         const double q_size = std::max(s.q.cwiseAbs().maxCoeff(), q_scale);
-        const double step = std::max(d.head(n).cwiseAbs().maxCoeff() / q_size,
-                                     std::abs(d[n]) / (std::abs(s.lambda) + 1e-300));
+        const double step = std::max(dq.cwiseAbs().maxCoeff() / q_size, std::abs(dlambda) / (std::abs(s.lambda) + 1e-300));
         const bool quadratic = step <= 1e-5 && step <= 1e-2 * previous_step &&
                                step * step * step <= 1e-9 * previous_step * previous_step;
         if (!changed && (step <= 1e-9 || quadratic)) return true;
@@ -162,28 +149,26 @@ bool solve_at(const Model& m, double tau, State& s, bool fix_modes, int& iterati
 }
 
 // d lambda / d tau at a converged state: the bordered system with right-hand side (0, 1).
-double lambda_slope(const Model& m, const State& s) {
-    Eigen::VectorXd force;
+double lambda_slope(const Model& m, const State& s, BorderedSolver& ls) {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    Eigen::VectorXd force, fe;
     SparseMatrix a;
-    if (!evaluate(m, s, force, &a)) return std::numeric_limits<double>::quiet_NaN();
-    Eigen::SparseLU<SparseMatrix> lu;
-    lu.compute(bordered(m, s, a));
-    if (lu.info() != Eigen::Success) return std::numeric_limits<double>::quiet_NaN();
-    Eigen::VectorXd rhs = Eigen::VectorXd::Zero(a.rows() + 1);
-    rhs[a.rows()] = 1.0;
-    return lu.solve(rhs)[a.rows()];
+    if (!evaluate(m, s, force, &a, &fe)) return nan;
+    const Index n = a.rows();
+    if (!ls.factorize(std::move(a), -fe, m.row)) return nan;
+    Eigen::VectorXd dq;
+    double slope = nan;
+    return ls.solve(Eigen::VectorXd::Zero(n), 1.0, dq, slope) ? slope : nan;
 }
 
-bool is_stable(const Model& m, const State& s) {
+bool is_stable(const Model& m, const State& s, BorderedSolver& ls) {
     Eigen::VectorXd force;
     SparseMatrix a;
     if (!evaluate(m, s, force, &a)) return false;
-    Eigen::SimplicialLDLT<SparseMatrix> ldlt(a);
-    if (ldlt.info() != Eigen::Success) return false;
-    return (ldlt.vectorD().array() > 0.0).all();
+    return ls.positive_definite(a);
 }
 
-PullinPoint describe(const Model& m, const State& s) {
+PullinPoint describe(const Model& m, const State& s, BorderedSolver& ls) {
     PullinPoint p;
     p.travel = s.tau;
     p.voltage = std::sqrt(std::max(s.lambda, 0.0));
@@ -198,7 +183,7 @@ PullinPoint describe(const Model& m, const State& s) {
         const std::vector<double> qe = gather(*m.contacts[k], s.q), ve(qe.size(), 0.0);
         p.contact_force += m.contacts[k]->contact_reading(ElementState{0.0, qe.data(), ve.data(), nullptr}).force;
     }
-    p.stable = is_stable(m, s);
+    p.stable = is_stable(m, s, ls);
     return p;
 }
 
@@ -235,7 +220,8 @@ std::string text(const char* format, double a, double b = 0.0) {
 constexpr double kFoldWidth = 1e-9;
 
 template <class Value>
-State locate(const Model& m, State a, State b, bool fix_modes, int& iterations, double width, Value value) {
+State locate(const Model& m, State a, State b, bool fix_modes, int& iterations, BorderedSolver& ls, double width,
+             Value value) {
     double fa = value(a), fb = value(b);
     int kept = 0;  // which end the last two trials left in place (-1 a, +1 b): Illinois halves its value
     for (int it = 0; it < 80 && std::abs(b.tau - a.tau) > width * std::abs(b.tau); ++it) {
@@ -245,9 +231,9 @@ State locate(const Model& m, State a, State b, bool fix_modes, int& iterations, 
             if (secant > std::min(a.tau, b.tau) && secant < std::max(a.tau, b.tau)) t = secant;
         }
         State mid = std::abs(t - a.tau) <= std::abs(t - b.tau) ? a : b;
-        if (!solve_at(m, t, mid, fix_modes, iterations)) {
+        if (!solve_at(m, t, mid, fix_modes, iterations, ls)) {
             mid = a;
-            if (!solve_at(m, 0.5 * (a.tau + b.tau), mid, fix_modes, iterations)) break;
+            if (!solve_at(m, 0.5 * (a.tau + b.tau), mid, fix_modes, iterations, ls)) break;
         }
         const double fm = value(mid);
         if (fm > 0.0) {
@@ -332,6 +318,7 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
     PullinResult r;
     r.watched_x = m.watched_x;
     const Index n = m.K.rows();
+    BorderedSolver ls;
 
     State s;
     s.q = Eigen::VectorXd::Zero(n);
@@ -346,7 +333,7 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
     }
     std::vector<State> open;  // the open branch, for frequencies and the fold
     open.push_back(s);
-    r.branch.push_back(describe(m, s));
+    r.branch.push_back(describe(m, s, ls));
 
     const double full = o.steps > 0 ? m.air_gap / o.steps : m.air_gap / 200;
     double step = full;
@@ -367,7 +354,7 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
             trial.q = s.q + ratio * (s.q - previous.q);
             trial.lambda = s.lambda + ratio * (s.lambda - previous.lambda);
         }
-        if (!solve_at(m, tau, trial, false, r.newton_iterations)) {
+        if (!solve_at(m, tau, trial, false, r.newton_iterations, ls)) {
             step *= 0.5;
             if (step < full * 1e-9) {
                 r.end = text("continuation lost at V = %.6g V (mean travel %.4g um): no equilibrium found by the smallest step",
@@ -386,14 +373,14 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
             // branch's deepest penetration crosses zero.
             State a = previous, b = s;
             b.modes = a.modes;
-            if (!solve_at(m, b.tau, b, true, r.newton_iterations)) b = s;
+            if (!solve_at(m, b.tau, b, true, r.newton_iterations, ls)) b = s;
             // The voltage is smooth in the travel there: a bracket at roundoff gives it at roundoff.
-            const State td = locate(m, a, b, true, r.newton_iterations, 4e-16,
+            const State td = locate(m, a, b, true, r.newton_iterations, ls, 4e-16,
                                     [&](const State& x) { return deepest(m, x); });
-            r.touchdown = describe(m, td);
+            r.touchdown = describe(m, td, ls);
             r.touchdown->contact = true;
             // Held at touch-down when the closed branch starts stable there.
-            r.touchdown->stable = is_stable(m, s);
+            r.touchdown->stable = is_stable(m, s, ls);
             if (r.touchdown->stable) r.release_voltage = r.touchdown->voltage;
             const double ref = r.pullin ? r.pullin->voltage : r.touchdown->voltage;
             lambda_limit = 16.0 * ref * ref;
@@ -403,18 +390,22 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
             if (!r.pullin && open.size() >= 3 && s.lambda < previous.lambda) {
                 // The fold lies between the last two points of rising lambda and this one.
                 const State& a = open[open.size() - 3];
-                const State fold = locate(m, a, s, false, r.newton_iterations, kFoldWidth,
-                                          [&](const State& x) { return -lambda_slope(m, x); });
-                r.pullin = describe(m, fold);
+                const State fold = locate(m, a, s, false, r.newton_iterations, ls, kFoldWidth,
+                                          [&](const State& x) { return -lambda_slope(m, x, ls); });
+                r.pullin = describe(m, fold, ls);
+                // The tangent is singular at the fold: its sign there is roundoff. The point ends
+                // the stable branch and is reported as its limit, not stable.
+                r.pullin->stable = false;
                 open.insert(open.end() - 1, fold);
             }
         }
         if (closed && r.touchdown && !r.collapse && s.lambda < previous.lambda && any_closed(m, previous)) {
-            const State fold = locate(m, previous, s, false, r.newton_iterations, kFoldWidth,
-                                      [&](const State& x) { return -lambda_slope(m, x); });
-            r.collapse = describe(m, fold);
+            const State fold = locate(m, previous, s, false, r.newton_iterations, ls, kFoldWidth,
+                                      [&](const State& x) { return -lambda_slope(m, x, ls); });
+            r.collapse = describe(m, fold, ls);
+            r.collapse->stable = false;  // as at pull-in
         }
-        PullinPoint p = describe(m, s);
+        PullinPoint p = describe(m, s, ls);
         // Release: the lowest voltage at which a closed support still holds the beam stably.
         if (p.contact && p.stable) r.release_voltage = std::min(r.release_voltage.value_or(p.voltage), p.voltage);
         r.branch.push_back(p);
@@ -443,6 +434,7 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
     }
     const double top = r.pullin ? r.pullin->voltage : r.touchdown ? r.touchdown->voltage : r.branch.back().voltage;
     add_frequencies(m, stable_open, top, o, r);
+    r.lu_fallbacks = ls.fallbacks();
     return r;
 }
 
