@@ -4,7 +4,9 @@
 # docs/electrostatics.md §9 compare between builds:
 #   film: the cantilever switch in air at 1 kPa, 50 us, m = 50, full model (cantilever_switch_air.toml);
 #   red8: the cantilever switch at 1.2 V_PI (70.0989 V), reduced_modes = 8, rtol = 1e-6.
-# Both through `vibroimpact simulate` (history and energy on). Run it once per build to compare:
+# Both through `vibroimpact simulate` (history and energy on). And, counted inside trace_pullin,
+#   pullin: `vibroimpact pullin` of the cantilever switch (m = 50, 16 frequency points).
+# Run it once per build to compare:
 #   bash bench/callgrind_work.sh [VIBROIMPACT]      (needs valgrind; about two minutes)
 set -euo pipefail
 bin=$(realpath "${1:-build/apps/vibroimpact}")
@@ -20,3 +22,6 @@ for c in film red8; do
       "$bin" simulate "$c.toml" > /dev/null 2> "$c.err"
   echo "$c $(grep -o 'Collected : [0-9]*' "$c.err" | grep -o '[0-9]*$') instructions"
 done
+valgrind --tool=callgrind --callgrind-out-file=pullin.out --toggle-collect='vi::trace_pullin(vi::PullinModel const&, vi::PullinOptions const&)' \
+    "$bin" pullin "$examples/cantilever_switch.toml" --out pullin > /dev/null 2> pullin.err
+echo "pullin $(grep -o 'Collected : [0-9]*' pullin.err | grep -o '[0-9]*$') instructions"
