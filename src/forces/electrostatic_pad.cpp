@@ -39,10 +39,6 @@ ElectrostaticPad::ElectrostaticPad(std::string name, std::vector<int> dofs, std:
     open_above_ = layer_ > 0.0 ? 0.5 * layer_ : 0.0;
 }
 
-double ElectrostaticPad::electrical_gap(const PadPoint& p, const double* q) const {
-    return rest_gap_ - geometry_.sign * point_displacement(p, q);
-}
-
 void ElectrostaticPad::refuse(const PadPoint& p, double ge) const {
     const double air = ge - layer_;
     if (layer_ > 0.0) {

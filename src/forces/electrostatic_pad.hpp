@@ -137,8 +137,10 @@ public:
     [[nodiscard]] const PadGeometry& geometry() const { return geometry_; }
 
 private:
-    // g_e at point k.
-    [[nodiscard]] double electrical_gap(const PadPoint& p, const double* q) const;
+    // g_e at point k; inline, as it runs at every quadrature point of every right-hand side.
+    [[nodiscard]] double electrical_gap(const PadPoint& p, const double* q) const {
+        return rest_gap_ - geometry_.sign * point_displacement(p, q);
+    }
     // Throws std::domain_error when the beam reaches a bare electrode's face (no force is defined
     // there) or presses through half a dielectric's electrical thickness.
     void require_open(const PadPoint& p, double ge) const {
