@@ -31,6 +31,10 @@ ElectrostaticPad::ElectrostaticPad(std::string name, std::vector<int> dofs, std:
             if (l >= static_cast<int>(dofs_.size())) throw std::invalid_argument(name_ + ": DOF index out of range");
         }
     }
+    for (std::size_t k = 0; k < points_.size(); ++k) {
+        if (runs_.empty() || runs_.back().local != points_[k].local) runs_.push_back({points_[k].local, k, k});
+        runs_.back().end = k + 1;
+    }
     layer_ = g.dielectric_thickness / g.dielectric_permittivity;
     rest_gap_ = (g.gap - g.dielectric_thickness) + layer_;
     // A dielectric is a contact (DielectricContact): the beam may press into it elastically, by far
@@ -60,10 +64,19 @@ void ElectrostaticPad::add_force(const ElementState& s, int, double* f) const {
     if (v == 0.0) return;
     // f_i = dW*/dq_i, W* = V^2/2 int c(g_e) dx, dg_e/dq_i = -sign N_i.
     const double half_v2 = 0.5 * v * v;
-    for (const PadPoint& p : points_) {
-        const double ge = electrical_gap(p, s.q);
-        require_open(p, ge);
-        add_point_load(p, -half_v2 * line_capacitance(geometry_, ge).dc * geometry_.sign * p.weight, f);
+    for (const PointRun& r : runs_) {
+        const std::array<double, 4> qe = run_dofs(r, s.q);
+        std::array<double, 4> fe{};
+        for (std::size_t k = r.begin; k < r.end; ++k) {
+            const PadPoint& p = points_[k];
+            const double ge = run_gap(p, qe);
+            require_open(p, ge);
+            const double load = -half_v2 * line_capacitance(geometry_, ge).dc * geometry_.sign * p.weight;
+            for (int i = 0; i < 4; ++i) fe[i] += load * p.shape[i];
+        }
+        for (int i = 0; i < 4; ++i) {
+            if (r.local[i] >= 0) f[r.local[i]] += fe[i];
+        }
     }
 }
 
@@ -82,10 +95,14 @@ void ElectrostaticPad::add_tangent(const ElementState& s, int, double* dfdq, dou
 
 double ElectrostaticPad::capacitance(const double* q) const {
     double c = 0.0;
-    for (const PadPoint& p : points_) {
-        const double ge = electrical_gap(p, q);
-        require_open(p, ge);
-        c += line_capacitance(geometry_, ge).c * p.weight;
+    for (const PointRun& r : runs_) {
+        const std::array<double, 4> qe = run_dofs(r, q);
+        for (std::size_t k = r.begin; k < r.end; ++k) {
+            const PadPoint& p = points_[k];
+            const double ge = run_gap(p, qe);
+            require_open(p, ge);
+            c += line_capacitance(geometry_, ge).c * p.weight;
+        }
     }
     return c;
 }
