@@ -81,8 +81,8 @@ bool BorderedSolver::residual_small(const Eigen::VectorXd& f, double g, const Ei
     const double r = (f - a_ * x - b_ * y).lpNorm<Eigen::Infinity>();
     const double rg = std::abs(g - c_.dot(x));
     const double xn = x.lpNorm<Eigen::Infinity>();
-    return r <= kResidualTolerance * (a_norm_ * xn + b_.lpNorm<Eigen::Infinity>() * std::abs(y) + f.lpNorm<Eigen::Infinity>()) &&
-           rg <= kResidualTolerance * (c_.lpNorm<1>() * xn + std::abs(g));
+    const double scale = a_norm_ * xn + b_.lpNorm<Eigen::Infinity>() * std::abs(y) + f.lpNorm<Eigen::Infinity>();
+    return r <= kResidualTolerance * scale && rg <= kResidualTolerance * (c_.lpNorm<1>() * xn + std::abs(g));
 }
 
 bool BorderedSolver::solve_by_lu(const Eigen::VectorXd& f, double g, Eigen::VectorXd& x, double& y) {

@@ -25,7 +25,7 @@ public:
     // Sylvester's law of inertia). Factorises A alone: solve() then needs a new factorize().
     bool positive_definite(const SparseMatrix& a);
 
-    // How many solves fell back to the sparse LU (a count for tests and benchmarks).
+    // How many factorisations or solves fell back to the sparse LU (for tests and benchmarks).
     int fallbacks() const { return fallbacks_; }
 
 private:

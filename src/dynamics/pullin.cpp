@@ -139,7 +139,8 @@ bool solve_at(const Model& m, double tau, State& s, bool fix_modes, int& iterati
         // about 1e-9 at m = 50): a step that small, or a step in Newton's quadratic regime (small,
         // and contracting fast) after which the error left, about step^3 / previous^2, is that small.
         const double q_size = std::max(s.q.cwiseAbs().maxCoeff(), q_scale);
-        const double step = std::max(dq.cwiseAbs().maxCoeff() / q_size, std::abs(dlambda) / (std::abs(s.lambda) + 1e-300));
+        const double step =
+            std::max(dq.cwiseAbs().maxCoeff() / q_size, std::abs(dlambda) / (std::abs(s.lambda) + 1e-300));
         const bool quadratic = step <= 1e-5 && step <= 1e-2 * previous_step &&
                                step * step * step <= 1e-9 * previous_step * previous_step;
         if (!changed && (step <= 1e-9 || quadratic)) return true;

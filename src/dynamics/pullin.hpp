@@ -48,7 +48,7 @@ struct PullinResult {
     std::string end;                            // why the branch ends
     double watched_x = 0.0;                     // x/l of the watched point
     int newton_iterations = 0;
-    int lu_fallbacks = 0;  // Newton solves that needed the sparse LU of the bordered matrix (bordered_solver.hpp)
+    int lu_fallbacks = 0;  // Newton steps that needed the sparse LU of the bordered matrix (bordered_solver.hpp)
 };
 
 // What the continuation works on: the beam's stiffness and mass over its bending DOFs, the contact

@@ -162,7 +162,8 @@ private:
     }
     // g_e at a point of a run, from run_dofs.
     [[nodiscard]] double run_gap(const PadPoint& p, const std::array<double, 4>& qe) const {
-        return rest_gap_ - geometry_.sign * (p.shape[0] * qe[0] + p.shape[1] * qe[1] + p.shape[2] * qe[2] + p.shape[3] * qe[3]);
+        const double v = p.shape[0] * qe[0] + p.shape[1] * qe[1] + p.shape[2] * qe[2] + p.shape[3] * qe[3];
+        return rest_gap_ - geometry_.sign * v;
     }
 
     std::string name_;

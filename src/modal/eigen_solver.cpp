@@ -107,6 +107,9 @@ bool same_matrix(const Eigen::MatrixXd& dense, const SparseMatrix& sparse) {
     return dense == Eigen::MatrixXd(sparse);
 }
 
+// The size of the Lanczos basis Spectra builds for count modes (before clipping to the problem).
+int lanczos_basis_size(int count) { return std::max(2 * count + 1, count + 20); }
+
 }  // namespace
 
 ModeSet all_modes_dense(const SparseMatrix& K, const SparseMatrix& M) {
@@ -122,7 +125,7 @@ ModeSet all_modes_dense(const SparseMatrix& K, const SparseMatrix& M) {
 ModeSet lowest_modes_sparse(const SparseMatrix& K, const SparseMatrix& M, int count) {
     const int n = static_cast<int>(K.rows());
     const int nev = std::clamp(count, 1, std::max(1, n - 1));
-    const int ncv = std::min(n, std::max(2 * nev + 1, nev + 20));
+    const int ncv = std::min(n, lanczos_basis_size(nev));
     const Eigen::VectorXd d = equilibration(K);
     const SparseMatrix ks = d.asDiagonal() * K * d.asDiagonal();
     // Spectra judges convergence against max(|ritz value|, eps^(2/3)); scaling M to a unit largest
@@ -161,11 +164,12 @@ Eigen::VectorXd lowest_frequencies(const SparseMatrix& K, const SparseMatrix& M,
     const int n = static_cast<int>(K.rows());
     if (n == 0) return {};
     count = std::clamp(count, 0, n);
-    // Lanczos builds a basis of ncv = max(2 count + 1, count + 20) vectors (lowest_modes_sparse),
-    // each one sparse solve: for a few modes of a problem several times that size it does less work
-    // than the dense solution of all n (at n = 100 and 3 modes, half of it by callgrind).
-    const int ncv = std::max(2 * count + 1, count + 20);
-    if (count >= n - 1 || n < 3 * ncv) return solve_all_modes_dense(K, M, false).omega.head(count);
+    // Lanczos builds its basis at one sparse solve a vector: for a few modes of a problem several
+    // times the basis' size it does less work than the dense solution of all n (at n = 100 and 3
+    // modes, half of it by callgrind).
+    if (count >= n - 1 || n < 3 * lanczos_basis_size(count)) {
+        return solve_all_modes_dense(K, M, false).omega.head(count);
+    }
     return lowest_modes_sparse(K, M, count).omega;
 }
 
