@@ -20,13 +20,13 @@
 namespace vi::cli {
 
 CommandBody add_air_q_command(CLI::App& app) {
-    struct Options {
+    struct AirQCommandOptions {
         std::string case_path;
         std::string out = "out/air-q";
         std::string gap = "1 um";
         std::string gnuplot = "gnuplot";
     };
-    auto opt = std::make_shared<Options>();
+    auto opt = std::make_shared<AirQCommandOptions>();
     CLI::App* sub = app.add_subcommand("air-q", "Quality factor of mode 1 against air pressure (squeeze film), 1 atm to 1 Pa");
     sub->add_option("case", opt->case_path, "Case file (TOML): the beam; its [air], electrodes or [[films]] if any")
         ->required();

@@ -27,7 +27,7 @@
 namespace vi::cli {
 namespace {
 
-struct Options {
+struct FitCommandOptions {
     std::string case_path, data, features, column;
     std::vector<std::string> fit;
     bool time_shift = false, scale = false, two_stage = false;
@@ -46,7 +46,7 @@ InputError in_case(const Case& c, const InputError& e, const std::string& data_f
     return locate_in_case(c, e);
 }
 
-std::string command_line(const Options& o) {
+std::string command_line(const FitCommandOptions& o) {
     std::string command = "vibroimpact fit " + o.case_path;
     command += o.data.empty() ? " --features " + o.features : " --data " + o.data;
     for (const std::string& f : o.fit) command.append(" --fit '").append(f).append("'");
@@ -57,7 +57,7 @@ std::string command_line(const Options& o) {
     return command;
 }
 
-int finish(const Options& o, const nlohmann::json& j, OutputFiles files, const std::vector<FigureSpec>& figures,
+int finish(const FitCommandOptions& o, const nlohmann::json& j, OutputFiles files, const std::vector<FigureSpec>& figures,
            const std::string& gnuplot, const std::string& text, const std::vector<const FitResult*>& results) {
     files["fit.json"] = j.dump(2) + "\n";
     write_with_figures(o.out, std::move(files), figures, gnuplot);
@@ -75,7 +75,7 @@ int finish(const Options& o, const nlohmann::json& j, OutputFiles files, const s
     return kExitOk;
 }
 
-int run_features(const Options& o, const Case& c, const std::vector<FitParameter>& params, const std::string& gnuplot,
+int run_features(const FitCommandOptions& o, const Case& c, const std::vector<FitParameter>& params, const std::string& gnuplot,
                  const FitOptions& fo) {
     if (o.time_shift || o.scale || o.two_stage) {
         throw InputError(std::string(o.time_shift ? "--time-shift" : o.scale ? "--scale" : "--two-stage") +
@@ -112,7 +112,7 @@ int run_features(const Options& o, const Case& c, const std::vector<FitParameter
     return finish(o, j, std::move(files), {feature_figure(data, r)}, gnuplot, text, {&r});
 }
 
-int run_trajectory(const Options& o, const Case& c, std::vector<FitParameter> params, const std::string& gnuplot,
+int run_trajectory(const FitCommandOptions& o, const Case& c, std::vector<FitParameter> params, const std::string& gnuplot,
                    const FitOptions& fo) {
     const std::string column = o.column.empty() ? watched_point_name(c) + "_m" : o.column;
     check_trajectory_column(c, column);
@@ -187,7 +187,7 @@ int run_trajectory(const Options& o, const Case& c, std::vector<FitParameter> pa
 }  // namespace
 
 CommandBody add_fit_command(CLI::App& app) {
-    auto opt = std::make_shared<Options>();
+    auto opt = std::make_shared<FitCommandOptions>();
     CLI::App* sub = app.add_subcommand("fit", "Case values estimated from a measured trajectory or measured features, with "
                                               "standard errors and 95 % intervals");
     sub->add_option("case", opt->case_path, "Case file (TOML): the model and the start of every fitted value")->required();
@@ -220,7 +220,7 @@ CommandBody add_fit_command(CLI::App& app) {
     sub->add_flag("--json", opt->json, "Print fit.json on stdout instead of text");
 
     return [opt]() {
-        const Options& o = *opt;
+        const FitCommandOptions& o = *opt;
         if (o.data.empty() && o.features.empty()) throw InputError("--data or --features: one is required");
         if (!o.time_shift && !o.time_shift_range.empty()) throw InputError("--time-shift-range: needs --time-shift");
         if (!o.scale && !o.scale_range.empty()) throw InputError("--scale-range: needs --scale");

@@ -15,14 +15,14 @@
 namespace vi::cli {
 
 CommandBody add_modes_command(CLI::App& app) {
-    struct Options {
+    struct ModesCommandOptions {
         std::string case_path;
         int count = 5;
         bool json = false;
         std::string out_dir;
         std::string support_model = "pin";
     };
-    auto opt = std::make_shared<Options>();
+    auto opt = std::make_shared<ModesCommandOptions>();
     CLI::App* sub = app.add_subcommand("modes", "Natural frequencies, mode shapes, nodal points and peaks");
     sub->add_option("case", opt->case_path, "Case file (TOML)")->required();
     sub->add_option("--count,-n", opt->count, "Number of bending (and axial) modes")->check(CLI::Range(1, 1000));

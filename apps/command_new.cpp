@@ -15,12 +15,12 @@
 namespace vi::cli {
 
 CommandBody add_new_command(CLI::App& app) {
-    struct Options {
+    struct NewCommandOptions {
         std::string kind;
         std::string out;
         bool force = false;
     };
-    auto opt = std::make_shared<Options>();
+    auto opt = std::make_shared<NewCommandOptions>();
     std::vector<std::string> kinds;
     std::string listing;
     for (const StarterCase& s : starter_cases()) {

@@ -117,7 +117,7 @@ FigureSpec convergence_figure(const DesignProblem& p, const OptimizeResult& r) {
     return f;
 }
 
-struct Options {
+struct OptimizeCommandOptions {
     std::string case_path;
     std::vector<std::string> vary, constraints;
     std::string minimize, maximize;
@@ -129,7 +129,7 @@ struct Options {
     bool resume = false;
 };
 
-std::string command_text(const Options& o, const DesignProblem& p) {
+std::string command_text(const OptimizeCommandOptions& o, const DesignProblem& p) {
     std::string command = "vibroimpact optimize " + o.case_path;
     for (const std::string& v : o.vary) command += " --vary '" + v + "'";
     command += p.maximize ? " --maximize " + o.maximize : " --minimize " + o.minimize;
@@ -139,7 +139,7 @@ std::string command_text(const Options& o, const DesignProblem& p) {
     return command;
 }
 
-void print_result(const Options& o, const DesignProblem& p, const OptimizeResult& r, double wall_s) {
+void print_result(const OptimizeCommandOptions& o, const DesignProblem& p, const OptimizeResult& r, double wall_s) {
     std::printf("%s %s: %zu designs (global stage: %s; local stage: %s)\n", p.maximize ? "Maximise" : "Minimise",
                 p.columns[p.objective].name.c_str(), r.evaluations.size(), r.global_end.c_str(), r.local_end.c_str());
     std::printf("Computed %zu designs in %zu rounds on %d threads (%zu computed ahead and not used), %.3g s",
@@ -161,7 +161,7 @@ void print_result(const Options& o, const DesignProblem& p, const OptimizeResult
     std::printf("Written to %s/\n", o.out.c_str());
 }
 
-DesignProblem read_problem(const Options& o, const std::string& case_text) {
+DesignProblem read_problem(const OptimizeCommandOptions& o, const std::string& case_text) {
     DesignProblem p;
     p.base = read_case_text(case_text, o.case_path);
     p.columns = sweep_result_columns(SweepAnalysis::simulate, 0);
@@ -175,7 +175,7 @@ DesignProblem read_problem(const Options& o, const std::string& case_text) {
 
 // The search with its journal, then the files all together; a stop keeps the journal and says how
 // to go on.
-int run_optimize(const Options& opt) {
+int run_optimize(const OptimizeCommandOptions& opt) {
     if (opt.minimize.empty() == opt.maximize.empty()) throw InputError("optimize: give one of --minimize or --maximize");
     const std::string gnuplot = require_gnuplot(opt.gnuplot, "the convergence figure");
     std::string reason;
@@ -226,7 +226,7 @@ int run_optimize(const Options& opt) {
 }  // namespace
 
 CommandBody add_optimize_command(CLI::App& app) {
-    auto opt = std::make_shared<Options>();
+    auto opt = std::make_shared<OptimizeCommandOptions>();
     CLI::App* sub = app.add_subcommand("optimize", "The design that minimises (or maximises) a reported quantity in a box of case values");
     sub->add_option("case", opt->case_path, "Case file (TOML)")->required();
     sub->add_option("--vary", opt->vary, "PATH=LOW:HIGH, SI units, as --set of sweep (repeat for more)")->required();

@@ -51,7 +51,7 @@ void check_output_folder(const std::string& dir) {
 }  // namespace
 
 CommandBody add_paper_command(CLI::App& app) {
-    struct Options {
+    struct PaperCommandOptions {
         std::string out = "out/paper";
         int threads = 0;
         int positions = 50;
@@ -62,7 +62,7 @@ CommandBody add_paper_command(CLI::App& app) {
         std::string gnuplot = "gnuplot";
         bool quiet = false;
     };
-    auto opt = std::make_shared<Options>();
+    auto opt = std::make_shared<PaperCommandOptions>();
     CLI::App* sub = app.add_subcommand(
         "paper", "The paper's numerical study (Figs. 2-11: PNG, SVG, CSV) and report.html comparing its claims with ours");
     sub->add_option("--out,-o", opt->out, "Output folder (created; files of the same names are replaced)")->capture_default_str();

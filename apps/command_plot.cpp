@@ -16,13 +16,13 @@
 namespace vi::cli {
 
 CommandBody add_plot_command(CLI::App& app) {
-    struct Options {
+    struct PlotCommandOptions {
         std::string dir;
         std::string out;
         std::string gnuplot = "gnuplot";
         int threads = 0;
     };
-    auto opt = std::make_shared<Options>();
+    auto opt = std::make_shared<PlotCommandOptions>();
     CLI::App* sub = app.add_subcommand("plot", "Figures (PNG 2400 px wide and SVG) of a simulate, modes or sweep output folder");
     sub->add_option("dir", opt->dir, "Output folder of simulate, modes or sweep (--out)")->required();
     sub->add_option("--out,-o", opt->out, "Folder for the figures (default: DIR/plots; files of the same names are replaced)");

@@ -18,7 +18,7 @@
 namespace vi::cli {
 
 CommandBody add_pullin_command(CLI::App& app) {
-    struct Options {
+    struct PullinCommandOptions {
         std::string case_path;
         bool json = false;
         std::string out_dir;
@@ -27,7 +27,7 @@ CommandBody add_pullin_command(CLI::App& app) {
         std::string horizon;
         DynamicPullinOptions dyn;
     };
-    auto opt = std::make_shared<Options>();
+    auto opt = std::make_shared<PullinCommandOptions>();
     CLI::App* sub = app.add_subcommand(
         "pullin", "Static pull-in: equilibria against voltage, pull-in, touch-down, release, C-V and f-V");
     sub->add_option("case", opt->case_path, "Case file (TOML) with at least one [[electrodes]]")->required();

@@ -74,12 +74,12 @@ void warn_film_range(const std::string& path, const std::vector<FilmRegime>& fil
 }  // namespace
 
 CommandBody add_simulate_command(CLI::App& app) {
-    struct Options {
+    struct SimulateCommandOptions {
         std::string case_path;
         bool json = false;
         std::string out_dir;
     };
-    auto opt = std::make_shared<Options>();
+    auto opt = std::make_shared<SimulateCommandOptions>();
     CLI::App* sub = app.add_subcommand("simulate", "Free impact transient: release, bouncing, settling");
     sub->add_option("case", opt->case_path, "Case file (TOML) with [initial] and [solver] horizon")->required();
     sub->add_flag("--json", opt->json, "Print the summary JSON on stdout instead of a table");

@@ -15,13 +15,13 @@
 namespace vi::cli {
 
 CommandBody add_stiction_command(CLI::App& app) {
-    struct Options {
+    struct StictionCommandOptions {
         std::string case_path;
         bool json = false;
         std::string out_dir;
         int elements = 0;
     };
-    auto opt = std::make_shared<Options>();
+    auto opt = std::make_shared<StictionCommandOptions>();
     CLI::App* sub = app.add_subcommand(
         "stiction",
         "Stiction check: restoring force vs pull-off force at each adhesive support, the peel balance on each "

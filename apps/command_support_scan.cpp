@@ -18,14 +18,14 @@
 namespace vi::cli {
 
 CommandBody add_support_scan_command(CLI::App& app) {
-    struct Options {
+    struct SupportScanCommandOptions {
         std::string case_path;
         std::string positions = "0.02:1:50";
         int count = 3;
         std::string out_dir;
         std::string support_model = "pin";
     };
-    auto opt = std::make_shared<Options>();
+    auto opt = std::make_shared<SupportScanCommandOptions>();
     CLI::App* sub = app.add_subcommand(
         "support-scan", "Frequency ratios w_i/w_in of the supported beam as the first support moves (Fig. 8)");
     sub->add_option("case", opt->case_path, "Case file (TOML) with at least one support")->required();

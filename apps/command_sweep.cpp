@@ -41,7 +41,7 @@ namespace {
 // in the journal. A second signal ends the process at once.
 int interrupted_exit_code() { return kExitStoppedBase + (stop_signal() > 0 ? stop_signal() : SIGINT); }
 
-struct Options {
+struct SweepCommandOptions {
     std::string case_path;
     std::vector<std::string> sets;
     std::string analysis = "simulate";
@@ -64,7 +64,7 @@ struct Plan {
     std::string csv_header;
 };
 
-Plan make_plan(const Options& o) {
+Plan make_plan(const SweepCommandOptions& o) {
     if (o.resume && o.out_dir.empty()) throw InputError("--resume: needs --out DIR, the folder holding the journal");
     if (o.retry_failed && !o.resume) throw InputError("--retry-failed: goes with --resume (failed points of a journal)");
     std::string reason;
@@ -125,13 +125,13 @@ std::unique_ptr<SweepRanks> start_ranks() {
 
 // --threads, or by default the CPUs this process may use (affinity, cgroup quota) shared among the
 // ranks that may run on the same CPUs (all ranks of the machine unless the launcher binds them).
-int worker_threads(const Options& o, const SweepRanks& ranks) {
+int worker_threads(const SweepCommandOptions& o, const SweepRanks& ranks) {
     if (o.threads > 0) return o.threads;
     return std::max(1, resolve_thread_count(0) / std::max(1, ranks.ranks_sharing_cpus()));
 }
 
 // The root's last step: the files of a complete sweep, or how to resume an interrupted one.
-int finish_on_root(const Options& o, const Plan& plan, SweepStore& store, SweepRunInfo info) {
+int finish_on_root(const SweepCommandOptions& o, const Plan& plan, SweepStore& store, SweepRunInfo info) {
     if (!store.complete()) {
         if (o.out_dir.empty()) {
             std::fprintf(stderr,
@@ -168,7 +168,7 @@ int finish_on_root(const Options& o, const Plan& plan, SweepStore& store, SweepR
     return kExitOk;
 }
 
-int run_sweep(const Options& o) {
+int run_sweep(const SweepCommandOptions& o) {
     std::unique_ptr<SweepRanks> ranks;
     try {
         ranks = start_ranks();
@@ -259,7 +259,7 @@ std::string paths_help() {
 }  // namespace
 
 CommandBody add_sweep_command(CLI::App& app) {
-    auto opt = std::make_shared<Options>();
+    auto opt = std::make_shared<SweepCommandOptions>();
     CLI::App* sub = app.add_subcommand(
         "sweep", "Run an analysis over a grid of case values, on every core (and every MPI rank under mpirun)");
     sub->add_option("case", opt->case_path, "Case file (TOML)")->required();

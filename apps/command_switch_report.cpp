@@ -19,12 +19,12 @@
 namespace vi::cli {
 
 CommandBody add_switch_report_command(CLI::App& app) {
-    struct Options {
+    struct SwitchReportCommandOptions {
         std::string case_path;
         std::string out = "out/switch-report";
         std::string gnuplot = "gnuplot";
     };
-    auto opt = std::make_shared<Options>();
+    auto opt = std::make_shared<SwitchReportCommandOptions>();
     CLI::App* sub = app.add_subcommand(
         "switch-report", "A switch's pull-in curve, C-V, f-V and switching transient with its bounce ledger on one page");
     sub->add_option("case", opt->case_path, "Case file (TOML) with [[electrodes]], [initial] and [solver] horizon")->required();

@@ -18,7 +18,7 @@
 namespace vi::cli {
 
 CommandBody add_validate_command(CLI::App& app) {
-    struct Options {
+    struct ValidateCommandOptions {
         std::string out;
         bool quick = false;
         bool paper_parameters = false;
@@ -26,7 +26,7 @@ CommandBody add_validate_command(CLI::App& app) {
         int threads = 0;
         std::string example = "examples/paper/free_impact_tip.toml";
     };
-    auto opt = std::make_shared<Options>();
+    auto opt = std::make_shared<ValidateCommandOptions>();
     CLI::App* sub = app.add_subcommand(
         "validate", "Validation document (docs/validation.md): the model against closed forms and independent methods");
     sub->add_option("--out,-o", opt->out, "Write the Markdown document to FILE (atomically) instead of stdout");

@@ -150,7 +150,7 @@ TEST(Units, AcceptedUnitsList) {
 }
 
 TEST(Units, QuotedEscapesControlCharacters) {
-    EXPECT_EQ(vi::quoted("a\"b\\c\nd\x01"), "\"a\\\"b\\\\c\\nd\\x01\"");
+    EXPECT_EQ(vi::in_quotes("a\"b\\c\nd\x01"), "\"a\\\"b\\\\c\\nd\\x01\"");
 }
 
 }  // namespace

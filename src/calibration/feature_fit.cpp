@@ -29,12 +29,6 @@ double modal_feature(const std::string& name, const BuiltProblem& b) {
     return 1.0 / (2.0 * zeta);
 }
 
-std::optional<double> numeric(const SweepCell& cell) {
-    if (const double* d = std::get_if<double>(&cell)) return *d;
-    if (const std::int64_t* n = std::get_if<std::int64_t>(&cell)) return static_cast<double>(*n);
-    return std::nullopt;
-}
-
 // Why a sweep column is empty, for the feature's message.
 std::string why_missing(const std::string& name) {
     if (name == "T_s" || name == "T1_s") return "fewer than two impacts within the horizon";
@@ -99,7 +93,7 @@ std::vector<double> model_features(const Case& base, const std::vector<FitParame
         } else {
             std::optional<double> v;
             for (std::size_t k = 0; k < columns.size(); ++k) {
-                if (columns[k].name == f.name) v = numeric(cells[k]);
+                if (columns[k].name == f.name) v = numeric_cell(cells[k]);
             }
             if (!v) throw FeatureMissing(f.name + ": the model gives none at this design (" + why_missing(f.name) + ")");
             out.push_back(*v);

@@ -15,12 +15,6 @@ bool is_text_column(const std::string& name) {
     return name == "Tp_reason" || (name.rfind("impact", 0) == 0 && name.size() > 8 && name.ends_with("_support"));
 }
 
-std::optional<double> numeric(const SweepCell& cell) {
-    if (const double* d = std::get_if<double>(&cell)) return *d;
-    if (const std::int64_t* n = std::get_if<std::int64_t>(&cell)) return static_cast<double>(*n);
-    return std::nullopt;
-}
-
 }  // namespace
 
 DesignVariable parse_design_variable(const std::string& text, const Case& c) {
@@ -98,8 +92,8 @@ DesignOutcome evaluate_design(const DesignProblem& p, const std::vector<double>&
     out.status = r.status;
     out.constraints.assign(p.constraints.size(), std::nullopt);
     if (!r.ok()) return out;
-    out.objective = numeric(r.cells.at(p.objective));
-    for (std::size_t k = 0; k < p.constraints.size(); ++k) out.constraints[k] = numeric(r.cells.at(p.constraints[k].column));
+    out.objective = numeric_cell(r.cells.at(p.objective));
+    for (std::size_t k = 0; k < p.constraints.size(); ++k) out.constraints[k] = numeric_cell(r.cells.at(p.constraints[k].column));
     return out;
 }
 

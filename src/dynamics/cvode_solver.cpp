@@ -27,7 +27,6 @@ using cvode_detail::ModalSystem;
 using Clock = std::chrono::steady_clock;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // True when a and b are the same instant up to a few ulps.
 bool same_time(double a, double b) { return std::abs(a - b) <= 8.0 * kEps * std::max({std::abs(a), std::abs(b), 1e-300}); }

@@ -35,7 +35,6 @@ double constant_part(const ExpSignal& f) {
     }
     return v;
 }
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // Largest value of f over [0, tau_end] and where, to rel_tol of the maximum itself: 1e-9 for y_max
 // and the deepest deflection, 1e-7 for episode peaks (plotted quantities; the FE model itself is

@@ -16,6 +16,7 @@
 #include "model/input_error.hpp"
 #include "modal/eigen_solver.hpp"
 #include "model/case_checks.hpp"
+#include "model/number_format.hpp"
 
 // The transient works on the bending DOFs (v, theta) only. In this linear beam model axial and
 // bending decouple, supports and loads act transversely, so the axial DOFs are never loaded and stay
@@ -51,12 +52,6 @@ ModeSet bending_modes(const System& s, int count, const char* key) {
     return modes;
 }
 
-std::string short_number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-}
-
 // Ratios at two modes fix alpha and beta, but not every pair gives a stable model: a negative beta
 // damps the high modes negatively (their ratio beta w / 2 falls without bound), and a negative alpha
 // does so below some frequency, which must then lie under mode 1. Either is an InputError on
@@ -72,15 +67,15 @@ RayleighCoefficients rayleigh(const RayleighDamping& d, const ModeSet& modes) {
     const int m_lo = first_low ? d.mode1 : d.mode2, m_hi = first_low ? d.mode2 : d.mode1;
     if (c.beta < 0.0 && 0.5 * c.beta * w_hi >= -1e-12 * xi_max) c.beta = 0.0;
     if (c.beta < 0.0) {
-        throw InputError("damping.ratios: they give beta = " + short_number(c.beta) +
+        throw InputError("damping.ratios: they give beta = " + significant(c.beta, 3) +
                          " s < 0, which damps the high modes negatively (an unstable model); the ratio at mode " +
-                         std::to_string(m_hi) + " must be at least " + short_number(xi_lo) + " x w" +
-                         std::to_string(m_lo) + "/w" + std::to_string(m_hi) + " = " + short_number(xi_lo * w_lo / w_hi));
+                         std::to_string(m_hi) + " must be at least " + significant(xi_lo, 3) + " x w" +
+                         std::to_string(m_lo) + "/w" + std::to_string(m_hi) + " = " + significant(xi_lo * w_lo / w_hi, 3));
     }
     const double z1 = rayleigh_ratio(c, modes.omega[0]);
     if (z1 < -1e-12 * xi_max) {
-        throw InputError("damping.ratios: they give mode 1 the damping ratio " + short_number(z1) +
-                         " < 0 (alpha = " + short_number(c.alpha) + " 1/s; an unstable model)");
+        throw InputError("damping.ratios: they give mode 1 the damping ratio " + significant(z1, 3) +
+                         " < 0 (alpha = " + significant(c.alpha, 3) + " 1/s; an unstable model)");
     }
     return c;
 }

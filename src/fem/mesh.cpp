@@ -7,15 +7,10 @@
 #include <string>
 
 #include "model/input_error.hpp"
+#include "model/number_format.hpp"
 
 namespace vi {
 namespace {
-
-std::string number(double v, int digits = 2) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-    return buf;
-}
 
 // A node placed for a support (or two supports close together) can make an element so short that
 // its stiffness EI/L^3 swamps the rest of K; refused on the latest support at either of its nodes.
@@ -35,11 +30,11 @@ void check_shortest_element(const Mesh& mesh, const Beam& beam) {
     }
     const std::string key = support < 0 ? "beam.elements" : "supports[" + std::to_string(support) + "].position";
     const double least = std::cbrt(5.0 * (l / h) / kMaxMeshCondition);
-    throw InputError(key + ": its node makes an element of " + number(len / l) + " l between x/l = " +
-                     number(mesh.x[static_cast<std::size_t>(shortest)] / l, 9) + " and " +
-                     number(mesh.x[static_cast<std::size_t>(shortest) + 1] / l, 9) +
-                     ", too short for double precision (stiffness condition about " + number(condition) +
-                     ", at most " + number(kMaxMeshCondition) + "): keep supports at least " + number(least) +
+    throw InputError(key + ": its node makes an element of " + significant(len / l, 2) + " l between x/l = " +
+                     significant(mesh.x[static_cast<std::size_t>(shortest)] / l, 9) + " and " +
+                     significant(mesh.x[static_cast<std::size_t>(shortest) + 1] / l, 9) +
+                     ", too short for double precision (stiffness condition about " + significant(condition, 2) +
+                     ", at most " + significant(kMaxMeshCondition, 2) + "): keep supports at least " + significant(least, 2) +
                      " l from an end and from each other, or at the same place");
 }
 

@@ -369,7 +369,7 @@ void read_load_tables(const std::string& source_name, Reading& r, Case& c) {
         const std::string key = (t.electrode ? "electrodes[" : "loads[") + std::to_string(t.load) + "].table";
         std::string reason;
         const auto text = file_text(file, reason);
-        if (!text) throw_problem(source_name, {r.log.where(key), key, "cannot read " + vi::quoted(file) + " (" + reason + ")"});
+        if (!text) throw_problem(source_name, {r.log.where(key), key, "cannot read " + vi::in_quotes(file) + " (" + reason + ")"});
         if (t.electrode) {
             parse_time_table(*text, file, "V_V", c.electrodes[t.load].time);
         } else {

@@ -39,12 +39,12 @@ void parse_time_table(const std::string& text, const std::string& file, const st
         if (trimmed(line).empty()) continue;
         const std::size_t comma = line.find(',');
         if (comma == std::string_view::npos || line.find(',', comma + 1) != std::string_view::npos) {
-            fail("expected 2 comma-separated columns (t_s," + column + "), got " + vi::quoted(line));
+            fail("expected 2 comma-separated columns (t_s," + column + "), got " + vi::in_quotes(line));
         }
         const std::string a = trimmed(line.substr(0, comma));
         const std::string b = trimmed(line.substr(comma + 1));
         if (!header) {
-            if (a != "t_s" || b != column) fail("expected the header row \"t_s," + column + "\", got " + vi::quoted(line));
+            if (a != "t_s" || b != column) fail("expected the header row \"t_s," + column + "\", got " + vi::in_quotes(line));
             header = true;
             continue;
         }

@@ -123,7 +123,7 @@ std::string key_text(std::string_view key) {
         return (ch >= 'a' && ch <= 'z') || (ch >= 'A' && ch <= 'Z') || (ch >= '0' && ch <= '9') || ch == '_' ||
                ch == '-';
     });
-    return bare ? std::string(key) : quoted(key);
+    return bare ? std::string(key) : in_quotes(key);
 }
 
 std::string child_path(std::string_view parent, std::string_view key) {
@@ -233,7 +233,7 @@ std::optional<std::string> FieldReader::choice(std::string_view key, std::initia
     }
     if (std::find(options.begin(), options.end(), std::string_view(s->get())) == options.end()) {
         log_.problem(key_position(key), child_path(path_, key),
-                     "must be one of " + list + ", got " + quoted(s->get()));
+                     "must be one of " + list + ", got " + in_quotes(s->get()));
         return std::nullopt;
     }
     return s->get();

@@ -169,7 +169,7 @@ std::string accepted_units(Dimension d) {
     return out;
 }
 
-std::string quoted(std::string_view text) {
+std::string in_quotes(std::string_view text) {
     std::string out = "\"";
     for (const char ch : text) {
         const auto byte = static_cast<unsigned char>(ch);
@@ -204,20 +204,20 @@ double parse_quantity(std::string_view text, Dimension d) {
     const std::size_t n = number_length(s);
     if (n == 0) {
         if (looks_non_finite(s)) fail("infinite and NaN values are not allowed");
-        fail("expected a number at the start of " + quoted(s));
+        fail("expected a number at the start of " + in_quotes(s));
     }
     std::string_view digits = s.substr(0, n);
     if (digits.front() == '+') digits.remove_prefix(1);  // from_chars takes no '+'
     double value = 0.0;
     const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-    if (ec == std::errc::result_out_of_range) fail("number " + quoted(s.substr(0, n)) + " is out of range");
+    if (ec == std::errc::result_out_of_range) fail("number " + in_quotes(s.substr(0, n)) + " is out of range");
     if (ec != std::errc() || end != digits.data() + digits.size()) {
-        fail("expected a number at the start of " + quoted(s));
+        fail("expected a number at the start of " + in_quotes(s));
     }
 
     const std::string unit = collapse_spaces(s.substr(n));
     if (d == Dimension::dimensionless) {
-        if (!unit.empty()) fail("a dimensionless value takes no unit, got " + quoted(unit));
+        if (!unit.empty()) fail("a dimensionless value takes no unit, got " + in_quotes(unit));
         return value;
     }
     if (unit.empty()) fail("missing unit (expected " + unit_list_for(d) + ")");
@@ -225,17 +225,17 @@ double parse_quantity(std::string_view text, Dimension d) {
     for (const UnitEntry& u : kUnits) {
         if (u.dimension == d && u.symbol == unit) {
             const double si = value * u.factor;
-            if (!std::isfinite(si)) fail("value " + quoted(s) + " is out of range");
+            if (!std::isfinite(si)) fail("value " + in_quotes(s) + " is out of range");
             return si;
         }
     }
     for (const UnitEntry& u : kUnits) {
         if (u.symbol == unit) {
-            fail("unit " + quoted(unit) + " is " + std::string(dimension_name(u.dimension)) + ", expected " +
+            fail("unit " + in_quotes(unit) + " is " + std::string(dimension_name(u.dimension)) + ", expected " +
                  unit_list_for(d));
         }
     }
-    fail("unknown unit " + quoted(unit) + " (expected " + unit_list_for(d) + ")");
+    fail("unknown unit " + in_quotes(unit) + " (expected " + unit_list_for(d) + ")");
 }
 
 }  // namespace vi

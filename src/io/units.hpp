@@ -37,6 +37,6 @@ std::string_view dimension_name(Dimension d);
 
 // text in double quotes, with quotes, backslashes and control characters escaped, so that a message
 // quoting user input stays on one line.
-std::string quoted(std::string_view text);
+std::string in_quotes(std::string_view text);
 
 }  // namespace vi

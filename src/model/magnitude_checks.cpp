@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "model/run_estimate.hpp"
+#include "model/number_format.hpp"
 
 // Why a window and not just "finite": the solvers form products of a few of these values (EI = E w t^3
 // / 12, omega^2, energies 1/2 k q^2, the state matrix's omega^2 next to 1). A value of 1e-320 is
@@ -16,12 +17,6 @@
 namespace vi {
 namespace {
 
-std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3g", v);
-    return buf;
-}
-
 const std::string kWindow = "1e-100 to 1e100";
 
 bool in_window(double v) { return std::abs(v) >= 1.0 / kMagnitudeLimit && std::abs(v) <= kMagnitudeLimit; }
@@ -29,7 +24,7 @@ bool in_window(double v) { return std::abs(v) >= 1.0 / kMagnitudeLimit && std::a
 // A value as given: zero is left to the key's own checks (where zero is allowed it means "none").
 void value(std::vector<CaseProblem>& out, const std::string& key, double v) {
     if (!std::isfinite(v) || v == 0.0 || in_window(v)) return;
-    out.push_back({key, number(v) + " is outside the magnitudes double precision computes with here (" + kWindow +
+    out.push_back({key, significant(v, 3) + " is outside the magnitudes double precision computes with here (" + kWindow +
                             " in SI units" + (std::abs(v) < 2.2250738585072014e-308 ? ", and subnormal" : "") +
                             "; docs/case-files.md, Limits)"});
 }
@@ -48,7 +43,7 @@ void derived(std::vector<CaseProblem>& out, const char* what, double v,
             key = k;
         }
     }
-    out.push_back({key, "gives " + std::string(what) + " = " + number(v) + ", outside " + kWindow +
+    out.push_back({key, "gives " + std::string(what) + " = " + significant(v, 3) + ", outside " + kWindow +
                             " (SI): the problem cannot be computed in double precision (docs/case-files.md, Limits)"});
 }
 
@@ -136,8 +131,8 @@ void check_scales(std::vector<CaseProblem>& out, const Case& c) {
         if (!usable(s.stiffness)) continue;
         const double stiff = s.stiffness / k_beam;
         if (stiff > kMaxContactRatio) {
-            out.push_back({at + "stiffness", number(s.stiffness) + " N/m is " + number(stiff) +
-                                                 " times the beam's EI/l^3 = " + number(k_beam) +
+            out.push_back({at + "stiffness", significant(s.stiffness, 3) + " N/m is " + significant(stiff, 3) +
+                                                 " times the beam's EI/l^3 = " + significant(k_beam, 3) +
                                                  " N/m; above 1e9 times the contact force is lost to roundoff "
                                                  "(docs/case-files.md, Limits)"});
             continue;
@@ -150,8 +145,8 @@ void check_scales(std::vector<CaseProblem>& out, const Case& c) {
         const double damp = cc * est.omega1 / k_beam;
         if (damp > kMaxContactRatio) {
             out.push_back({at + (ratio ? "damping_ratio" : "damping"),
-                           "gives a damper force at omega_1 " + number(damp) + " times the beam's EI/l^3 = " +
-                               number(k_beam) + " N/m; above 1e9 times the contact force is lost to roundoff "
+                           "gives a damper force at omega_1 " + significant(damp, 3) + " times the beam's EI/l^3 = " +
+                               significant(k_beam, 3) + " N/m; above 1e9 times the contact force is lost to roundoff "
                                "(docs/case-files.md, Limits)"});
         }
     }

@@ -3,6 +3,7 @@
 // (a sweep point's --point-timeout), both checked inside the solvers' loops by check_run().
 
 #include <atomic>
+#include <chrono>
 #include <stdexcept>
 #include <string>
 
@@ -70,6 +71,11 @@ private:
 
 // Seconds since this thread's current time limit began, or 0 without one.
 double time_limit_elapsed();
+
+// Wall-clock seconds since t0 (steady clock), for the time figures that results report.
+inline double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
 
 // Throws StopRequested when a stop was requested, TimeLimitReached when this thread's time limit has
 // passed. Cheap (an atomic load; the clock only when a limit is set): call it in every solver loop.

@@ -1,4 +1,5 @@
 #include "model/run_estimate.hpp"
+#include "model/number_format.hpp"
 
 #include <unistd.h>
 
@@ -26,12 +27,6 @@ double first_root(EndCondition a, EndCondition b) {
 // Bending DOFs held by an end condition.
 int held(EndCondition e) { return e == EndCondition::clamped ? 2 : e == EndCondition::pinned ? 1 : 0; }
 
-std::string short_number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.2g", v);
-    return buf;
-}
-
 // The cgroup (v2, then v1) memory limit of this process [bytes]; 0 when there is none.
 double cgroup_memory_limit() {
     for (const char* path : {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"}) {
@@ -48,7 +43,7 @@ std::string bytes_text(double bytes) {
     const char* units[] = {"bytes", "kB", "MB", "GB", "TB", "PB", "EB"};
     int k = 0;
     for (; k < 6 && bytes >= 1000.0; ++k) bytes /= 1000.0;
-    if (bytes >= 1000.0) return short_number(bytes * 1e18) + " bytes";
+    if (bytes >= 1000.0) return significant(bytes * 1e18, 2) + " bytes";
     char buf[32];
     std::snprintf(buf, sizeof buf, bytes >= 10.0 ? "%.0f" : "%.2g", bytes);
     return std::string(buf) + " " + units[k];
@@ -130,9 +125,9 @@ std::vector<CaseProblem> check_transient_run(const Case& c, bool history, double
     const double tau = e.shortest_time_scale;
     if (tau > 0.0 && c.solver.horizon > kMaxHorizonRatio * tau) {
         out.push_back({"solver.horizon",
-                       short_number(c.solver.horizon) + " s is " + short_number(c.solver.horizon / tau) +
+                       significant(c.solver.horizon, 2) + " s is " + significant(c.solver.horizon / tau, 2) +
                            " times the shortest time scale to resolve (" + e.time_scale_source + ", " +
-                           short_number(tau) + " s); above " + short_number(kMaxHorizonRatio) +
+                           significant(tau, 2) + " s); above " + significant(kMaxHorizonRatio, 2) +
                            " times, double precision no longer resolves event times (docs/case-files.md, Limits)"});
     }
     const bool kept = history || cvode;
@@ -140,10 +135,10 @@ std::vector<CaseProblem> check_transient_run(const Case& c, bool history, double
     const std::string budget = "this machine allows a run " + bytes_text(memory_budget);
     const bool over_memory = history_bytes + e.solver_bytes > memory_budget;
     if (kept && (e.samples > kMaxSamples || (over_memory && history_bytes > e.solver_bytes))) {
-        out.push_back({"solver.output_step", short_number(e.samples) + " samples over solver.horizon (" +
-                                                 short_number(c.solver.horizon) + " s), about " +
+        out.push_back({"solver.output_step", significant(e.samples, 2) + " samples over solver.horizon (" +
+                                                 significant(c.solver.horizon, 2) + " s), about " +
                                                  bytes_text(history_bytes) + " of time history (at most " +
-                                                 short_number(kMaxSamples) + " samples; " + budget +
+                                                 significant(kMaxSamples, 2) + " samples; " + budget +
                                                  "): raise output_step or shorten horizon"});
     } else if (over_memory) {
         out.push_back({"beam.elements", std::to_string(static_cast<long>(e.bending_dofs)) +

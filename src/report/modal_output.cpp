@@ -1,6 +1,7 @@
 #include "report/modal_output.hpp"
 
 #include "modal/shape_sampling.hpp"
+#include "model/number_format.hpp"
 
 #include <cstdio>
 #include <limits>
@@ -39,17 +40,11 @@ const char* model_name(SupportModel m) {
     return "none";
 }
 
-std::string fmt(const char* f, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, v);
-    return buf;
-}
-
 std::string list_text(const std::vector<double>& xs) {
     std::string s;
     for (double x : xs) {
         if (!s.empty()) s += ' ';
-        s += fmt("%.4f", x);
+        s += formatted("%.4f", x);
     }
     return s.empty() ? "-" : s;
 }
@@ -58,8 +53,8 @@ std::string peaks_text(const std::vector<ShapePeak>& ps) {
     std::string s;
     for (const ShapePeak& p : ps) {
         if (!s.empty()) s += ' ';
-        s += fmt("%.4f", p.x);
-        s += fmt("(%.3f)", p.amplitude);
+        s += formatted("%.4f", p.x);
+        s += formatted("(%.3f)", p.amplitude);
     }
     return s.empty() ? "-" : s;
 }
@@ -69,19 +64,19 @@ void bending_table(std::string& out, const std::vector<Mode>& modes, const std::
     out += ratios ? "   w_i/w_in\n" : "\n";
     for (std::size_t i = 0; i < modes.size(); ++i) {
         const Mode& m = modes[i];
-        out += fmt("  %4.0f", m.number) + fmt("  %15.6e", m.frequency_hz) + fmt("  %15.6e", m.omega) +
-               fmt("  %13.5f", m.omega / modes.front().omega);
-        if (ratios && i < ratios->size()) out += fmt("  %9.5f", (*ratios)[i]);
+        out += formatted("  %4.0f", m.number) + formatted("  %15.6e", m.frequency_hz) + formatted("  %15.6e", m.omega) +
+               formatted("  %13.5f", m.omega / modes.front().omega);
+        if (ratios && i < ratios->size()) out += formatted("  %9.5f", (*ratios)[i]);
         out += "\n";
     }
     out += "  mode   nodal points of v (x/l) | of theta (x/l)\n";
     for (const Mode& m : modes) {
-        out += fmt("  %4.0f   ", m.number) + list_text(m.features.nodes) + " | " +
+        out += formatted("  %4.0f   ", m.number) + list_text(m.features.nodes) + " | " +
                list_text(m.features.rotation_nodes) + "\n";
     }
     out += "  mode   peaks of |v|: x/l(amplitude) | peaks of |theta|\n";
     for (const Mode& m : modes) {
-        out += fmt("  %4.0f   ", m.number) + peaks_text(m.features.peaks) + " | " +
+        out += formatted("  %4.0f   ", m.number) + peaks_text(m.features.peaks) + " | " +
                peaks_text(m.features.rotation_peaks) + "\n";
     }
 }
@@ -112,7 +107,7 @@ std::string modal_study_text(const ModalStudy& study) {
     bending_table(out, study.unsupported.bending, nullptr);
     out += "Unsupported beam: axial modes\n  mode   frequency [Hz]    omega [rad/s]\n";
     for (const Mode& m : study.unsupported.axial) {
-        out += fmt("  %4.0f", m.number) + fmt("  %15.6e", m.frequency_hz) + fmt("  %15.6e", m.omega) + "\n";
+        out += formatted("  %4.0f", m.number) + formatted("  %15.6e", m.frequency_hz) + formatted("  %15.6e", m.omega) + "\n";
     }
     if (!study.supported.bending.empty()) {
         out += std::string("Supported beam (supports as ") + model_name(study.support_model) + "): bending modes\n";

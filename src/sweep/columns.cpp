@@ -5,6 +5,12 @@
 #include "io/number_text.hpp"
 
 namespace vi {
+
+std::optional<double> numeric_cell(const SweepCell& cell) {
+    if (const double* d = std::get_if<double>(&cell)) return *d;
+    if (const std::int64_t* n = std::get_if<std::int64_t>(&cell)) return static_cast<double>(*n);
+    return std::nullopt;
+}
 namespace {
 
 SweepCell opt(const std::optional<double>& v) { return v ? SweepCell(*v) : SweepCell(); }

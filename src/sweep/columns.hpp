@@ -2,6 +2,7 @@
 // The result columns of a sweep, per analysis, and one point's values for them.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -24,6 +25,9 @@ struct SweepColumn {
 // writes the missing-value marker "nan"), a number, a count, or text (Tp_reason, a list of nodal
 // points).
 using SweepCell = std::variant<std::monostate, double, std::int64_t, std::string>;
+
+// A cell's number (a count as a double), or nullopt for an empty or text cell.
+std::optional<double> numeric_cell(const SweepCell& cell);
 
 // How many impacts get their own columns in a simulate sweep.
 inline constexpr int kSweepImpactColumns = 3;

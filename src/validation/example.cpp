@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include "model/run_control.hpp"
 #include "impacts/simulation.hpp"
 #include "validation/report.hpp"
 
@@ -16,9 +17,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-std::string opt_us(const std::optional<double>& v) { return v ? us(*v) : "n/a"; }
 
 std::string opt_rel(const std::optional<double>& a, const std::optional<double>& b) {
     return a && b ? err(rel(*a, *b)) : "n/a";

@@ -9,6 +9,7 @@
 #include <optional>
 #include <sstream>
 
+#include "model/run_control.hpp"
 #include "validation/closed_forms.hpp"
 #include "impacts/simulation.hpp"
 #include "validation/report.hpp"
@@ -21,9 +22,7 @@ namespace {
 using namespace validation_detail;
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-std::string opt_us(const std::optional<double>& v) { return v ? us(*v, 3) : "n/a"; }
 
 SimulationRun run_fast(const Case& c) {
     SimulationOptions so;
@@ -65,7 +64,7 @@ std::string paper_parameters_report(const ValidationOptions& o) {
     Table t{{"parameter", "value in the example", "why"}, {}};
     t.add({"contact stiffness Kc (`supports[0].stiffness`)", num(sup.stiffness, 4) + " N/m",
            "The contact phase shortens as Kc grows (scan below); at this value the first period T = " +
-               opt_us(sm.T_first) +
+               opt_us(sm.T_first, 3) +
                " us is close to the rigid-contact limit while the contact stays a finite spring whose "
                "penetration (" +
                (sm.impacts.empty() ? std::string("n/a") : num(sm.impacts.front().peak_penetration * 1e9, 3)) +
@@ -102,7 +101,7 @@ std::string paper_parameters_report(const ValidationOptions& o) {
            "With zero gap the model is positively homogeneous: scaling y0 scales every displacement and force "
            "and leaves every time (T, T1, T2, T_p) unchanged."});
     t.add({"horizon (`solver.horizon`)", us(c.solver.horizon, 1) + " us",
-           "T_p of the example is " + opt_us(sm.Tp) + " us (" + sm.Tp_reason +
+           "T_p of the example is " + opt_us(sm.Tp, 3) + " us (" + sm.Tp_reason +
                "); the horizon leaves room to see that the impacts have died out."});
     const double step = c.solver.output_step > 0 ? c.solver.output_step : c.solver.horizon / 2000.0;
     t.add({"output step (`solver.output_step`)", us(step, 3) + " us",
@@ -115,7 +114,7 @@ std::string paper_parameters_report(const ValidationOptions& o) {
                                   : "default: a quarter of the first unsupported period, " + us(0.25 * period1, 3) + " us",
            "Higher modes make the tip chatter: one impact in the paper's sense is several contact episodes "
            "separated by very short flights. A rebound's flight lasts about half the first period (T1 = " +
-               opt_us(sm.T1_first) + " us here), so flights shorter than a quarter period are chatter. The "
+               opt_us(sm.T1_first, 3) + " us here), so flights shorter than a quarter period are chatter. The "
                "example has " + std::to_string(base.result.episodes.size()) + " episodes in " +
                std::to_string(sm.impacts.size()) + " impacts."});
     t.add({"settle tolerance (`solver.settle_tolerance`)", num(c.solver.settle_tolerance, 3),
@@ -161,7 +160,7 @@ std::string paper_parameters_report(const ValidationOptions& o) {
             std::sort(first.begin(), first.end());
             row.median = row.n % 2 ? first[row.n / 2] : 0.5 * (first[row.n / 2 - 1] + first[row.n / 2]);
         }
-        k.add({fixed(K, 0), opt_us(x.T_first), opt_us(x.T1_first), opt_us(x.T2_first), row.n ? list : "n/a",
+        k.add({fixed(K, 0), opt_us(x.T_first, 3), opt_us(x.T1_first, 3), opt_us(x.T2_first, 3), row.n ? list : "n/a",
                row.n ? us(row.mean, 3) : "n/a", row.n ? us(row.median, 3) : "n/a"});
         scan.push_back(row);
     }
@@ -212,7 +211,7 @@ std::string paper_parameters_report(const ValidationOptions& o) {
       << fixed(100.0 * (best_T / 5.1e-6 - 1.0), 1) << " % more (and " << fixed(100.0 * (best_T / 4.9e-6 - 1.0), 1)
       << " % more than the measured 4.9 us). The flight alone, half the free period, takes " << us(flight, 2)
       << " us of it, and it is set by the beam, not by the contact. The example's Kc = " << num(sup.stiffness, 4)
-      << " N/m gives T = " << opt_us(sm.T_first) << " us, "
+      << " N/m gives T = " << opt_us(sm.T_first, 3) << " us, "
       << (sm.T_first ? fixed(100.0 * (*sm.T_first / best_T - 1.0), 1) : std::string("n/a"))
       << " % above the stiffest contact scanned.";
     // Later cycles: the mean of the first five can dip through one irregular short cycle.

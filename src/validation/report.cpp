@@ -43,6 +43,8 @@ std::string fixed(double v, int decimals) { return printf_string("%.*f", decimal
 
 std::string us(double seconds, int decimals) { return fixed(seconds * 1e6, decimals); }
 
+std::string opt_us(const std::optional<double>& seconds, int decimals) { return seconds ? us(*seconds, decimals) : "n/a"; }
+
 std::string Table::str() const {
     std::ostringstream s;
     auto line = [&](const std::vector<std::string>& cells) {

@@ -5,6 +5,7 @@
 // is generated; nothing depends on the date or on timing, so a regeneration is reproducible.
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,7 @@ std::string num(double v, int sig = 6);
 std::string err(double v);
 std::string fixed(double v, int decimals);
 std::string us(double seconds, int decimals = 4);   // "5.4497"
+std::string opt_us(const std::optional<double>& seconds, int decimals = 4);  // us, or "n/a" when none
 
 // A Markdown table.
 struct Table {

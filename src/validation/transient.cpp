@@ -9,6 +9,7 @@
 #include <optional>
 #include <sstream>
 
+#include "model/run_control.hpp"
 #include "impacts/impact_summary.hpp"
 #include "validation/report.hpp"
 #include "dynamics/cvode_solver.hpp"
@@ -19,7 +20,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 std::string wall(double s) { return " (" + fixed(s, 1) + " s)"; }
 

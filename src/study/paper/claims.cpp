@@ -21,7 +21,7 @@ void modal_claims(const PaperStudy& st, std::vector<Claim>& out) {
         const double r = modes.at(2).omega / modes.at(0).omega;
         const double closed = std::pow(beta[2] / beta[0], 2);
         out.push_back({"Sec. 3-4", "omega_3 / omega_1 = 17 (\"nearly 17 times\")",
-                       "omega_3 / omega_1 = " + fixed(r, 3) + " (closed form (beta_3 l / beta_1 l)^2 = " + fixed(closed, 3) + ")",
+                       "omega_3 / omega_1 = " + decimals(r, 3) + " (closed form (beta_3 l / beta_1 l)^2 = " + decimals(closed, 3) + ")",
                        std::abs(r - 17.0) / 17.0 < 0.05 ? Verdict::agrees : Verdict::disagrees,
                        "The paper rounds: ours is " + pct(r / 17.0 - 1.0) + " above 17."});
         out.back().id = "omega3_over_omega1";
@@ -45,7 +45,7 @@ void modal_claims(const PaperStudy& st, std::vector<Claim>& out) {
             out.push_back({"Figs. 2, 6", c.text, "not found", Verdict::not_computed, ""});
             continue;
         }
-        out.push_back({"Figs. 2, 6", c.text, "x/l = " + fixed(*x, 4) + " (closed form " + fixed(closed, 4) + ")",
+        out.push_back({"Figs. 2, 6", c.text, "x/l = " + decimals(*x, 4) + " (closed form " + decimals(closed, 4) + ")",
                        std::abs(*x - c.paper) < 0.005 ? Verdict::agrees : Verdict::disagrees,
                        "The paper's value is ours rounded to two decimals."});
         out.back().id = c.id;
@@ -63,13 +63,13 @@ void modal_claims(const PaperStudy& st, std::vector<Claim>& out) {
         const std::vector<double> slope0 = closed_form::cantilever_slope_zeros(beta[2]);
         std::string closed;
         for (double s : slope0) {
-            if (s > 0.5 && s < 0.87) closed = fixed(s, 4);
+            if (s > 0.5 && s < 0.87) closed = decimals(s, 4);
         }
         if (peak) {
             out.push_back({"Figs. 2, 4, 7", "the peak (maximum amplitude point) of mode 3 at x/l = 0.67",
-                           "x/l = " + fixed(*peak, 4) + " (closed form " + closed + ")",
+                           "x/l = " + decimals(*peak, 4) + " (closed form " + closed + ")",
                            std::abs(*peak - 0.67) < 0.005 ? Verdict::agrees : Verdict::disagrees,
-                           "Ours lies " + fixed(*peak - 0.67, 3) +
+                           "Ours lies " + decimals(*peak - 0.67, 3) +
                                " above the paper's 0.67, and agrees with the Euler-Bernoulli closed form; 0.67 is "
                                "not a particular point of any of the first five modes of our beam."});
             out.back().id = "peak_mode3";
@@ -80,11 +80,11 @@ void modal_claims(const PaperStudy& st, std::vector<Claim>& out) {
         const RatioPeak& rp = st.ratio_peak;
         const double w21 = modes.at(1).omega / modes.at(0).omega;
         out.push_back({"Fig. 8", "the first supported frequency is largest with the support at x0/l = 0.78",
-                       "largest omega_1/omega_1n = " + fixed(rp.ratio, 4) + " at x0/l = " + fixed(rp.x0, 4) +
+                       "largest omega_1/omega_1n = " + decimals(rp.ratio, 4) + " at x0/l = " + decimals(rp.x0, 4) +
                            " (golden-section search)",
                        std::abs(rp.x0 - 0.78) <= kPointTolerance ? Verdict::agrees : Verdict::disagrees,
                        "At the nodal point of mode 2 the free beam's mode 2 is also a mode of the pinned beam, so the "
-                       "peak ratio equals omega_2/omega_1 = " + fixed(w21, 4) + "."});
+                       "peak ratio equals omega_2/omega_1 = " + decimals(w21, 4) + "."});
         out.back().id = "ratio1_peak";
         out.back().values = {{"x0_over_l", rp.x0}, {"ratio", rp.ratio}, {"omega2_over_omega1", w21}};
     }
@@ -105,14 +105,14 @@ void rebound_claims(const PaperStudy& st, std::vector<Claim>& out) {
                                 PointClaim{0.67, "smallest rebound z_max also at x0/l = 0.67", "rebound_min_067"},
                                 PointClaim{0.78, "a slight decrease of the rebound at x0/l = 0.78", "rebound_min_078"}}) {
         const auto near = nearest_minimum(minima, c.p);
-        std::string ours = near ? "nearest local minimum at x0/l = " + fixed(near->x, 3) + " (z_max = " + fixed(near->y * 1e3, 3) +
-                                      "e-3, prominence " + fixed(near->prominence * 1e3, 3) + "e-3)"
+        std::string ours = near ? "nearest local minimum at x0/l = " + decimals(near->x, 3) + " (z_max = " + decimals(near->y * 1e3, 3) +
+                                      "e-3, prominence " + decimals(near->prominence * 1e3, 3) + "e-3)"
                                 : "no local minimum";
         const TransientPoint* at = point_at(ref, c.p);
-        if (at && at->z_max) ours += "; z_max(" + fixed(c.p, 2) + ") = " + fixed(*at->z_max * 1e3, 3) + "e-3";
+        if (at && at->z_max) ours += "; z_max(" + decimals(c.p, 2) + ") = " + decimals(*at->z_max * 1e3, 3) + "e-3";
         const Verdict v = at_point(near, c.p);
         out.push_back({"Fig. 4, m = " + m, c.text, ours, v,
-                       v == Verdict::agrees ? "Within " + fixed(kPointTolerance, 3) + " of the paper's point."
+                       v == Verdict::agrees ? "Within " + decimals(kPointTolerance, 3) + " of the paper's point."
                                             : "Local minima of our m = " + m + " curve: x0/l = " + minima_list(minima, 3) + "."});
         out.back().id = c.id;
         if (near) out.back().values = {{"nearest_minimum_x0_over_l", near->x}, {"nearest_minimum_z_max", near->y}};
@@ -161,10 +161,10 @@ void duration_claims(const PaperStudy& st, std::vector<Claim>& out) {
     for (double p : {0.87, 0.78, 0.67}) {
         const TransientPoint* at = point_at(ref, p);
         const auto near = nearest_minimum(minima, p);
-        std::string ours = "tau_p(" + fixed(p, 2) + ") = " + (at && at->tau_p ? fixed(*at->tau_p, 1) : std::string("not reached"));
-        if (tip && tip->tau_p) ours += ", tau_p(1) = " + fixed(*tip->tau_p, 1);
-        if (med) ours += ", median over the scan " + fixed(*med, 1);
-        ours += near ? "; nearest local minimum of tau_p at x0/l = " + fixed(near->x, 3) : "; no local minimum";
+        std::string ours = "tau_p(" + decimals(p, 2) + ") = " + (at && at->tau_p ? decimals(*at->tau_p, 1) : std::string("not reached"));
+        if (tip && tip->tau_p) ours += ", tau_p(1) = " + decimals(*tip->tau_p, 1);
+        if (med) ours += ", median over the scan " + decimals(*med, 1);
+        ours += near ? "; nearest local minimum of tau_p at x0/l = " + decimals(near->x, 3) : "; no local minimum";
         Verdict v = at_point(near, p);
         if (v == Verdict::disagrees && at && at->tau_p && med && *at->tau_p < *med) v = Verdict::partly;
         std::string note;
@@ -174,11 +174,11 @@ void duration_claims(const PaperStudy& st, std::vector<Claim>& out) {
         }
         note += "T_p ends at the last impact above 1 % of the first one's penetration, so it moves in steps of about one "
                 "period as the support moves; " +
-                (missing == 0 ? "all " + std::to_string(taup.size()) + " positions settled within the " + fixed(ref.horizon * 1e6, 0) + " us horizon."
+                (missing == 0 ? "all " + std::to_string(taup.size()) + " positions settled within the " + decimals(ref.horizon * 1e6, 0) + " us horizon."
                               : std::to_string(missing) + " of " + std::to_string(taup.size()) + " positions did not settle within the " +
-                                    fixed(ref.horizon * 1e6, 0) + " us horizon (gaps in Fig. 5).");
-        out.push_back({"Fig. 5", "a shorter transient (tau_p = omega_1 T_p) with the support at x0/l = " + fixed(p, 2), ours, v, note});
-        out.back().id = "shorter_transient_" + fixed(p * 100, 0);
+                                    decimals(ref.horizon * 1e6, 0) + " us horizon (gaps in Fig. 5).");
+        out.push_back({"Fig. 5", "a shorter transient (tau_p = omega_1 T_p) with the support at x0/l = " + decimals(p, 2), ours, v, note});
+        out.back().id = "shorter_transient_" + decimals(p * 100, 0);
         out.back().values["unsettled_positions"] = missing;
         if (at && at->tau_p) out.back().values["tau_p_at_point"] = *at->tau_p;
         if (tip && tip->tau_p) out.back().values["tau_p_at_tip"] = *tip->tau_p;

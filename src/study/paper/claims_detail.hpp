@@ -10,14 +10,9 @@
 
 #include "study/paper/curve_features.hpp"
 #include "study/paper/claims.hpp"
+#include "model/number_format.hpp"
 
 namespace vi::claims_detail {
-
-inline std::string fixed(double v, int decimals) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
-}
 
 inline std::string pct(double v) {
     if (v != 0.0 && std::abs(v) < 1e-3) {
@@ -25,7 +20,7 @@ inline std::string pct(double v) {
         std::snprintf(buf, sizeof buf, "%.1e %%", 100.0 * v);
         return buf;
     }
-    return fixed(100.0 * v, 1) + " %";
+    return decimals(100.0 * v, 1) + " %";
 }
 
 // The verdict on "a minimum of the curve lies at the paper's point p".
@@ -37,10 +32,10 @@ inline Verdict at_point(const std::optional<CurveMinimum>& m, double p) {
     return Verdict::disagrees;
 }
 
-inline std::string minima_list(const std::vector<CurveMinimum>& minima, int decimals) {
+inline std::string minima_list(const std::vector<CurveMinimum>& minima, int places) {
     if (minima.empty()) return "none";
     std::string s;
-    for (const CurveMinimum& m : minima) s += (s.empty() ? "" : ", ") + fixed(m.x, decimals);
+    for (const CurveMinimum& m : minima) s += (s.empty() ? "" : ", ") + decimals(m.x, places);
     return s;
 }
 

@@ -19,10 +19,10 @@ void prestress_claim(const PaperStudy& st, std::vector<Claim>& out) {
         return;
     }
     const TransientPoint& low = s.points[*lowest];
-    std::string ours = minima.empty() ? "no local minimum" : "first local minimum of z_max at Delta/l = " + fixed(minima.front().x, 4) +
-                                                                 " (z_max = " + fixed(minima.front().y * 1e3, 3) + "e-3)";
-    ours += "; smallest z_max of the scan " + fixed(*low.z_max * 1e3, 3) + "e-3 at Delta/l = " + fixed(low.x, 4) + " (scan up to " +
-            fixed(s.points.back().x, 3) + ")";
+    std::string ours = minima.empty() ? "no local minimum" : "first local minimum of z_max at Delta/l = " + decimals(minima.front().x, 4) +
+                                                                 " (z_max = " + decimals(minima.front().y * 1e3, 3) + "e-3)";
+    ours += "; smallest z_max of the scan " + decimals(*low.z_max * 1e3, 3) + "e-3 at Delta/l = " + decimals(low.x, 4) + " (scan up to " +
+            decimals(s.points.back().x, 3) + ")";
     // Prestress is read relative to the paper's point: within a quarter of it agrees.
     Verdict v = Verdict::disagrees;
     if (!minima.empty()) {
@@ -33,8 +33,8 @@ void prestress_claim(const PaperStudy& st, std::vector<Claim>& out) {
                        "Delta / y0";
     if (!minima.empty()) {
         const double ratio = minima.front().x * l / y0;
-        note += " = " + fixed(ratio, 2) + " for our lift y0 = " + fixed(y0 * 1e6, 2) + " um. The paper does not give its lift; " +
-                "the paper's point B would need y0 = " + fixed(0.01 * l / ratio * 1e6, 2) + " um.";
+        note += " = " + decimals(ratio, 2) + " for our lift y0 = " + decimals(y0 * 1e6, 2) + " um. The paper does not give its lift; " +
+                "the paper's point B would need y0 = " + decimals(0.01 * l / ratio * 1e6, 2) + " um.";
     } else {
         note += ".";
     }
@@ -74,16 +74,16 @@ void velocity_force_claim(const PaperStudy& st, std::vector<Claim>& out) {
             const auto nf = nearest_minimum(f_min[k], p);
             hits += at_point(nv, p) == Verdict::agrees;
             hits += at_point(nf, p) == Verdict::agrees;
-            v_text += std::string(k ? ", " : "") + names[k] + " " + (nv ? fixed(nv->x, 3) : std::string("none"));
-            f_text += std::string(k ? ", " : "") + names[k] + " " + (nf ? fixed(nf->x, 3) : std::string("none"));
+            v_text += std::string(k ? ", " : "") + names[k] + " " + (nv ? decimals(nv->x, 3) : std::string("none"));
+            f_text += std::string(k ? ", " : "") + names[k] + " " + (nf ? decimals(nf->x, 3) : std::string("none"));
         }
         const Verdict v = hits == 6 ? Verdict::agrees : hits > 0 ? Verdict::partly : Verdict::disagrees;
         out.push_back({"Fig. 10",
-                       "lower pre-impact velocity and contact force with the support at x0/l = " + fixed(p, 2) +
+                       "lower pre-impact velocity and contact force with the support at x0/l = " + decimals(p, 2) +
                            " (a particular point of mode 3)",
                        "nearest local minimum of |v_in|, impacts " + v_text + "; of the peak force P, impacts " + f_text,
-                       v, std::to_string(hits) + " of the 6 curves have a local minimum within " + fixed(kPointTolerance, 3) + " of " + fixed(p, 2) + "."});
-        out.back().id = "impact_minima_" + fixed(p * 100, 0);
+                       v, std::to_string(hits) + " of the 6 curves have a local minimum within " + decimals(kPointTolerance, 3) + " of " + decimals(p, 2) + "."});
+        out.back().id = "impact_minima_" + decimals(p * 100, 0);
         out.back().values = {{"curves_with_minimum", hits}};
     }
 }
@@ -113,8 +113,8 @@ void force_shape_claim(const PaperStudy& st, std::vector<Claim>& out) {
     out.push_back({"Fig. 11",
                    "at x0/l = 0.87 the contact force is lower in the first stage of the impact than in the second; at x0/l = 1 the "
                    "opposite",
-                   "largest force in the first / second half of the first impact: " + fixed(i1 * 1e6, 1) + " / " + fixed(i2 * 1e6, 1) +
-                       " uN at 0.87, " + fixed(t1 * 1e6, 1) + " / " + fixed(t2 * 1e6, 1) + " uN at 1",
+                   "largest force in the first / second half of the first impact: " + decimals(i1 * 1e6, 1) + " / " + decimals(i2 * 1e6, 1) +
+                       " uN at 0.87, " + decimals(t1 * 1e6, 1) + " / " + decimals(t2 * 1e6, 1) + " uN at 1",
                    inner_ok && tip_ok ? Verdict::agrees : (inner_ok || tip_ok) ? Verdict::partly : Verdict::disagrees,
                    "The impact is the paper's: contact episodes closer than a quarter of the first period are one impact."});
     out.back().id = "force_stages";
@@ -133,12 +133,12 @@ void period_claim(const PaperStudy& st, std::vector<Claim>& out) {
     const double contact = st.pinned_tip_omega1 > 0.0 ? std::numbers::pi / st.pinned_tip_omega1 : 0.0;
     const double rigid = flight + contact;
     out.push_back({"Fig. 3", "period of free impact vibrations T = 5.1 us (measured 4.9 us)",
-                   "T = " + fixed(T * 1e6, 3) + " us (first cycle; T1 = " + (t.summary.T1_first ? fixed(*t.summary.T1_first * 1e6, 3) : "n/a") +
-                       " us, T2 = " + (t.summary.T2_first ? fixed(*t.summary.T2_first * 1e6, 3) : "n/a") + " us)",
+                   "T = " + decimals(T * 1e6, 3) + " us (first cycle; T1 = " + (t.summary.T1_first ? decimals(*t.summary.T1_first * 1e6, 3) : "n/a") +
+                       " us, T2 = " + (t.summary.T2_first ? decimals(*t.summary.T2_first * 1e6, 3) : "n/a") + " us)",
                    std::abs(T - 5.1e-6) / 5.1e-6 <= 0.02 ? Verdict::agrees : Verdict::disagrees,
                    "Ours is " + pct(T / 5.1e-6 - 1.0) + " above the paper's 5.1 us. No contact stiffness closes the gap: a rigid, "
-                   "perfectly holding contact gives pi/omega_1 + pi/omega_1,pinned = " + fixed(flight * 1e6, 3) + " + " +
-                       fixed(contact * 1e6, 3) + " = " + fixed(rigid * 1e6, 3) +
+                   "perfectly holding contact gives pi/omega_1 + pi/omega_1,pinned = " + decimals(flight * 1e6, 3) + " + " +
+                       decimals(contact * 1e6, 3) + " = " + decimals(rigid * 1e6, 3) +
                        " us, still " + pct(rigid / 5.1e-6 - 1.0) + " above (docs/paper-parameters.md). The flight alone, half the "
                        "first free period, is set by the beam's stated geometry and material."});
     out.back().id = "period_T";

@@ -48,16 +48,10 @@ ChartSeries series(std::string label, std::string x, std::string y, ChartSeries:
 std::vector<double> particular_marks() { return {0.67, 0.78, 0.87}; }
 
 std::string scan_xrange(const PaperStudy& st) {
-    return "set xrange [" + num(st.options.position_min - 0.02, 4) + ":1]\n";
+    return "set xrange [" + significant(st.options.position_min - 0.02, 4) + ":1]\n";
 }
 
-std::string num(double v, int sig) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*g", sig, v);
-    return buf;
-}
-
-std::string us(double seconds) { return num(seconds * 1e6, 4); }
+std::string us(double seconds) { return significant(seconds * 1e6, 4); }
 
 }  // namespace figure_detail
 

@@ -6,6 +6,7 @@
 #include "io/csv_writer.hpp"
 #include "study/paper/study.hpp"
 #include "plot/figure_gnuplot.hpp"
+#include "model/number_format.hpp"
 
 namespace vi {
 
@@ -34,7 +35,6 @@ std::string particular_points();
 std::string scan_xrange(const PaperStudy& st);
 
 // "%.4g" of a number, for captions and labels; us(): seconds as microseconds, 4 digits.
-std::string num(double v, int sig = 4);
 std::string us(double seconds);
 
 // Of a scan: " N runs failed (...)." or ""; how many runs ended before T_p; a point's status cell

@@ -38,8 +38,8 @@ FigureSpec fig9(const PaperStudy& st) {
       << st.options.cases.prestress.initial.displacement * 1e6 << ")" << extra << "\n";
     std::string caption = "Largest rebound of the free end above its (prestressed) equilibrium against the prestress Delta/l of a "
                           "support under the free end (" + std::to_string(s.points.size()) + " values, 0 to " +
-                          num(s.points.empty() ? 0.0 : s.points.back().x, 3) + "); the beam is lifted " +
-                          num(st.options.cases.prestress.initial.displacement * 1e6, 3) +
+                          significant(s.points.empty() ? 0.0 : s.points.back().x, 3) + "); the beam is lifted " +
+                          significant(st.options.cases.prestress.initial.displacement * 1e6, 3) +
                           " um above that equilibrium and released. The CSV also gives the equilibrium z_equilibrium (about Delta/l: "
                           "the paper's diagonal) and the highest point z_top above the unloaded axis." + failures(s);
     FigureSpec fig{"fig9", "Fig. 9: rebound against prestress", caption, {{"fig9.csv", t.str()}}, p.str(), 1000, 620, 1.0, {}};
@@ -129,7 +129,7 @@ FigureSpec fig11(const PaperStudy& st) {
           << k + 1 << ") title sprintf('x_0/l = %g: T_2 = %.3f μs, τ_2 = %.3f, " << f.impact.episodes << " episode(s)', " << f.x0
           << ", " << T2 * 1e6 << ", " << T2 * f.omega1 << ")";
         cmd = ", \\\n  ";
-        caption += (k ? (k + 1 == st.forces.size() ? " and " : ", ") : " ") + num(f.x0, 3) + " (T2 = " + us(T2) + " us)";
+        caption += (k ? (k + 1 == st.forces.size() ? " and " : ", ") : " ") + significant(f.x0, 3) + " (T2 = " + us(T2) + " us)";
     }
     p << "\n";
     caption += "; sampled every 2.5 ns. Top axis: the same time made dimensionless with the first free frequency.";
@@ -139,7 +139,7 @@ FigureSpec fig11(const PaperStudy& st) {
     c.y_label = "contact force P [μN]";
     for (std::size_t k = 0; k < st.forces.size(); ++k) {
         const ImpactForce& f = st.forces[k];
-        ChartSeries s = series("x0/l = " + num(f.x0, 4), "t_us", "force_un", ChartSeries::Style::lines, color(static_cast<int>(k) + 1));
+        ChartSeries s = series("x0/l = " + significant(f.x0, 4), "t_us", "force_un", ChartSeries::Style::lines, color(static_cast<int>(k) + 1));
         s.where = {{"x0_over_l", csv_number(f.x0).text()}};
         c.series.push_back(s);
     }

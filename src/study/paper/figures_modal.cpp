@@ -66,8 +66,8 @@ FigureSpec fig2(const PaperStudy& st) {
     const auto& b = fm.result.bending;
     std::string nodes;
     if (b.size() >= 3 && !b[1].features.nodes.empty() && b[2].features.nodes.size() >= 2) {
-        nodes = " The nodal points the paper builds on: y_21 = " + num(b[1].features.nodes[0]) + " (mode 2) and y_32 = " +
-                num(b[2].features.nodes[1]) + " (mode 3), the paper's 0.78 and 0.87.";
+        nodes = " The nodal points the paper builds on: y_21 = " + significant(b[1].features.nodes[0], 4) + " (mode 2) and y_32 = " +
+                significant(b[2].features.nodes[1], 4) + " (mode 3), the paper's 0.78 and 0.87.";
     }
     FigureSpec fig{"fig2", "Fig. 2: natural modes of the free cantilever",
                    "The first " + std::to_string(n) + " bending modes of the unsupported cantilever, mass-normalised and made "
@@ -305,8 +305,8 @@ FigureSpec fig8(const PaperStudy& st) {
       << ") every ::0::0 with points pointtype 6 pointsize 1.6 linecolor rgb 'black' notitle\n";
     FigureSpec fig{"fig8", "Fig. 8: supported over unsupported natural frequencies",
             "omega_i / omega_in for the first " + std::to_string(n) + " modes with a pin at x0/l (" + std::to_string(st.modal.size()) +
-                " positions); the circle marks the largest omega_1 ratio, " + num(st.ratio_peak.ratio) + " at x0/l = " +
-                num(st.ratio_peak.x0, 5) + " (golden-section search), where the paper puts it at 0.78.",
+                " positions); the circle marks the largest omega_1 ratio, " + significant(st.ratio_peak.ratio, 4) + " at x0/l = " +
+                significant(st.ratio_peak.x0, 5) + " (golden-section search), where the paper puts it at 0.78.",
             {{"fig8.csv", t.str()}}, p.str(), 1000, 620, 1.0, {}};
     ChartPanel c;
     c.x_label = "support position x0/l [-]";

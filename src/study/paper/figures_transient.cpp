@@ -63,7 +63,7 @@ FigureSpec fig3(const PaperStudy& st) {
     }
     const double y0_nm = t.y0 * 1e9;
     std::ostringstream p;
-    p << "set multiplot layout 2,1 title 'A typical free impact transient: support at the free end, lift y_0 = " << num(y0_nm / 1e3, 4)
+    p << "set multiplot layout 2,1 title 'A typical free impact transient: support at the free end, lift y_0 = " << significant(y0_nm / 1e3, 4)
       << " μm' font ',13'\nset grid lc rgb '#dddddd'\nset key top right\nset xzeroaxis lt -1\n"
       << "set ylabel 'free-end displacement y  [nm]'\nset xlabel 't  [μs]'\n";
     p << "set title '(a) the whole transient'\nset xrange [0:" << (t.t.empty() ? 1.0 : t.t.back() * 1e6) << "]\n";
@@ -113,13 +113,13 @@ FigureSpec fig3(const PaperStudy& st) {
         p << "plot 'fig3.csv' using 1:2 with lines linewidth 1.5 linecolor rgb '#1f77b4' title 'free end (grey: in contact)'\n";
     }
     p << "unset multiplot\n";
-    std::string text = "The free end of the paper's cantilever, lifted " + num(y0_nm / 1e3, 4) +
+    std::string text = "The free end of the paper's cantilever, lifted " + significant(y0_nm / 1e3, 4) +
                        " um by a static tip force and released onto a support at its free end (zero gap; Kc and Cc in the "
                        "parameter table), relative to its final equilibrium. First cycle: T = " +
                        (s.T_first ? us(*s.T_first) : "n/a") + " us, T1 = " + (s.T1_first ? us(*s.T1_first) : "n/a") +
                        " us, T2 = " + (s.T2_first ? us(*s.T2_first) : "n/a") + " us; T_p = " + (s.Tp ? us(*s.Tp) + " us (" + s.Tp_reason + ")" : "not reached (" + s.Tp_reason + ")") +
                        "; " + std::to_string(s.impacts.size()) + " impacts. The paper gives T = 5.1 us (see the claims). Sampled every " +
-                       num(t.output_step * 1e9, 3) + " ns; events and y_max are located exactly, not sampled.";
+                       significant(t.output_step * 1e9, 3) + " ns; events and y_max are located exactly, not sampled.";
     FigureSpec fig{"fig3", "Fig. 3: a typical free impact transient", text,
                    {{"fig3.csv", h.str()}, {"fig3_impacts.csv", im.str()}}, p.str(), 1100, 900, 1.0, {}};
     // (a) the whole transient, (b) the first cycles; grey: in contact; dashed: T_p.
@@ -179,7 +179,7 @@ FigureSpec fig4(const PaperStudy& st) {
     p << "\n";
     std::string caption = "Largest rebound of the free end above its equilibrium, z_max = y_max/l (upper curves), and its deepest "
                           "deflection while the beam is in contact (lower curves), as the support moves along the beam; lift " +
-                          num(st.typical.y0 * 1e6, 4) + " um at the free end, zero gap, Kc and Cc fixed. " +
+                          significant(st.typical.y0 * 1e6, 4) + " um at the free end, zero gap, Kc and Cc fixed. " +
                           std::to_string(n) + " positions per mesh.";
     for (const TransientScan& s : st.position_scans) caption += failures(s);
     FigureSpec fig{"fig4", "Fig. 4: rebound against support position", caption, {{"fig4.csv", t.str()}}, p.str(), 1000, 620, 1.0, {}};

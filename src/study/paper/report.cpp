@@ -7,19 +7,13 @@
 #include "plot/chart_json.hpp"
 #include "study/paper/study.hpp"
 #include "study/paper/figures.hpp"
+#include "model/number_format.hpp"
 
 namespace vi {
 namespace {
 
-using figure_detail::num;
 
-std::string fixed(double v, int decimals) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-    return buf;
-}
-
-std::string seconds(double s) { return fixed(s, 2) + " s"; }
+std::string seconds(double s) { return decimals(s, 2) + " s"; }
 
 void summary(ReportDocument& d, const std::vector<Claim>& claims) {
     int counts[4] = {0, 0, 0, 0};
@@ -44,7 +38,7 @@ void summary(ReportDocument& d, const std::vector<Claim>& claims) {
 void claims_table(ReportDocument& d, const std::vector<Claim>& claims) {
     d.heading(2, "The paper's claims beside our numbers", "claims");
     d.paragraph("Each row: what the paper says (its figure or section), what this run computes, and a plain verdict. A minimum "
-                "counts as at the paper's support position when it lies within " + fixed(kPointTolerance, 3) +
+                "counts as at the paper's support position when it lies within " + decimals(kPointTolerance, 3) +
                 " of it in x0/l (the scan step is about 0.014, the paper reads two decimals). The numbers are also in "
                 "`claims.json`.");
     std::vector<std::vector<std::string>> rows;
@@ -78,33 +72,33 @@ void what_was_run(ReportDocument& d, const PaperStudy& st, const ReportRun& run)
     rows.push_back({"program", run.version + "; `" + run.command + "`"});
     rows.push_back({"cases", o.cases.source + ": " + kCantileverFile + " (Figs. 2, 6-8), " + kFreeImpactFile + " (Figs. 3-5, 10, 11), " +
                                  kPrestressFile + " (Fig. 9)"});
-    rows.push_back({"beam", "nickel cantilever, l = " + num(c.beam.length * 1e6) + " um, w = " + num(c.beam.width * 1e6) + " um, t = " +
-                                num(c.beam.thickness * 1e6) + " um, E = " + num(c.material.youngs_modulus / 1e9) + " GPa, rho = " +
-                                num(c.material.density) + " kg/m^3, nu = " + num(c.material.poisson_ratio) +
+    rows.push_back({"beam", "nickel cantilever, l = " + significant(c.beam.length * 1e6, 4) + " um, w = " + significant(c.beam.width * 1e6, 4) + " um, t = " +
+                                significant(c.beam.thickness * 1e6, 4) + " um, E = " + significant(c.material.youngs_modulus / 1e9, 4) + " GPa, rho = " +
+                                significant(c.material.density, 4) + " kg/m^3, nu = " + significant(c.material.poisson_ratio, 4) +
                                 "; clamped at x = 0, free at x = l (the paper's values)"});
     std::string meshes;
     for (int m : o.meshes) meshes += (meshes.empty() ? "" : ", ") + std::to_string(m);
     rows.push_back({"finite elements", "Euler-Bernoulli frame elements, consistent mass; m = " + std::to_string(c.beam.elements) +
                                            " (the paper's mesh) for every figure, and m = " + meshes +
                                            " for the support-position transients of Figs. 4-5"});
-    rows.push_back({"first free frequency", "f_1 = " + num(st.free_modes.result.bending.at(0).frequency_hz / 1e3, 6) + " kHz, omega_1 = " +
-                                                num(st.free_modes.result.bending.at(0).omega, 6) + " rad/s (all tau = omega_1 T)"});
+    rows.push_back({"first free frequency", "f_1 = " + significant(st.free_modes.result.bending.at(0).frequency_hz / 1e3, 6) + " kHz, omega_1 = " +
+                                                significant(st.free_modes.result.bending.at(0).omega, 6) + " rad/s (all tau = omega_1 T)"});
     rows.push_back({"transient solver", "exact event-driven solution (modal exponentials per contact state, events by certified root "
                                         "search; no time step); the scans run without sampled history or energy ledger"});
     const auto positions = scan_positions(o.positions, o.position_min);
     rows.push_back({"support-position transients (Figs. 4, 5, 10)",
                     std::to_string(positions.size()) + " positions per mesh: " + std::to_string(o.positions) + " evenly from x0/l = " +
-                        num(o.position_min) + " to 1 (step " + num((1.0 - o.position_min) / (o.positions - 1), 3) +
-                        ") with 0.67, 0.78, 0.87 added; lift " + num(st.typical.y0 * 1e6) + " um at the free end, zero gap, horizon " +
-                        num(o.position_horizon * 1e6) + " us"});
+                        significant(o.position_min, 4) + " to 1 (step " + significant((1.0 - o.position_min) / (o.positions - 1), 3) +
+                        ") with 0.67, 0.78, 0.87 added; lift " + significant(st.typical.y0 * 1e6, 4) + " um at the free end, zero gap, horizon " +
+                        significant(o.position_horizon * 1e6, 4) + " us"});
     rows.push_back({"supported modes (Figs. 6-8)", std::to_string(st.modal.size()) + " positions x0/l = 1/" + std::to_string(st.modal.size()) +
                                                        " ... 1, support as a pin v(x0) = 0 (the paper's pin joint)"});
-    rows.push_back({"prestress (Fig. 9)", std::to_string(st.prestress.points.size()) + " values of Delta/l from 0 to " + num(o.prestress_max) +
+    rows.push_back({"prestress (Fig. 9)", std::to_string(st.prestress.points.size()) + " values of Delta/l from 0 to " + significant(o.prestress_max, 4) +
                                               ", support at the free end, lift " +
-                                              num(o.cases.prestress.initial.displacement * 1e6) + " um above the prestressed equilibrium, horizon " +
-                                              num(o.cases.prestress.solver.horizon * 1e6) + " us"});
+                                              significant(o.cases.prestress.initial.displacement * 1e6, 4) + " um above the prestressed equilibrium, horizon " +
+                                              significant(o.cases.prestress.solver.horizon * 1e6, 4) + " us"});
     std::string forces;
-    for (double x : o.force_positions) forces += (forces.empty() ? "" : ", ") + num(x);
+    for (double x : o.force_positions) forces += (forces.empty() ? "" : ", ") + significant(x, 4);
     rows.push_back({"impact force (Fig. 11)", "support at x0/l = " + forces + ", first impact sampled every 2.5 ns"});
     rows.push_back({"threads", std::to_string(st.timing.threads)});
     d.table({"item", "value"}, rows);

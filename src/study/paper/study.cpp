@@ -13,6 +13,7 @@
 #include <stdexcept>
 
 #include "model/parallel_for.hpp"
+#include "model/run_control.hpp"
 #include "study/paper/scans.hpp"
 #include "dynamics/problem_builder.hpp"
 #include "fem/system.hpp"
@@ -23,7 +24,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // CPU time of the calling thread [s]: unlike wall time per job, it does not grow when other work
 // shares the machine.

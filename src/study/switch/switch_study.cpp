@@ -11,27 +11,19 @@
 #include "plot/chart_json.hpp"
 #include "report/pullin_output.hpp"
 #include "report/transient_output.hpp"
+#include "model/number_format.hpp"
+#include "model/run_control.hpp"
 
 namespace vi {
 namespace {
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
-std::string fixed(const char* format, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, format, v);
-    return buf;
-}
-
-std::string volts(const std::optional<double>& v) { return v ? fixed("%.4g V", *v) : std::string("none"); }
+std::string volts(const std::optional<double>& v) { return v ? formatted("%.4g V", *v) : std::string("none"); }
 
 std::vector<std::vector<std::string>> pullin_rows(const SwitchStudy& s) {
     const PullinResult& r = s.pullin;
     const auto point = [](const std::optional<PullinPoint>& p) {
-        return p ? std::vector<std::string>{fixed("%.5g", p->voltage), fixed("%.4g", p->watched_travel * 1e6),
-                                            fixed("%.4g", p->travel * 1e6), fixed("%.4g", p->capacitance * 1e15)}
+        return p ? std::vector<std::string>{formatted("%.5g", p->voltage), formatted("%.4g", p->watched_travel * 1e6),
+                                            formatted("%.4g", p->travel * 1e6), formatted("%.4g", p->capacitance * 1e15)}
                  : std::vector<std::string>{"-", "-", "-", "-"};
     };
     std::vector<std::vector<std::string>> rows;
@@ -44,7 +36,7 @@ std::vector<std::vector<std::string>> pullin_rows(const SwitchStudy& s) {
     add("pull-in (fold of the open branch)", r.pullin);
     add("touch-down on a support", r.touchdown);
     add("collapse of the closed switch", r.collapse);
-    rows.push_back({"release (pull-out)", r.release_voltage ? fixed("%.5g", *r.release_voltage) : "-", "-", "-", "-"});
+    rows.push_back({"release (pull-out)", r.release_voltage ? formatted("%.5g", *r.release_voltage) : "-", "-", "-", "-"});
     return rows;
 }
 
@@ -53,9 +45,9 @@ std::vector<std::vector<std::string>> episode_rows(const SwitchStudy& s) {
     const std::vector<ContactEpisode>& e = s.transient.result.episodes;
     for (std::size_t k = 0; k < e.size(); ++k) {
         const ContactEpisode& x = e[k];
-        rows.push_back({std::to_string(k + 1), "supports[" + std::to_string(x.support) + "]", fixed("%.5g", x.t_on * 1e6),
-                        x.closed_at_end ? "closed at the end" : fixed("%.5g", x.t_off * 1e6), fixed("%.4g", x.v_in),
-                        fixed("%.4g", x.peak_force * 1e6), fixed("%.4g", x.peak_penetration * 1e9)});
+        rows.push_back({std::to_string(k + 1), "supports[" + std::to_string(x.support) + "]", formatted("%.5g", x.t_on * 1e6),
+                        x.closed_at_end ? "closed at the end" : formatted("%.5g", x.t_off * 1e6), formatted("%.4g", x.v_in),
+                        formatted("%.4g", x.peak_force * 1e6), formatted("%.4g", x.peak_penetration * 1e9)});
     }
     return rows;
 }
@@ -85,7 +77,7 @@ ReportDocument switch_report(const SwitchStudy& s, const std::string& command) {
                 "docs/electrostatics.md.");
     d.heading(2, "Static pull-in", "pullin");
     d.table({"state", "voltage [V]", "watched point travel [um]", "mean travel [um]", "capacitance [fF]"}, pullin_rows(s));
-    d.paragraph("Branch ends: " + s.pullin.end + ". Traced in " + fixed("%.3f", s.pullin_s) + " s (" +
+    d.paragraph("Branch ends: " + s.pullin.end + ". Traced in " + formatted("%.3f", s.pullin_s) + " s (" +
                 std::to_string(s.pullin.branch.size()) + " points, " + std::to_string(s.pullin.newton_iterations) +
                 " Newton iterations).");
     d.figure("switch_pullin", "Voltage against travel", "", {"switch_pullin.csv", "switch_pullin.gp"});
@@ -97,19 +89,19 @@ ReportDocument switch_report(const SwitchStudy& s, const std::string& command) {
     d.heading(2, "Switching transient", "transient");
     const Electrode& e = s.c.electrodes.front();
     std::vector<std::string> facts{
-        "electrodes[0]: " + fixed("%.4g V", e.voltage) + " amplitude; horizon " + fixed("%.4g us", r.t_end * 1e6) + "; " +
+        "electrodes[0]: " + formatted("%.4g V", e.voltage) + " amplitude; horizon " + formatted("%.4g us", r.t_end * 1e6) + "; " +
             std::to_string(r.episodes.size()) + " contact episodes in " + std::to_string(sum.impacts.size()) + " impacts",
-        "first contact (closing time): " + (r.episodes.empty() ? std::string("none") : fixed("%.5g us", r.episodes.front().t_on * 1e6)),
-        "T_p: " + (sum.Tp ? fixed("%.5g us", *sum.Tp * 1e6) : std::string("none")) + " (" + sum.Tp_reason + ")",
+        "first contact (closing time): " + (r.episodes.empty() ? std::string("none") : formatted("%.5g us", r.episodes.front().t_on * 1e6)),
+        "T_p: " + (sum.Tp ? formatted("%.5g us", *sum.Tp * 1e6) : std::string("none")) + " (" + sum.Tp_reason + ")",
         "static pull-in for comparison: " + volts(s.pullin.pullin ? std::optional<double>(s.pullin.pullin->voltage) : std::nullopt),
-        "solver: " + r.stats.method + ", " + std::to_string(r.stats.steps) + " steps, " + fixed("%.3f", s.transient_s) + " s"};
+        "solver: " + r.stats.method + ", " + std::to_string(r.stats.steps) + " steps, " + formatted("%.3f", s.transient_s) + " s"};
     d.list(facts);
     if (s.transient.switching) {
         const SwitchingLedger& w = *s.transient.switching;
-        const auto us = [](const std::optional<double>& t) { return t ? fixed("%.5g us", *t * 1e6) : std::string("-"); };
+        const auto us = [](const std::optional<double>& t) { return t ? formatted("%.5g us", *t * 1e6) : std::string("-"); };
         d.heading(3, "Switching ledger");
         d.table({"closing time", "bounces", "stable contact from", "peak contact force [uN]", "release time", "state"},
-                {{us(w.closing_time), std::to_string(w.bounces), us(w.stable_contact), fixed("%.4g", w.peak_force * 1e6),
+                {{us(w.closing_time), std::to_string(w.bounces), us(w.stable_contact), formatted("%.4g", w.peak_force * 1e6),
                   us(w.release_time), w.state}});
         d.paragraph(w.reason);
     }
