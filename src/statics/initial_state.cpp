@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "forces/force_assembly.hpp"
 #include "model/input_error.hpp"
 
 namespace vi {
@@ -17,25 +18,6 @@ std::string length_text(double v) {
     std::ostringstream s;
     s << v << " m";
     return s.str();
-}
-
-// The element's force at the static state q in `mode`, summed over its DOFs: the direction it
-// pushes (a point contact acts on one DOF).
-double push_direction(const ForceElement& e, const Eigen::VectorXd& q, int mode) {
-    const std::vector<int>& d = e.dofs();
-    std::vector<double> ql(d.size()), vl(d.size(), 0.0), f(d.size(), 0.0);
-    for (std::size_t k = 0; k < d.size(); ++k) ql[k] = q[d[k]];
-    e.add_force(ElementState{0.0, ql.data(), vl.data(), nullptr}, mode, f.data());
-    double sum = 0.0;
-    for (double x : f) sum += x;
-    return sum;
-}
-
-double contact_penetration(const ForceElement& e, const Eigen::VectorXd& q) {
-    const std::vector<int>& d = e.dofs();
-    std::vector<double> ql(d.size()), vl(d.size(), 0.0);
-    for (std::size_t k = 0; k < d.size(); ++k) ql[k] = q[d[k]];
-    return e.contact_reading(ElementState{0.0, ql.data(), vl.data(), nullptr}).penetration;
 }
 
 }  // namespace
@@ -68,15 +50,19 @@ InitialConditions initial_conditions(const InitialState& init, const Eigen::Spar
     // A contact that closes during the step and pushes against the lift: the static force pressed
     // the beam into it (e.g. a tip lifted past the gap of a support above). Contacts already closed
     // at equilibrium (prestressed) and contacts on the far side are part of a valid state.
+    // The push is the element's force summed over its DOFs (a point contact acts on one).
     const char* key = init.kind == Kind::force ? "initial.force" : "initial.displacement";
+    ElementAssembler a;
     for (std::size_t k = 0; k < forces.size(); ++k) {
         const ForceElement& e = *forces[k];
         if (!e.is_contact() || !e.in_static_state()) continue;
         const int m = ic.stepped.modes[k];
         if (m != e.contact_mode() || ic.equilibrium.modes[k] == e.contact_mode()) continue;
-        if (push_direction(e, ic.stepped.q, m) * ic.lift >= 0.0) continue;
+        a.gather(e, ic.stepped.q);
+        a.force(m);
+        if (a.force_sum() * ic.lift >= 0.0) continue;
         throw InputError(std::string(key) + ": the initial state penetrates " + e.name() +
-                         " (d = " + length_text(contact_penetration(e, ic.stepped.q)) +
+                         " (d = " + length_text(e.contact_reading(a.state()).penetration) +
                          "; a smaller step or a larger gap is needed)");
     }
 

@@ -8,6 +8,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "forces/force_assembly.hpp"
 #include "statics/bordered_solver.hpp"
 #include "problem/electrode_elements.hpp"
 #include "problem/beam_model.hpp"
@@ -37,49 +38,31 @@ struct State {
     std::vector<int> modes;  // per contact
 };
 
-std::vector<double> gather(const ForceElement& e, const Eigen::VectorXd& q) {
-    std::vector<double> out;
-    out.reserve(e.dofs().size());
-    for (int d : e.dofs()) out.push_back(q[d]);
-    return out;
+// The model's elements are evaluated one at a time through one assembler per thread: an
+// electrode's tangent is a dense block over the DOFs it faces (10^4 entries at m = 50), and buffers
+// kept between Newton steps spare an allocation and its page faults at every one.
+ElementAssembler& assembler() {
+    thread_local ElementAssembler a;
+    return a;
 }
 
-// Adds scale x the element's static force to f (and the force itself to unscaled if given) and
-// -scale x its tangent to jt (the Jacobian of K q - F). Returns false when the element cannot be
+// Adds factor x the element's static force to f (and the force itself to unscaled if given) and
+// factor x its stiffness to jt (the Jacobian of K q - F). Returns false when the element cannot be
 // evaluated there (the beam past an electrode).
-bool add_element(const ForceElement& e, int mode, const Eigen::VectorXd& q, double scale, Eigen::VectorXd& f,
+bool add_element(const ForceElement& e, int mode, const Eigen::VectorXd& q, double factor, Eigen::VectorXd& f,
                  std::vector<Triplet>* jt, Eigen::VectorXd* unscaled = nullptr) {
-    const std::size_t m = e.dofs().size();
-    // An electrode's tangent is a dense block over the DOFs it faces (10^4 entries at m = 50):
-    // buffers kept per thread spare an allocation and its page faults at every Newton step.
-    thread_local std::vector<double> qe, ve, fe, dq, dv;
-    qe.resize(m);
-    for (std::size_t i = 0; i < m; ++i) qe[i] = q[e.dofs()[i]];
-    ve.assign(m, 0.0);
-    fe.assign(m, 0.0);
-    dq.assign(jt ? m * m : 0, 0.0);
-    dv.assign(jt ? m * m : 0, 0.0);
-    const ElementState s{0.0, qe.data(), ve.data(), nullptr};
+    ElementAssembler& a = assembler();
+    a.gather(e, q);
     try {
-        e.add_force(s, mode, fe.data());
-        if (jt) e.add_tangent(s, mode, dq.data(), dv.data());
+        a.force(mode);
+        if (jt) a.tangent(mode);
     } catch (const std::domain_error&) {
         return false;
     }
-    for (std::size_t i = 0; i < m; ++i) {
-        f[e.dofs()[i]] += scale * fe[i];
-        if (unscaled) (*unscaled)[e.dofs()[i]] += fe[i];
-        if (!jt) continue;
-        for (std::size_t j = 0; j < m; ++j) {
-            if (dq[i * m + j] != 0.0) jt->emplace_back(e.dofs()[i], e.dofs()[j], -scale * dq[i * m + j]);
-        }
-    }
+    a.scatter_force(factor, f);
+    if (unscaled) a.scatter_force(1.0, *unscaled);
+    if (jt) a.scatter_stiffness(factor, *jt);
     return true;
-}
-
-int contact_mode_at(const ForceElement& e, const Eigen::VectorXd& q) {
-    const std::vector<double> qe = gather(e, q), ve(qe.size(), 0.0);
-    return e.static_mode(ElementState{0.0, qe.data(), ve.data(), nullptr});
 }
 
 // F_contacts + lambda F_e at the state, the tangent A = K - dF/dq and F_e, the electrodes' force
@@ -100,11 +83,7 @@ bool evaluate(const Model& m, const State& s, Eigen::VectorXd& force, SparseMatr
     for (const PadPtr& p : m.pads) {
         if (!add_element(*p, 0, s.q, s.lambda, force, pj, pad_force)) return false;
     }
-    if (tangent) {
-        SparseMatrix d(n, n);
-        d.setFromTriplets(jt.begin(), jt.end());
-        *tangent = m.K + d;
-    }
+    if (tangent) *tangent = with_stiffness(m.K, jt);
     return true;
 }
 
@@ -130,7 +109,7 @@ bool solve_at(const Model& m, double tau, State& s, bool fix_modes, int& iterati
         bool changed = false;
         if (!fix_modes) {
             for (std::size_t k = 0; k < m.contacts.size(); ++k) {
-                const int mode = contact_mode_at(*m.contacts[k], s.q);
+                const int mode = m.contacts[k]->static_mode(assembler().gather(*m.contacts[k], s.q));
                 changed = changed || mode != s.modes[k];
                 s.modes[k] = mode;
             }
@@ -173,16 +152,12 @@ PullinPoint describe(const Model& m, const State& s, BorderedSolver& ls) {
     PullinPoint p;
     p.travel = s.tau;
     p.voltage = std::sqrt(std::max(s.lambda, 0.0));
-    for (const PadPtr& pad : m.pads) {
-        const std::vector<double> qe = gather(*pad, s.q);
-        p.capacitance += pad->capacitance(qe.data());
-    }
+    for (const PadPtr& pad : m.pads) p.capacitance += pad->capacitance(assembler().gather(*pad, s.q).q);
     p.watched_travel = m.watched >= 0 ? m.sign * s.q[m.watched] : 0.0;
     for (std::size_t k = 0; k < m.contacts.size(); ++k) {
         if (s.modes[k] != m.contacts[k]->contact_mode()) continue;
         p.contact = true;
-        const std::vector<double> qe = gather(*m.contacts[k], s.q), ve(qe.size(), 0.0);
-        p.contact_force += m.contacts[k]->contact_reading(ElementState{0.0, qe.data(), ve.data(), nullptr}).force;
+        p.contact_force += m.contacts[k]->contact_reading(assembler().gather(*m.contacts[k], s.q)).force;
     }
     p.stable = is_stable(m, s, ls);
     return p;
@@ -198,10 +173,7 @@ bool any_closed(const Model& m, const State& s) {
 // The largest penetration of any support at the state (whatever its mode) [m].
 double deepest(const Model& m, const State& s) {
     double d = -std::numeric_limits<double>::infinity();
-    for (const ForceElementPtr& c : m.contacts) {
-        const std::vector<double> qe = gather(*c, s.q), ve(qe.size(), 0.0);
-        d = std::max(d, c->contact_reading(ElementState{0.0, qe.data(), ve.data(), nullptr}).penetration);
-    }
+    for (const ForceElementPtr& c : m.contacts) d = std::max(d, c->contact_reading(assembler().gather(*c, s.q)).penetration);
     return d;
 }
 
@@ -415,8 +387,7 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
             // A dielectric layer is a contact (DielectricContact): the beam lands on it and the
             // branch goes on; a bare electrode's face is not, so the branch ends before it.
             if (pad->geometry().dielectric_thickness > 0.0) continue;
-            const std::vector<double> qe = gather(*pad, s.q);
-            const ElectrostaticPad::Narrowest narrow = pad->narrowest(qe.data());
+            const ElectrostaticPad::Narrowest narrow = pad->narrowest(assembler().gather(*pad, s.q).q);
             if (narrow.air_gap <= 5e-3 * (pad->geometry().gap - pad->geometry().dielectric_thickness)) {
                 r.end = "the beam collapses onto " + pad->name() +
                         text(" (it touches it at x = %.4g um, V = %.6g V on the unstable branch)", narrow.x * 1e6, p.voltage);

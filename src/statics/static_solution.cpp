@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "forces/force_assembly.hpp"
 #include "model/input_error.hpp"
 #include "model/run_control.hpp"
 
@@ -15,65 +16,6 @@ namespace vi {
 namespace {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
-
-// The elements' part of the static equations at q in the given modes: their force and the tangent
-// K - df/dq. Elements that do not act statically contribute nothing.
-struct Assembled {
-    Eigen::VectorXd force;  // sum of element forces
-    Eigen::VectorXd scale;  // sum of |terms| per DOF, for the roundoff level of the residual
-    SparseMatrix tangent;   // K - df/dq
-};
-
-Assembled assemble(const SparseMatrix& K, const ForceSet& forces, const std::vector<int>& modes,
-                   const Eigen::VectorXd& q) {
-    const Eigen::Index n = K.rows();
-    Assembled a;
-    a.force = Eigen::VectorXd::Zero(n);
-    a.scale = Eigen::VectorXd::Zero(n);
-    std::vector<Eigen::Triplet<double>> trip;
-    std::vector<double> ql, vl, fl, dq, dv;
-    for (std::size_t i = 0; i < forces.size(); ++i) {
-        const ForceElement& e = *forces[i];
-        if (!e.in_static_state()) continue;
-        const std::vector<int>& d = e.dofs();
-        const std::size_t m = d.size();
-        ql.assign(m, 0.0);
-        vl.assign(m, 0.0);
-        fl.assign(m, 0.0);
-        dq.assign(m * m, 0.0);
-        dv.assign(m * m, 0.0);
-        for (std::size_t k = 0; k < m; ++k) ql[k] = q[d[k]];
-        const ElementState s{0.0, ql.data(), vl.data(), nullptr};
-        e.add_force(s, modes[i], fl.data());
-        e.add_tangent(s, modes[i], dq.data(), dv.data());
-        for (std::size_t r = 0; r < m; ++r) {
-            a.force[d[r]] += fl[r];
-            a.scale[d[r]] += std::abs(fl[r]);
-            for (std::size_t c = 0; c < m; ++c) {
-                if (dq[r * m + c] != 0.0) trip.emplace_back(d[r], d[c], -dq[r * m + c]);
-            }
-        }
-    }
-    SparseMatrix T(n, n);
-    T.setFromTriplets(trip.begin(), trip.end());
-    a.tangent = K + T;
-    return a;
-}
-
-std::vector<int> static_modes(const ForceSet& forces, const Eigen::VectorXd& q, const std::vector<int>& current) {
-    std::vector<int> out = current;
-    std::vector<double> ql, vl;
-    for (std::size_t i = 0; i < forces.size(); ++i) {
-        const ForceElement& e = *forces[i];
-        if (!e.in_static_state()) continue;
-        const std::vector<int>& d = e.dofs();
-        ql.assign(d.size(), 0.0);
-        vl.assign(d.size(), 0.0);
-        for (std::size_t k = 0; k < d.size(); ++k) ql[k] = q[d[k]];
-        out[i] = e.static_mode(ElementState{0.0, ql.data(), vl.data(), nullptr});
-    }
-    return out;
-}
 
 std::vector<int> starting_modes(const ForceSet& forces, std::vector<int> start, Eigen::Index n) {
     if (start.size() == forces.size()) return start;
@@ -132,8 +74,8 @@ bool settled(const SparseMatrix& K, const ForceSet& forces, StaticState& s, cons
         s.modes = std::move(next);
         return false;
     }
-    const Assembled b = assemble(K, forces, s.modes, s.q);
-    return at_roundoff(K, s.q, K * s.q - b.force - load, load_scale + b.scale);
+    const StaticSums b = sum_static(forces, s.modes, s.q);
+    return at_roundoff(K, s.q, K * s.q - b.force - load, load_scale + b.magnitude);
 }
 
 [[noreturn]] void too_many_iterations(int max_iterations) {
@@ -152,9 +94,9 @@ StaticState solve_static(const SparseMatrix& K, const ForceSet& forces, const Ei
     s.modes = starting_modes(forces, std::move(start), K.rows());
     for (int it = 0; it < max_iterations; ++it) {
         check_run();
-        const Assembled a = assemble(K, forces, s.modes, s.q);
+        const StaticSums a = sum_static(forces, s.modes, s.q, {.stiffness = true});
         const Eigen::VectorXd r = K * s.q - f_ext - a.force;
-        const TangentSolver solver(a.tangent);
+        const TangentSolver solver(with_stiffness(K, a.stiffness));
         s.q -= solver.solve(r);
         s.iterations = it + 1;
         if (settled(K, forces, s, f_ext, f_ext.cwiseAbs())) return s;
@@ -170,9 +112,9 @@ StaticLift solve_static_lift(const SparseMatrix& K, const ForceSet& forces, cons
     s.modes = starting_modes(forces, std::move(start), K.rows());
     for (int it = 0; it < max_iterations; ++it) {
         check_run();
-        const Assembled a = assemble(K, forces, s.modes, s.q);
+        const StaticSums a = sum_static(forces, s.modes, s.q, {.stiffness = true});
         const Eigen::VectorXd r = K * s.q - a.force - out.force * shape;
-        const TangentSolver solver(a.tangent);
+        const TangentSolver solver(with_stiffness(K, a.stiffness));
         // [T -shape; shape^T 0] [dq; dP] = [-r; target - shape.q], by two solves with T.
         const Eigen::VectorXd u = solver.solve(shape);
         const Eigen::VectorXd w = solver.solve(-r);

@@ -37,6 +37,9 @@ ModalSystem::ModalSystem(const TransientProblem& p, ModalBasis basis)
         local_.push_back(std::move(at));
     }
     uf_.resize(union_rows_.rows());
+    std::size_t largest = 0;
+    for (const ForceElementPtr& e : p.forces) largest = std::max(largest, e->dofs().size());
+    for (std::size_t k = 0; k < largest; ++k) identity_.push_back(static_cast<int>(k));
     tip_row_ = basis_.phi.row(p.tip_dof);
     int root = 0;
     for (const ForceElementPtr& e : p.forces) {
@@ -63,37 +66,25 @@ double ModalSystem::element_time(double t) const {
     return t < t_limit_ ? t : std::nextafter(t_limit_, -std::numeric_limits<double>::infinity());
 }
 
-void ModalSystem::gather(int e, const double* y, const double* acc, Gathered& g) const {
-    const Eigen::MatrixXd& P = rows_[static_cast<std::size_t>(e)];
-    const Eigen::Index m = P.rows();
-    g.q.resize(static_cast<std::size_t>(m));
-    g.v.resize(static_cast<std::size_t>(m));
-    Eigen::Map<Eigen::VectorXd>(g.q.data(), m).noalias() = P * ConstVec(y, r_);
-    Eigen::Map<Eigen::VectorXd>(g.v.data(), m).noalias() = P * ConstVec(y + r_, r_);
-    if (acc) {
-        g.a.resize(static_cast<std::size_t>(m));
-        Eigen::Map<Eigen::VectorXd>(g.a.data(), m).noalias() = P * ConstVec(acc, r_);
-    }
-}
-
 void ModalSystem::gather_union(const double* y, const double* acc) const {
     uq_.noalias() = union_rows_ * ConstVec(y, r_);
     uv_.noalias() = union_rows_ * ConstVec(y + r_, r_);
     if (acc) ua_.noalias() = union_rows_ * ConstVec(acc, r_);
 }
 
-void ModalSystem::pick(int e, bool acc, Gathered& g) const {
-    const std::vector<int>& at = local_[static_cast<std::size_t>(e)];
-    g.q.resize(at.size());
-    g.v.resize(at.size());
-    for (std::size_t k = 0; k < at.size(); ++k) {
-        g.q[k] = uq_[at[k]];
-        g.v[k] = uv_[at[k]];
-    }
-    if (acc) {
-        g.a.resize(at.size());
-        for (std::size_t k = 0; k < at.size(); ++k) g.a[k] = ua_[at[k]];
-    }
+const ElementState& ModalSystem::union_state(int e, double t, bool acc) const {
+    return assembler_.gather(element(e), local_[static_cast<std::size_t>(e)], uq_.data(), uv_.data(),
+                             acc ? ua_.data() : nullptr, t);
+}
+
+const ElementState& ModalSystem::own_state(int e, double t, const double* y) const {
+    const Eigen::MatrixXd& P = rows_[static_cast<std::size_t>(e)];
+    own_q_.resize(P.rows());
+    own_v_.resize(P.rows());
+    own_q_.noalias() = P * ConstVec(y, r_);
+    own_v_.noalias() = P * ConstVec(y + r_, r_);
+    const std::span<const int> at(identity_.data(), static_cast<std::size_t>(P.rows()));
+    return assembler_.gather(element(e), at, own_q_.data(), own_v_.data(), nullptr, t);
 }
 
 double ModalSystem::add_element_forces(double te, const double* y, Eigen::Map<Eigen::VectorXd>& acc,
@@ -102,15 +93,11 @@ double ModalSystem::add_element_forces(double te, const double* y, Eigen::Map<Ei
     gather_union(y, nullptr);
     uf_.setZero();
     for (int e = 0; e < elements(); ++e) {
-        const ForceElement& el = element(e);
-        pick(e, false, scratch_);
-        const ElementState s{te, scratch_.q.data(), scratch_.v.data(), nullptr};
+        const ElementState& s = union_state(e, te, false);
         const int mode = modes_[static_cast<std::size_t>(e)];
-        force_.assign(scratch_.q.size(), 0.0);
-        dissipated += el.add_force_and_power(s, mode, force_.data());
-        const std::vector<int>& at = local_[static_cast<std::size_t>(e)];
-        for (std::size_t k = 0; k < at.size(); ++k) uf_[at[k]] += force_[k];
-        if (work) *work += el.input_power(s, mode);
+        dissipated += assembler_.force_and_power(mode);
+        assembler_.scatter_force(1.0, uf_.data());
+        if (work) *work += element(e).input_power(s, mode);
     }
     acc.noalias() += union_rows_.transpose() * uf_;
     return dissipated;
@@ -131,10 +118,7 @@ void ModalSystem::rhs(double t, const double* y, double* ydot) const {
         const int e = contacts_[j];
         const ForceElement& el = element(e);
         double rate = 0.0;
-        if (modes_[static_cast<std::size_t>(e)] == el.contact_mode()) {
-            pick(e, false, scratch_);
-            rate = el.contact_reading(ElementState{te, scratch_.q.data(), scratch_.v.data(), nullptr}).force;
-        }
+        if (modes_[static_cast<std::size_t>(e)] == el.contact_mode()) rate = el.contact_reading(union_state(e, te, false)).force;
         ydot[impulse_index(static_cast<int>(j))] = rate;
     }
 }
@@ -168,8 +152,7 @@ void ModalSystem::root_functions(double t, const double* y, double* g) const {
         const ForceElement& el = element(e);
         const std::size_t ue = static_cast<std::size_t>(e);
         if (switch_root_[ue] < 0 && el.watch_count() == 0) continue;
-        pick(e, need, scratch_);
-        const ElementState s{te, scratch_.q.data(), scratch_.v.data(), need ? scratch_.a.data() : nullptr};
+        const ElementState& s = union_state(e, te, need);
         if (switch_root_[ue] >= 0) g[switch_root_[ue]] = el.switching_function(s, modes_[ue]);
         if (el.watch_count() > 0) el.watch_functions(s, modes_[ue], g + watch_root_[ue]);
     }
@@ -177,9 +160,7 @@ void ModalSystem::root_functions(double t, const double* y, double* g) const {
     if (contacts_.empty()) {
         g[extreme_root() + 1] = 1.0;
     } else {
-        pick(contacts_.front(), false, scratch_);
-        g[extreme_root() + 1] =
-            element(contacts_.front()).contact_reading(ElementState{te, scratch_.q.data(), scratch_.v.data(), nullptr}).point_velocity;
+        g[extreme_root() + 1] = element(contacts_.front()).contact_reading(union_state(contacts_.front(), te, false)).point_velocity;
     }
 }
 
@@ -189,35 +170,28 @@ void ModalSystem::tangents(double t, const double* y, std::vector<Eigen::MatrixX
     dfdq.resize(p_.forces.size());
     dfdv.resize(p_.forces.size());
     gather_union(y, nullptr);
+    // Row-major blocks as the elements write them; Eigen's default is column-major.
+    using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
     for (int e = 0; e < elements(); ++e) {
         const std::size_t ue = static_cast<std::size_t>(e);
-        pick(e, false, scratch_);
-        const Eigen::Index m = static_cast<Eigen::Index>(scratch_.q.size());
-        // Row-major blocks as the elements write them; Eigen's default is column-major.
-        Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> q = Eigen::MatrixXd::Zero(m, m);
-        Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> v = Eigen::MatrixXd::Zero(m, m);
-        element(e).add_tangent(ElementState{te, scratch_.q.data(), scratch_.v.data(), nullptr}, modes_[ue], q.data(),
-                               v.data());
-        dfdq[ue] = q;
-        dfdv[ue] = v;
+        static_cast<void>(union_state(e, te, false));
+        assembler_.tangent(modes_[ue]);
+        const Eigen::Index m = static_cast<Eigen::Index>(local_[ue].size());
+        dfdq[ue] = Eigen::Map<const RowMajor>(assembler_.dfdq().data(), m, m);
+        dfdv[ue] = Eigen::Map<const RowMajor>(assembler_.dfdv().data(), m, m);
     }
 }
 
 double ModalSystem::switching_function(int e, int mode, double t, const double* y) const {
-    gather(e, y, nullptr, scratch_);
-    return element(e).switching_function(ElementState{element_time(t), scratch_.q.data(), scratch_.v.data(), nullptr},
-                                         mode);
+    return element(e).switching_function(own_state(e, element_time(t), y), mode);
 }
 
 ContactReading ModalSystem::reading(int e, double t, const double* y) const {
-    gather(e, y, nullptr, scratch_);
-    return element(e).contact_reading(ElementState{element_time(t), scratch_.q.data(), scratch_.v.data(), nullptr});
+    return element(e).contact_reading(own_state(e, element_time(t), y));
 }
 
 double ModalSystem::stored_energy(int e, int mode, double t, const double* y) const {
-    gather(e, y, nullptr, scratch_);
-    return element(e).stored_energy(ElementState{element_time(t), scratch_.q.data(), scratch_.v.data(), nullptr},
-                                    mode);
+    return element(e).stored_energy(own_state(e, element_time(t), y), mode);
 }
 
 double ModalSystem::contact_displacement(int j, const double* y) const {
@@ -230,13 +204,11 @@ std::vector<int> ModalSystem::initial_modes(const double* y) const {
     for (int e = 0; e < elements(); ++e) {
         const ForceElement& el = element(e);
         const std::size_t ue = static_cast<std::size_t>(e);
-        gather(e, y, nullptr, scratch_);
-        const ElementState s{0.0, scratch_.q.data(), scratch_.v.data(), nullptr};
-        const int start = el.initial_mode(s);
+        const int start = el.initial_mode(own_state(e, 0.0, y));
         modes[ue] = p_.modes0.size() == p_.forces.size() ? p_.modes0[ue] : start;
         // A contact touching at t = 0 (d = 0 to roundoff) and moving in closes at once, as the exact
         // solver's event search closes it: CVODE holds a root function that is zero at the start
-        // inactive, and would let the beam pass into the support (shared/cases/starts_in_contact.toml).
+        // inactive, and would let the beam pass into the support (tests/cases/starts_in_contact.toml).
         if (el.is_contact() && start == el.contact_mode()) modes[ue] = start;
     }
     return modes;
@@ -302,28 +274,22 @@ Eigen::VectorXd ModalSystem::absolute_tolerances(double atol_scale) const {
         }
     }
     if (!(w1 > 0.0)) {
-        std::vector<double> z;
         for (int e : contacts_) {
             const ForceElement& el = element(e);
-            const std::size_t m = el.dofs().size();
-            z.assign(m, 0.0);
-            std::vector<double> dq(m * m, 0.0), dv(m * m, 0.0);
-            el.add_tangent(ElementState{0.0, z.data(), z.data(), nullptr}, el.contact_mode(), dq.data(), dv.data());
+            assembler_.gather_rest(el);
+            assembler_.tangent(el.contact_mode());
             const double flex = rows_[static_cast<std::size_t>(e)].row(0).squaredNorm();
-            w1 = std::max(w1, std::sqrt(std::abs(dq[0]) * flex));
+            w1 = std::max(w1, std::sqrt(std::abs(assembler_.dfdq()[0]) * flex));
         }
         if (!(w1 > 0.0)) w1 = 1.0;
     }
     double L = std::max(p_.q0.cwiseAbs().maxCoeff(), p_.v0.cwiseAbs().maxCoeff() / w1);
     double phi_ref = std::abs(tip_row_.head(std::min(r_, 5)).cwiseAbs().maxCoeff());
-    std::vector<double> zero;
     for (int e = 0; e < elements(); ++e) {
         const ForceElement& el = element(e);
         const Eigen::MatrixXd& P = rows_[static_cast<std::size_t>(e)];
         phi_ref = std::max(phi_ref, P.leftCols(std::min(r_, 5)).cwiseAbs().maxCoeff());
-        zero.assign(el.dofs().size(), 0.0);
-        const ElementState s0{0.0, zero.data(), zero.data(), nullptr};
-        if (el.is_contact()) L = std::max(L, std::abs(el.contact_reading(s0).penetration));
+        if (el.is_contact()) L = std::max(L, std::abs(el.contact_reading(assembler_.gather_rest(el)).penetration));
         if (el.force_scale() > 0.0) {
             double flex = 0.0;  // rigid-body vectors (w = 0) have no static deflection to add
             for (Eigen::Index i = 0; i < P.rows(); ++i) {
@@ -360,13 +326,11 @@ Eigen::VectorXd ModalSystem::absolute_tolerances(double atol_scale) const {
     for (std::size_t j = 0; j < contacts_.size(); ++j) {
         const int e = contacts_[j];
         const ForceElement& el = element(e);
-        const std::size_t m = el.dofs().size();
-        zero.assign(m, 0.0);
-        std::vector<double> dq(m * m, 0.0), dv(m * m, 0.0);
-        el.add_tangent(ElementState{0.0, zero.data(), zero.data(), nullptr}, el.contact_mode(), dq.data(), dv.data());
+        assembler_.gather_rest(el);
+        assembler_.tangent(el.contact_mode());
         double kq = 0.0, kv = 0.0;
-        for (double x : dq) kq = std::max(kq, std::abs(x));
-        for (double x : dv) kv = std::max(kv, std::abs(x));
+        for (double x : assembler_.dfdq()) kq = std::max(kq, std::abs(x));
+        for (double x : assembler_.dfdv()) kv = std::max(kv, std::abs(x));
         const double f = kq * L + kv * w1 * L;
         scale[impulse_index(static_cast<int>(j))] = f > 0.0 ? f / w1 : energy / (w1 * L);
     }

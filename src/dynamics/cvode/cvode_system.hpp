@@ -9,6 +9,7 @@
 #include "dynamics/cvode/modal_basis.hpp"
 #include "dynamics/transient_problem.hpp"
 #include "dynamics/transient_result.hpp"
+#include "forces/force_assembly.hpp"
 
 namespace vi::cvode_detail {
 
@@ -93,14 +94,14 @@ public:
     [[nodiscard]] Eigen::VectorXd absolute_tolerances(double atol_scale) const;
 
 private:
-    struct Gathered {
-        std::vector<double> q, v, a;
-    };
-    void gather(int e, const double* y, const double* acc, Gathered& g) const;
-    // q, v (and a) at every DOF of the union once, then element e's share of them: each shared DOF
-    // is projected once per call instead of once per element.
+    // q, v (and a) at every DOF of the union once: each shared DOF is projected once per call
+    // instead of once per element.
     void gather_union(const double* y, const double* acc) const;
-    void pick(int e, bool acc, Gathered& g) const;
+    // Element e's state at time t from the union's q, v (and a where `acc`), after gather_union.
+    const ElementState& union_state(int e, double t, bool acc) const;
+    // Element e's state at time t from y, through its own basis rows (as the union's, without
+    // projecting the other elements' DOFs).
+    const ElementState& own_state(int e, double t, const double* y) const;
     [[nodiscard]] double element_time(double t) const;
     // The modal accelerations at y without the ledger's integrals.
     void acceleration(double t, const double* y, Eigen::VectorXd& acc) const;
@@ -123,10 +124,11 @@ private:
     std::vector<int> switch_root_, watch_root_;
     int roots_ = 0;
     double t_limit_ = 0.0;
-    mutable Gathered scratch_;
+    std::vector<int> identity_;                  // 0, 1, ..., the largest element's DOF count - 1
+    mutable ElementAssembler assembler_;
+    mutable Eigen::VectorXd own_q_, own_v_;      // one element's q and v through its own rows
     mutable Eigen::VectorXd uq_, uv_, ua_, uf_;  // on the union: q, v, a, summed element forces
     mutable Eigen::VectorXd acc_;
-    mutable std::vector<double> force_;          // one element's force, in the order of its DOFs
 };
 
 // Throws std::invalid_argument when p is inconsistent (sizes, DOF indices, horizon).

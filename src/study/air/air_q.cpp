@@ -6,6 +6,7 @@
 
 #include "dynamics/cvode/cvode_solver.hpp"
 #include "dynamics/transient_start.hpp"
+#include "forces/force_assembly.hpp"
 #include "modal/eigen_solver.hpp"
 #include "io/csv_writer.hpp"
 
@@ -69,13 +70,15 @@ AirQPoint air_q_point(const Case& base, double pressure, const AirQOptions& o) {
     // The model's first mode: lowest_modes of the same matrices, as the model computed it.
     Eigen::VectorXd phi = model.modes.shapes.col(0);
     const double m1 = phi.dot(p.M * phi);
+    // c1 = -phi^T (df/dv at rest) phi: the films' modal damping [kg/s].
     double c1 = 0.0;
+    ElementAssembler a;
     for (const ForceElementPtr& e : p.forces) {
+        a.gather_rest(*e);
+        a.tangent(0);
         const std::size_t n = e->dofs().size();
-        std::vector<double> zero(n, 0.0), dq(n * n, 0.0), dv(n * n, 0.0);
-        e->add_tangent(ElementState{0.0, zero.data(), zero.data(), nullptr}, 0, dq.data(), dv.data());
         for (std::size_t i = 0; i < n; ++i) {
-            for (std::size_t j = 0; j < n; ++j) c1 -= phi[e->dofs()[i]] * dv[i * n + j] * phi[e->dofs()[j]];
+            for (std::size_t j = 0; j < n; ++j) c1 -= phi[e->dofs()[i]] * a.dfdv()[i * n + j] * phi[e->dofs()[j]];
         }
     }
     AirQPoint out;
