@@ -1,7 +1,7 @@
 // Beams held at both ends (docs/electrostatics.md §8): residual stress's frequencies against the
 // axially loaded beam's closed form and characteristic equation, the mid-plane stretching element's
-// contract, pull-in of a clamped-clamped bridge with stretching and residual stress against an
-// independent shooting solution, and the refusals.
+// axial force (its contract is in force_elements_test.cpp), pull-in of a clamped-clamped bridge
+// with stretching and residual stress against an independent shooting solution, and the refusals.
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -105,52 +104,6 @@ TEST(ResidualStress, ClampedClampedFrequenciesMatchTheCharacteristicEquation) {
     // beta1 l = 4.730040745.
     AxialBeam b{1.0, 1.0, 1.0, 1.0, 0.0};
     EXPECT_NEAR(clamped_clamped_axial_omegas(b, 1)[0], 4.730040745 * 4.730040745, 1e-7);
-}
-
-TEST(MidplaneStretching, TangentAndEnergyAreTheForcesDerivatives) {
-    // Three elements of a pinned-pinned beam: its G over v, theta of the free DOFs.
-    const Case c = bridge(3, "left = \"pinned\"\nright = \"pinned\"", "stretching = true");
-    const System s = build_system(c);
-    const MidplaneStretching e("beam.stretching", submatrix(s.G, s.bending), 1e3);
-    const std::size_t n = e.dofs().size();
-    ASSERT_EQ(n, 6u);
-    std::mt19937 rng(7);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    double worst_tangent = 0.0, worst_energy = 0.0;
-    for (int k = 0; k < 20; ++k) {
-        std::vector<double> q(n), v(n, 0.0);
-        for (std::size_t i = 0; i < n; ++i) q[i] = (s.free_dofs[s.bending[i]] % 3 == 1 ? 1e-6 : 1e-2) * u(rng);
-        const auto force = [&](const std::vector<double>& x) {
-            std::vector<double> f(n, 0.0);
-            e.add_force(ElementState{0.0, x.data(), v.data(), nullptr}, 0, f.data());
-            return f;
-        };
-        std::vector<double> dq(n * n, 0.0), dv(n * n, 0.0);
-        e.add_tangent(ElementState{0.0, q.data(), v.data(), nullptr}, 0, dq.data(), dv.data());
-        const std::vector<double> f = force(q);
-        double scale = 0.0;
-        for (double x : f) scale = std::max(scale, std::abs(x));
-        for (std::size_t j = 0; j < n; ++j) {
-            const double h = 1e-6 * std::abs(q[j]);
-            std::vector<double> plus = q, minus = q;
-            plus[j] += h;
-            minus[j] -= h;
-            const std::vector<double> fp = force(plus), fm = force(minus);
-            for (std::size_t i = 0; i < n; ++i) {
-                const double fd = (fp[i] - fm[i]) / (2 * h);
-                worst_tangent = std::max(worst_tangent, std::abs(fd - dq[i * n + j]) * std::abs(q[j]) / scale);
-            }
-            const double dE = (e.stored_energy(ElementState{0.0, plus.data(), v.data(), nullptr}, 0) -
-                               e.stored_energy(ElementState{0.0, minus.data(), v.data(), nullptr}, 0)) / (2 * h);
-            worst_energy = std::max(worst_energy, std::abs(-dE - f[j]) / scale);
-        }
-        for (double x : dv) EXPECT_EQ(x, 0.0);
-        EXPECT_EQ(e.dissipated_power(ElementState{0.0, q.data(), v.data(), nullptr}, 0), 0.0);
-        EXPECT_EQ(e.input_power(ElementState{0.0, q.data(), v.data(), nullptr}, 0), 0.0);
-    }
-    EXPECT_LT(worst_tangent, 1e-8);
-    EXPECT_LT(worst_energy, 1e-8);
-    EXPECT_FALSE(e.linear_form().has_value());  // CVODE, never the exact solver
 }
 
 TEST(MidplaneStretching, AxialForceIsTheMeanSquareSlope) {

@@ -1,7 +1,7 @@
-// Electrostatic actuation (docs/electrostatics.md): the pad element's contract, the one-degree-of-
-// freedom parallel plate against its closed forms, the cantilever's pull-in against an independent
-// shooting solution of the beam equation, the energy balance of a switching transient, and the
-// case reader's refusals.
+// Electrostatic actuation (docs/electrostatics.md; the pad element's contract is in
+// force_elements_test.cpp): the one-degree-of-freedom parallel plate against its closed forms, the
+// cantilever's pull-in against an independent shooting solution of the beam equation, the energy
+// balance of a switching transient, and the case reader's refusals.
 
 #include <gtest/gtest.h>
 
@@ -9,7 +9,6 @@
 #include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -20,85 +19,12 @@
 #include "forces/kelvin_voigt_contact.hpp"
 #include "io/case_reader.hpp"
 #include "model/input_error.hpp"
-#include "support/pad_points.hpp"
 #include "support/run_command.hpp"
 #include "validation/electrostatic_references.hpp"
 #include "support/test_files.hpp"
 
 namespace vi {
 namespace {
-
-// A pad over one beam element of length 10 um (4 DOFs), with a dielectric and Meijs-Fokkema fringing.
-std::shared_ptr<const ElectrostaticPad> beam_pad(Fringing fringing, TimeFunction g) {
-    const double L = 10e-6;
-    const std::vector<PadPoint> pts = test::one_element_points(L);
-    PadGeometry geo;
-    geo.sign = 1.0;
-    geo.gap = 2e-6;
-    geo.dielectric_thickness = 0.2e-6;
-    geo.dielectric_permittivity = 7.5;
-    geo.width = 30e-6;
-    geo.beam_thickness = 2e-6;
-    geo.fringing = fringing;
-    geo.to = L;
-    return std::make_shared<const ElectrostaticPad>("electrodes[1]", std::vector<int>{0, 1, 2, 3}, pts, geo, 40.0, g);
-}
-
-TEST(ElectrostaticPad, TangentEnergyAndPowerMatchTheForce) {
-    TimeFunction ramp;
-    ramp.kind = TimeFunction::Kind::table;
-    ramp.times = {0.0, 1e-5};
-    ramp.values = {0.2, 1.0};
-    for (Fringing fr : {Fringing::none, Fringing::meijs_fokkema}) {
-        const auto pad = beam_pad(fr, ramp);
-        std::mt19937 rng(7);
-        std::uniform_real_distribution<double> u(-1.0, 1.0);
-        for (int k = 0; k < 10; ++k) {
-            const double t = 5e-6 * (1 + u(rng));
-            std::vector<double> q{0.5e-6 * u(rng), 0.02 * u(rng), 0.5e-6 * u(rng), 0.02 * u(rng)};
-            std::vector<double> v{0.3 * u(rng), 1e4 * u(rng), 0.3 * u(rng), 1e4 * u(rng)};
-            const auto force = [&](const std::vector<double>& x) {
-                std::vector<double> f(4, 0.0);
-                pad->add_force(ElementState{t, x.data(), v.data(), nullptr}, 0, f.data());
-                return f;
-            };
-            const auto energy = [&](const std::vector<double>& x) {
-                return pad->stored_energy(ElementState{t, x.data(), v.data(), nullptr}, 0);
-            };
-            std::vector<double> dq(16, 0.0), dv(16, 0.0);
-            pad->add_tangent(ElementState{t, q.data(), v.data(), nullptr}, 0, dq.data(), dv.data());
-            const std::vector<double> f = force(q);
-            double power = 0.0;
-            for (int j = 0; j < 4; ++j) {
-                const double h = (j % 2 == 0 ? 1e-12 : 1e-7);
-                std::vector<double> p = q, m = q;
-                p[j] += h;
-                m[j] -= h;
-                const std::vector<double> fp = force(p), fm = force(m);
-                for (int i = 0; i < 4; ++i) {
-                    const double fd = (fp[i] - fm[i]) / (2 * h);
-                    EXPECT_NEAR(dq[i * 4 + j], fd, 1e-6 * std::abs(fd) + 1e-12 * std::abs(dq[i * 4 + j]) + 1e-30);
-                }
-                // The stored energy (minus the co-energy) is the potential of the force.
-                EXPECT_NEAR(-(energy(p) - energy(m)) / (2 * h), f[j], 1e-6 * std::abs(f[j]) + 1e-25);
-                power += f[j] * v[j];
-            }
-            EXPECT_EQ(pad->dissipated_power(ElementState{t, q.data(), v.data(), nullptr}, 0), 0.0);
-            // d/dt of the stored energy along a motion is -f.v plus the source term -C V dV/dt.
-            const double dt = 1e-13;
-            std::vector<double> qp = q, qm = q;
-            for (int i = 0; i < 4; ++i) {
-                qp[i] += v[i] * dt;
-                qm[i] -= v[i] * dt;
-            }
-            const double dE = (pad->stored_energy(ElementState{t + dt, qp.data(), v.data(), nullptr}, 0) -
-                               pad->stored_energy(ElementState{t - dt, qm.data(), v.data(), nullptr}, 0)) /
-                              (2 * dt);
-            const double input = pad->input_power(ElementState{t, q.data(), v.data(), nullptr}, 0);
-            EXPECT_NEAR(dE, -power + input, 1e-6 * (std::abs(power) + std::abs(input)));
-        }
-    }
-}
 
 // The parallel plate on a spring k: V_PI = sqrt(8 k g^3 / (27 eps0 A)) at a travel of g/3
 // (e.g. Senturia, Microsystem Design, 2001, §6.4).
