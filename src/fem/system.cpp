@@ -106,6 +106,22 @@ Eigen::VectorXd expand_to_global(const System& s, const Eigen::VectorXd& reduced
     return g;
 }
 
+std::vector<int> bending_positions(const System& s) {
+    std::vector<int> pos(static_cast<std::size_t>(s.size()), -1);
+    for (std::size_t i = 0; i < s.bending.size(); ++i) pos[static_cast<std::size_t>(s.bending[i])] = static_cast<int>(i);
+    return pos;
+}
+
+Eigen::VectorXd on_bending(const System& s, const Eigen::VectorXd& reduced) {
+    Eigen::VectorXd out(static_cast<Eigen::Index>(s.bending.size()));
+    for (std::size_t i = 0; i < s.bending.size(); ++i) out[static_cast<Eigen::Index>(i)] = reduced[s.bending[i]];
+    return out;
+}
+
+Eigen::VectorXd unit_point_load(const System& s, double position) {
+    return on_bending(s, transverse_point_load(s, position * s.length, 1.0));
+}
+
 Eigen::VectorXd transverse_point_load(const System& s, double x, double f) {
     const ElementPoint p = locate(s.mesh, x);
     const double L = s.mesh.element_length(p.element);

@@ -53,6 +53,16 @@ Eigen::VectorXd transverse_point_load(const System& s, double x, double f);
 // Transverse displacement v [m] at coordinate x [m] from a reduced DOF vector.
 double transverse_displacement(const System& s, const Eigen::VectorXd& reduced, double x);
 
+// Position of each reduced DOF of s among its bending DOFs (s.bending), -1 for axial DOFs.
+std::vector<int> bending_positions(const System& s);
+
+// A reduced vector of s restricted to its bending DOFs.
+Eigen::VectorXd on_bending(const System& s, const Eigen::VectorXd& reduced);
+
+// Consistent load vector of a unit transverse force at x/l = position, over the bending DOFs; its
+// dot product with a bending vector is v at that point.
+Eigen::VectorXd unit_point_load(const System& s, double position);
+
 // Static displacement K q = f over the free DOFs; throws std::runtime_error if K is singular.
 Eigen::VectorXd solve_static(const System& s, const Eigen::VectorXd& load);
 

@@ -1,6 +1,7 @@
 #include "forces/midplane_stretching.hpp"
 
 #include <cmath>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
 
@@ -46,6 +47,29 @@ void MidplaneStretching::add_tangent(const ElementState& s, int, double* dfdq, d
 double MidplaneStretching::stored_energy(const ElementState& s, int) const {
     const double n = axial_force(s.q);
     return 0.5 * n * n / axial_stiffness_;
+}
+
+namespace {
+
+class Stretching final : public ElementFamily {
+public:
+    [[nodiscard]] std::string_view name() const override { return "mid-plane stretching"; }
+
+    [[nodiscard]] std::vector<FamilyElement> elements(const ElementSource& src) const override {
+        if (!src.c.beam.stretching) return {};
+        const System& s = src.system;
+        // The axis's lengthening, on every bending DOF.
+        return {{std::make_shared<MidplaneStretching>("beam.stretching", submatrix(s.G, s.bending),
+                                                      s.props.E * s.props.A / s.length),
+                 {"beam", 0}}};
+    }
+};
+
+}  // namespace
+
+const ElementFamily& beam_stretching() {
+    static const Stretching family;
+    return family;
 }
 
 }  // namespace vi

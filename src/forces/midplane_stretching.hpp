@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "forces/element_family.hpp"
 #include "forces/force_element.hpp"
 
 namespace vi {
@@ -46,5 +47,9 @@ private:
     Eigen::SparseMatrix<double> g_;
     double axial_stiffness_;
 };
+
+// The stretching's family: one element "beam.stretching" on every bending DOF when beam.stretching is
+// on, its E the modulus bending uses.
+const ElementFamily& beam_stretching();
 
 }  // namespace vi

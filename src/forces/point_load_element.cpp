@@ -1,7 +1,9 @@
 #include "forces/point_load_element.hpp"
 
 #include <cmath>
+#include <memory>
 #include <stdexcept>
+#include <string>
 
 namespace vi {
 
@@ -27,6 +29,40 @@ double PointLoadElement::input_power(const ElementState& s, int) const {
 
 std::optional<LinearForm> PointLoadElement::linear_form() const {
     return LinearForm{TimeForcing{dofs_, weights_, amplitude_, g_}};
+}
+
+namespace {
+
+class PointLoads final : public ElementFamily {
+public:
+    [[nodiscard]] std::string_view name() const override { return "point loads"; }
+
+    [[nodiscard]] std::vector<FamilyElement> elements(const ElementSource& src) const override {
+        std::vector<FamilyElement> out;
+        for (std::size_t k = 0; k < src.c.loads.size(); ++k) {
+            const PointLoad& load = src.c.loads[k];
+            const Eigen::VectorXd shape = unit_point_load(src.system, load.position);
+            std::vector<int> dofs;
+            std::vector<double> weights;
+            for (Eigen::Index i = 0; i < shape.size(); ++i) {
+                if (shape[i] == 0.0) continue;
+                dofs.push_back(static_cast<int>(i));
+                weights.push_back(shape[i]);
+            }
+            out.push_back({std::make_shared<PointLoadElement>("loads[" + std::to_string(k) + "]", std::move(dofs),
+                                                              std::move(weights), load.amplitude, load.time,
+                                                              load.position * src.system.length),
+                           {"loads", k}});
+        }
+        return out;
+    }
+};
+
+}  // namespace
+
+const ElementFamily& point_loads() {
+    static const PointLoads family;
+    return family;
 }
 
 }  // namespace vi

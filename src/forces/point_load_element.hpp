@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "forces/element_family.hpp"
 #include "forces/force_element.hpp"
 #include "model/time_function.hpp"
 
@@ -43,5 +44,9 @@ private:
     TimeFunction g_;
     double x_;
 };
+
+// The loads' family: one element per [[loads]] entry, on the nonzero entries of its consistent load
+// vector over the bending DOFs.
+const ElementFamily& point_loads();
 
 }  // namespace vi

@@ -59,6 +59,8 @@ public:
     }
     // F_po [N]: 0 for a plain contact.
     [[nodiscard]] double pull_off_force() const { return pull_off_; }
+    [[nodiscard]] double stiffness() const { return stiffness_; }  // Kc [N/m]
+    [[nodiscard]] double damping() const { return damping_; }      // Cc [N s/m]
 
 protected:
     // Throws std::invalid_argument naming the contact when the data shared by both kinds are not

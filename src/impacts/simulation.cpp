@@ -71,7 +71,7 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
         if (!e.in_static_state()) loaded = true;
     }
     // Released at rest from its own static equilibrium with nothing acting after t = 0: nothing ever
-    // moves, and that is the answer, not a horizon too short (shared/cases/rest_on_support.toml).
+    // moves, and that is the answer, not a horizon too short (tests/cases/rest_on_support.toml).
     const double q_scale = std::max(run.built.start.q_equilibrium.lpNorm<Eigen::Infinity>(), p.q0.lpNorm<Eigen::Infinity>());
     const bool at_rest = !loaded && p.v0.isZero(0.0) &&
                          (p.q0 - run.built.start.q_equilibrium).lpNorm<Eigen::Infinity>() <=
@@ -100,19 +100,17 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
         run.summary.Tp_reason = "at_rest";
     }
     if (actuated) {
-        // The supports' contacts come first among the contacts, in case order.
-        std::vector<std::optional<ContactHold>> holds(c.supports.size());
-        for (std::size_t k = 0; k < c.supports.size(); ++k) {
-            if (c.supports[k].adhesion != Adhesion::none) holds[k] = contact_hold(run.built.model.system, c, k);
+        std::vector<LedgerContact> contacts;
+        for (const NamedContact& k : run.built.model.contacts) {
+            LedgerContact& lc = contacts.emplace_back(LedgerContact{k.name, std::nullopt, std::nullopt});
+            const std::size_t i = k.entry.index;
+            if (k.entry.table == "supports" && c.supports[i].adhesion != Adhesion::none) {
+                lc.hold = contact_hold(run.built.model.system, c, i);
+            } else if (k.entry.table == "electrodes" && c.electrodes[i].work_of_adhesion) {
+                lc.layer = layer_hold(c, i);
+            }
         }
-        // The electrodes' layers follow, in electrode order (dynamics/electrode_elements.hpp).
-        std::vector<std::optional<LayerHold>> layers(c.supports.size());
-        for (std::size_t k = 0; k < c.electrodes.size(); ++k) {
-            if (!(c.electrodes[k].dielectric_thickness > 0.0)) continue;
-            layers.emplace_back();
-            if (c.electrodes[k].work_of_adhesion) layers.back() = layer_hold(c, k);
-        }
-        run.switching = switching_ledger(run.result, c.electrodes, run.built.model.omega1, holds, layers);
+        run.switching = switching_ledger(run.result, c.electrodes, run.built.model.omega1, contacts);
     }
     return run;
 }

@@ -110,27 +110,22 @@ double mean_force(const TimeHistory& h, const std::vector<double>& f, double fro
 
 // The first adhesive contact closed at the horizon that pulls (its force negative; a layer's on
 // average over the last period, from `settled` on): adhesion holds it.
-std::optional<StuckBalance> stuck_balance(const TransientResult& r, const std::vector<std::optional<ContactHold>>& holds,
-                                          const std::vector<std::optional<LayerHold>>& layers, double settled) {
+std::optional<StuckBalance> stuck_balance(const TransientResult& r, const std::vector<LedgerContact>& contacts,
+                                          double settled) {
     for (const ContactEpisode& e : r.episodes) {
         const auto j = static_cast<std::size_t>(e.support);
-        const bool support = j < holds.size() && holds[j];
-        const bool layer = j < layers.size() && layers[j];
-        if (!e.closed_at_end || !(support || layer) || j >= r.history.contact_force.size()) continue;
+        if (j >= contacts.size()) continue;
+        const LedgerContact& k = contacts[j];
+        if (!e.closed_at_end || !(k.hold || k.layer) || j >= r.history.contact_force.size()) continue;
         const std::vector<double>& f = r.history.contact_force[j];
         if (f.empty()) continue;
-        if (layer) {
+        if (k.layer) {
             const double mean = mean_force(r.history, f, settled, r.t_end);
             if (!(mean < 0.0)) continue;
-            const LayerHold& h = *layers[j];
-            return StuckBalance{e.support, "electrodes[" + std::to_string(h.electrode) + "].dielectric",
-                                h.restoring_force, h.even_pull_off_force, mean, h};
+            return StuckBalance{e.support, k.name, k.layer->restoring_force, k.layer->even_pull_off_force, mean, k.layer};
         }
         if (!(f.back() < 0.0)) continue;
-        if (support) {
-            return StuckBalance{e.support, "supports[" + std::to_string(j) + "]", holds[j]->restoring_force,
-                                holds[j]->pull_off_force, f.back(), std::nullopt};
-        }
+        return StuckBalance{e.support, k.name, k.hold->restoring_force, k.hold->pull_off_force, f.back(), std::nullopt};
     }
     return std::nullopt;
 }
@@ -170,8 +165,7 @@ std::string layer_reason(const StuckBalance& b, double held_for) {
 }  // namespace
 
 SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1,
-                                 const std::vector<std::optional<ContactHold>>& holds,
-                                 const std::vector<std::optional<LayerHold>>& layers) {
+                                 const std::vector<LedgerContact>& contacts) {
     SwitchingLedger L;
     L.voltage = voltage_window(electrodes);
     const std::vector<ContactEpisode>& eps = r.episodes;
@@ -217,15 +211,15 @@ SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Ele
         L.state = "closed";
         if (fell) {
             L.reason = "the horizon ended " + us_text(horizon - *L.voltage.off) + " after the voltage fell";
-            L.stuck = stuck_balance(r, holds, layers, std::max(*L.voltage.off, horizon - period));
+            L.stuck = stuck_balance(r, contacts, std::max(*L.voltage.off, horizon - period));
             if (L.stuck && L.stuck->layer) {
                 L.state = "stuck";
                 L.reason = layer_reason(*L.stuck, horizon - *L.voltage.off);
             } else if (L.stuck) {
                 const StuckBalance& b = *L.stuck;
                 L.state = "stuck";
-                std::string why = "supports[";
-                why.append(std::to_string(b.support)).append("] still holds ").append(us_text(horizon - *L.voltage.off));
+                std::string why = b.contact;
+                why.append(" still holds ").append(us_text(horizon - *L.voltage.off));
                 why.append(" after the voltage fell: the beam's elastic restoring force there, ");
                 why.append(newton_text(b.restoring_force)).append(", is ");
                 why.append(b.restoring_force < b.pull_off_force ? "below" : "above").append(" the pull-off force ");

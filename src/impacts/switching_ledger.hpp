@@ -39,7 +39,7 @@ struct SwitchingContact {
 // pulling: a support, pulled on by the beam less hard than its pull-off force, or an electrode's
 // adhesive layer, which the beam peels only where it releases more strain energy than w w_e.
 struct StuckBalance {
-    int support = 0;               // the contact's index (the supports', then the layers')
+    int support = 0;               // the contact's index among the model's contacts
     std::string contact;           // "supports[i]" or "electrodes[k].dielectric"
     double restoring_force = 0.0;  // the beam's static pull off the surface (ContactHold, LayerHold) [N]
     // F_po of a support; for a layer the pull of its stuck contact lifted evenly (LayerHold) [N].
@@ -66,12 +66,19 @@ struct SwitchingLedger {
     std::string reason;  // one sentence: why that state
 };
 
+// One contact as the ledger sees it besides its episodes: its case key, and what holds it where it
+// is adhesive: a support's hold (ContactHold) or a layer's peel balance (LayerHold); neither for a
+// plain contact.
+struct LedgerContact {
+    std::string name;  // "supports[0]", "electrodes[1].dielectric"
+    std::optional<ContactHold> hold;
+    std::optional<LayerHold> layer;
+};
+
 // What the ledger needs besides the transient: the first circular frequency of the unsupported beam
-// (a contact must last one period 2 pi / omega1 to count as stable) [rad/s]; and, per contact (the
-// index of the time history's contact columns), the hold of an adhesive support and the peel balance
-// of an adhesive dielectric layer (empty otherwise).
+// (a contact must last one period 2 pi / omega1 to count as stable) [rad/s]; and every contact, in
+// the order of the result's contacts (ContactEpisode::support, the time history's contact columns).
 SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1,
-                                 const std::vector<std::optional<ContactHold>>& holds = {},
-                                 const std::vector<std::optional<LayerHold>>& layers = {});
+                                 const std::vector<LedgerContact>& contacts);
 
 }  // namespace vi

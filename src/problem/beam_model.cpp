@@ -5,14 +5,11 @@
 #include <limits>
 #include <string>
 
-#include "forces/adhesive_contact.hpp"
-#include "forces/kelvin_voigt_contact.hpp"
-#include "forces/midplane_stretching.hpp"
-#include "forces/point_load_element.hpp"
+#include "forces/unilateral_contact.hpp"
 #include "model/case_checks.hpp"
 #include "model/input_error.hpp"
 #include "model/number_format.hpp"
-#include "problem/electrode_elements.hpp"
+#include "problem/element_families.hpp"
 #include "problem/film_elements.hpp"
 
 // The model works on the bending DOFs (v, theta) only. In this linear beam model axial and bending
@@ -64,62 +61,22 @@ RayleighCoefficients rayleigh(const RayleighDamping& d, const ModeSet& modes) {
     return c;
 }
 
-// One Kelvin-Voigt contact element per support, on the v DOF of its node. Surfaces in beam
-// coordinates (v up): below, +Support::surface (a prestress lifts it above the unloaded axis); above,
-// -Support::surface. Cc from a damping ratio zeta: Cc = 2 zeta sqrt(Kc m_eff), with m_eff = 1 /
-// phi1(x0)^2 the effective mass of the first unsupported bending mode (mass normalised) at the
-// support: the critical damping of that mode's one-DOF model on the support spring.
-void add_contacts(const Case& c, const System& s, const std::vector<int>& pos, const Eigen::VectorXd& phi1,
-                  BeamModel& b) {
-    for (std::size_t k = 0; k < c.supports.size(); ++k) {
-        const Support& sup = c.supports[k];
-        const std::string name = "supports[" + std::to_string(k) + "]";
-        const int r = s.support_dof[k];
-        if (r < 0) {
-            throw InputError(name + ".position: the support sits on a node held by an end condition (v never moves there)");
+// Every registered family's elements, in the registry's order; each contact also under its name.
+void add_elements(const Case& c, BeamModel& b) {
+    const Eigen::VectorXd first_mode = b.modes.shapes.col(0);
+    const ElementSource source{c, b.system, b.bending_position, first_mode};
+    for (const ElementFamily* family : element_families()) {
+        for (FamilyElement& made : family->elements(source)) {
+            if (made.element->is_contact()) b.contacts.push_back({made.element->name(), b.forces.size(), made.entry});
+            b.forces.push_back(std::move(made.element));
         }
-        const int dof = pos[static_cast<std::size_t>(r)];
-        double damping = sup.damping;
-        if (sup.damping_ratio) {
-            const double phi = phi1[dof];
-            if (!(std::abs(phi) > 1e-9 * phi1.cwiseAbs().maxCoeff())) {
-                throw InputError(name + ".damping_ratio: the first mode does not move at the support (give damping)");
-            }
-            damping = 2.0 * *sup.damping_ratio * std::sqrt(sup.stiffness) / std::abs(phi);
-        }
-        const double sign = sup.side == Side::below ? 1.0 : -1.0;
-        const double surface = sup.side == Side::below ? sup.surface : -sup.surface;
-        const double x = s.mesh.x[static_cast<std::size_t>(s.mesh.support_nodes[k])];
-        if (sup.adhesion == Adhesion::none) {
-            b.forces.push_back(std::make_shared<KelvinVoigtContact>(name, dof, sign, surface, sup.stiffness, damping, x));
-        } else {
-            // One element, not a second one beside the contact: adhesion changes when the contact opens,
-            // and an element's mode is its own (docs/adhesion.md §3).
-            b.forces.push_back(std::make_shared<AdhesiveContact>(
-                name, dof, sign, surface, sup.stiffness, damping, x, sup.pull_off_force(), sup.adhesion_range,
-                sup.adhesion == Adhesion::dmt ? "DMT" : "JKR"));
-        }
-        b.contacts.push_back({name, b.forces.size() - 1});
-        b.contact_stiffness.push_back(sup.stiffness);
-        b.contact_damping.push_back(damping);
     }
-}
-
-// One point-load element per load: its consistent load vector's nonzero entries.
-void add_loads(const Case& c, const System& s, BeamModel& b) {
-    for (std::size_t k = 0; k < c.loads.size(); ++k) {
-        const PointLoad& load = c.loads[k];
-        const Eigen::VectorXd shape = unit_point_load(s, load.position);
-        std::vector<int> dofs;
-        std::vector<double> weights;
-        for (Index i = 0; i < shape.size(); ++i) {
-            if (shape[i] == 0.0) continue;
-            dofs.push_back(static_cast<int>(i));
-            weights.push_back(shape[i]);
-        }
-        b.forces.push_back(std::make_shared<PointLoadElement>("loads[" + std::to_string(k) + "]", std::move(dofs),
-                                                                   std::move(weights), load.amplitude, load.time,
-                                                                   load.position * s.length));
+    // The supports' Kc and Cc (from a damping ratio where given), for reports.
+    for (const NamedContact& k : b.contacts) {
+        if (k.entry.table != "supports") continue;
+        const auto& support = dynamic_cast<const UnilateralContact&>(*b.forces[k.element]);
+        b.contact_stiffness.push_back(support.stiffness());
+        b.contact_damping.push_back(support.damping());
     }
 }
 
@@ -185,22 +142,6 @@ const NamedContact* BeamModel::contact(const std::string& name) const {
     return nullptr;
 }
 
-std::vector<int> bending_positions(const System& s) {
-    std::vector<int> pos(static_cast<std::size_t>(s.size()), -1);
-    for (std::size_t i = 0; i < s.bending.size(); ++i) pos[static_cast<std::size_t>(s.bending[i])] = static_cast<int>(i);
-    return pos;
-}
-
-Eigen::VectorXd on_bending(const System& s, const Eigen::VectorXd& reduced) {
-    Eigen::VectorXd out(static_cast<Index>(s.bending.size()));
-    for (std::size_t i = 0; i < s.bending.size(); ++i) out[static_cast<Index>(i)] = reduced[s.bending[i]];
-    return out;
-}
-
-Eigen::VectorXd unit_point_load(const System& s, double position) {
-    return on_bending(s, transverse_point_load(s, position * s.length, 1.0));
-}
-
 WatchedPoint watched_point_of(const Case& c) {
     const System s = build_system(c, SupportModel::none);
     return watched_point(c, s, bending_positions(s));
@@ -225,20 +166,7 @@ BeamModel build_beam_model(const Case& c) {
     b.films = film_regimes(c, b.omega1);
     b.M = submatrix(s.M, s.bending);
     b.K = submatrix(s.K, s.bending);
-    add_contacts(c, s, pos, b.modes.shapes.col(0), b);
-    add_loads(c, s, b);
-    for (auto& pad : electrode_elements(c, s, pos, false)) b.forces.push_back(std::move(pad));
-    for (auto& layer : dielectric_contacts(c, s, pos)) {
-        b.contacts.push_back({layer->name(), b.forces.size()});
-        b.forces.push_back(std::move(layer));
-    }
-    // The gas films damp only: they leave the static state alone (no force at v = 0).
-    for (auto& film : film_elements(c, s, pos)) b.forces.push_back(std::move(film));
-    if (c.beam.stretching) {
-        // The axis's lengthening, on every bending DOF; E is the modulus bending uses.
-        b.forces.push_back(std::make_shared<MidplaneStretching>("beam.stretching", submatrix(s.G, s.bending),
-                                                                s.props.E * s.props.A / s.length));
-    }
+    add_elements(c, b);
     b.watched = watched_point(c, s, pos);
     return b;
 }

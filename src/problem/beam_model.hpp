@@ -10,6 +10,7 @@
 
 #include "fem/rayleigh.hpp"
 #include "fem/system.hpp"
+#include "forces/element_family.hpp"
 #include "forces/force_set.hpp"
 #include "modal/eigen_solver.hpp"
 #include "model/case.hpp"
@@ -25,10 +26,12 @@ struct WatchedPoint {
     double x_over_l = 1.0;        // where it sits, x/l
 };
 
-// A contact element of the force set with the case key it comes from.
+// A contact element of the force set with the case key it comes from; its index among the contacts
+// is the index of its episodes (ContactEpisode::support) and of its columns in the time history.
 struct NamedContact {
     std::string name;             // "supports[0]", "electrodes[1].dielectric"
     std::size_t element = 0;      // index in BeamModel::forces
+    CaseEntry entry;              // the case entry it comes from ({"supports", 0}, {"electrodes", 1})
 };
 
 // M q'' + (alpha M + beta K) q' + K q = sum of the elements' forces, over the bending DOFs.
@@ -41,8 +44,8 @@ struct BeamModel {
     ModeSet modes;                          // the lowest unsupported bending modes the case refers to
     double omega1 = 0.0;                    // first unsupported bending circular frequency [rad/s]
     RayleighCoefficients rayleigh;          // alpha, beta actually used
-    ForceSet forces;                        // every force element, in the order of `contacts` first seen
-    std::vector<NamedContact> contacts;     // the contact elements: supports in case order, then layers
+    ForceSet forces;                        // every force element, family by family (problem/element_families.cpp)
+    std::vector<NamedContact> contacts;     // the contact elements, in the order of `forces`
     std::vector<double> contact_stiffness;  // Kc per support [N/m]
     std::vector<double> contact_damping;    // Cc per support [N s/m] (from damping_ratio where given)
     std::vector<FilmRegime> films;          // each squeeze film's regime at rest, at omega1
@@ -58,15 +61,5 @@ BeamModel build_beam_model(const Case& c);
 
 // The watched point's name and place for c, without building anything.
 WatchedPoint watched_point_of(const Case& c);
-
-// Position of each reduced DOF of s among its bending DOFs (s.bending), -1 for axial DOFs.
-std::vector<int> bending_positions(const System& s);
-
-// A reduced vector of s restricted to its bending DOFs.
-Eigen::VectorXd on_bending(const System& s, const Eigen::VectorXd& reduced);
-
-// Consistent load vector of a unit transverse force at x/l = position, over the bending DOFs; its
-// dot product with a bending vector is v at that point.
-Eigen::VectorXd unit_point_load(const System& s, double position);
 
 }  // namespace vi

@@ -122,29 +122,63 @@ std::vector<std::shared_ptr<const ElectrostaticPad>> electrode_elements(const Ca
     return out;
 }
 
-std::vector<std::shared_ptr<const DielectricContact>> dielectric_contacts(const Case& c, const System& s,
-                                                                          const std::vector<int>& bending_position) {
-    std::vector<std::shared_ptr<const DielectricContact>> out;
-    for (std::size_t k = 0; k < c.electrodes.size(); ++k) {
-        const Electrode& e = c.electrodes[k];
-        if (!(e.dielectric_thickness > 0.0)) continue;
-        PadMesh m = pad_mesh(c, k, s, bending_position);
-        if (m.dofs.empty()) continue;
-        middle_first(m, s);
-        const double stiffness = e.dielectric_modulus * m.geometry.width / e.dielectric_thickness;
-        std::string name = "electrodes[" + std::to_string(k) + "]";
-        name += ".dielectric";
-        if (e.work_of_adhesion) {
-            // The adhesion energy per unit length of beam lying on the layer: w over the width w_e.
-            const AdhesiveLayerLaw law(stiffness, *e.work_of_adhesion * m.geometry.width, e.adhesion_range);
-            out.push_back(std::make_shared<const DielectricContact>(std::move(name), std::move(m.dofs),
-                                                                    std::move(m.points), m.geometry, law));
-            continue;
-        }
-        out.push_back(std::make_shared<const DielectricContact>(std::move(name), std::move(m.dofs), std::move(m.points),
-                                                                m.geometry, stiffness));
+namespace {
+
+// The layer of electrode k, or null when it has none or faces no part of the beam that moves.
+std::shared_ptr<const DielectricContact> dielectric_contact(const Case& c, std::size_t k, const System& s,
+                                                            const std::vector<int>& bending_position) {
+    const Electrode& e = c.electrodes[k];
+    if (!(e.dielectric_thickness > 0.0)) return nullptr;
+    PadMesh m = pad_mesh(c, k, s, bending_position);
+    if (m.dofs.empty()) return nullptr;
+    middle_first(m, s);
+    const double stiffness = e.dielectric_modulus * m.geometry.width / e.dielectric_thickness;
+    std::string name = "electrodes[" + std::to_string(k) + "]";
+    name += ".dielectric";
+    if (e.work_of_adhesion) {
+        // The adhesion energy per unit length of beam lying on the layer: w over the width w_e.
+        const AdhesiveLayerLaw law(stiffness, *e.work_of_adhesion * m.geometry.width, e.adhesion_range);
+        return std::make_shared<const DielectricContact>(std::move(name), std::move(m.dofs), std::move(m.points),
+                                                         m.geometry, law);
     }
-    return out;
+    return std::make_shared<const DielectricContact>(std::move(name), std::move(m.dofs), std::move(m.points),
+                                                     m.geometry, stiffness);
+}
+
+class ElectrodePads final : public ElementFamily {
+public:
+    [[nodiscard]] std::string_view name() const override { return "electrostatic pads"; }
+    [[nodiscard]] std::vector<FamilyElement> elements(const ElementSource& src) const override {
+        std::vector<FamilyElement> out;
+        for (auto& pad : electrode_elements(src.c, src.system, src.bending_position, false)) {
+            out.push_back({std::move(pad), {"electrodes", out.size()}});
+        }
+        return out;
+    }
+};
+
+class DielectricLayers final : public ElementFamily {
+public:
+    [[nodiscard]] std::string_view name() const override { return "dielectric layers"; }
+    [[nodiscard]] std::vector<FamilyElement> elements(const ElementSource& src) const override {
+        std::vector<FamilyElement> out;
+        for (std::size_t k = 0; k < src.c.electrodes.size(); ++k) {
+            if (auto layer = dielectric_contact(src.c, k, src.system, src.bending_position)) out.push_back({std::move(layer), {"electrodes", k}});
+        }
+        return out;
+    }
+};
+
+}  // namespace
+
+const ElementFamily& electrode_pads() {
+    static const ElectrodePads family;
+    return family;
+}
+
+const ElementFamily& dielectric_layers() {
+    static const DielectricLayers family;
+    return family;
 }
 
 }  // namespace vi

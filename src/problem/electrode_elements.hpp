@@ -1,5 +1,6 @@
 #pragma once
-// The case's electrodes as force elements on the bending DOFs (one ElectrostaticPad each).
+// The case's electrodes as force elements on the bending DOFs: one ElectrostaticPad each, and one
+// DielectricContact per dielectric layer; the two element families that make them for a model.
 
 #include <memory>
 #include <vector>
@@ -7,6 +8,7 @@
 #include "fem/system.hpp"
 #include "forces/dielectric_contact.hpp"
 #include "forces/electrostatic_pad.hpp"
+#include "forces/element_family.hpp"
 #include "model/case.hpp"
 
 namespace vi {
@@ -28,10 +30,11 @@ std::vector<std::shared_ptr<const ElectrostaticPad>> electrode_elements(const Ca
                                                                        const std::vector<int>& bending_position,
                                                                        bool unit_voltage);
 
-// One distributed contact per electrode with a dielectric layer (dielectric_thickness > 0): the
-// beam landing on the layer; named "electrodes[i].dielectric". An electrode without a layer has none
-// (the beam must not reach its face: docs/electrostatics.md §2).
-std::vector<std::shared_ptr<const DielectricContact>> dielectric_contacts(const Case& c, const System& s,
-                                                                          const std::vector<int>& bending_position);
+// The electrodes' pads (electrode_elements at the case's voltages), and one distributed contact per
+// electrode with a dielectric layer (dielectric_thickness > 0), the beam landing on the layer, named
+// "electrodes[i].dielectric" (an electrode without a layer has none: the beam must not reach its
+// face, docs/electrostatics.md §2): the element families of the model.
+const ElementFamily& electrode_pads();
+const ElementFamily& dielectric_layers();
 
 }  // namespace vi

@@ -7,6 +7,7 @@ namespace {
 
 // A film as the builder sees it before the mesh: its name, span (x/l), side and air gap.
 struct FilmSpan {
+    CaseEntry entry;
     std::string name;
     double from = 0.0, to = 0.0;
     Side side = Side::below;
@@ -21,34 +22,48 @@ std::vector<FilmSpan> film_spans(const Case& c) {
         std::string name = "electrodes[" + std::to_string(k) + "]";
         name += ".film";
         // The gas fills the air gap only: a dielectric layer on the electrode is solid.
-        out.push_back({std::move(name), e.from, e.to, e.side, e.gap - e.dielectric_thickness});
+        out.push_back({{"electrodes", k}, std::move(name), e.from, e.to, e.side, e.gap - e.dielectric_thickness});
     }
     for (std::size_t k = 0; k < c.films.size(); ++k) {
         const Film& m = c.films[k];
-        out.push_back({"films[" + std::to_string(k) + "]", m.from, m.to, m.side, m.gap});
+        out.push_back({{"films", k}, "films[" + std::to_string(k) + "]", m.from, m.to, m.side, m.gap});
     }
     return out;
 }
 
 FilmGas gas_of(const Air& a) { return {a.viscosity, a.lambda()}; }
 
+// One film per span of the case, all as wide as the beam, skipping a span that faces no part of the
+// beam that moves. The gas films damp only: they leave the static state alone (no force at v = 0).
+class SqueezeFilms final : public ElementFamily {
+public:
+    [[nodiscard]] std::string_view name() const override { return "squeeze films"; }
+    [[nodiscard]] std::vector<FamilyElement> elements(const ElementSource& src) const override {
+        const Case& c = src.c;
+        const System& s = src.system;
+        std::vector<FamilyElement> out;
+        for (const FilmSpan& f : film_spans(c)) {
+            FilmGeometry g;
+            g.sign = f.side == Side::above ? 1.0 : -1.0;
+            g.gap = f.gap;
+            g.width = c.beam.width;
+            g.from = f.from * s.length;
+            g.to = f.to * s.length;
+            SpanQuadrature q = span_quadrature(s, src.bending_position, g.from, g.to, kFilmGaussPoints);
+            if (q.dofs.empty()) continue;
+            out.push_back({std::make_shared<const SqueezeFilm>(f.name, std::move(q.dofs), std::move(q.points), g,
+                                                               gas_of(*c.air)),
+                           f.entry});
+        }
+        return out;
+    }
+};
+
 }  // namespace
 
-std::vector<std::shared_ptr<const SqueezeFilm>> film_elements(const Case& c, const System& s,
-                                                              const std::vector<int>& bending_position) {
-    std::vector<std::shared_ptr<const SqueezeFilm>> out;
-    for (const FilmSpan& f : film_spans(c)) {
-        FilmGeometry g;
-        g.sign = f.side == Side::above ? 1.0 : -1.0;
-        g.gap = f.gap;
-        g.width = c.beam.width;
-        g.from = f.from * s.length;
-        g.to = f.to * s.length;
-        SpanQuadrature q = span_quadrature(s, bending_position, g.from, g.to, kFilmGaussPoints);
-        if (q.dofs.empty()) continue;
-        out.push_back(std::make_shared<const SqueezeFilm>(f.name, std::move(q.dofs), std::move(q.points), g, gas_of(*c.air)));
-    }
-    return out;
+const ElementFamily& squeeze_films() {
+    static const SqueezeFilms family;
+    return family;
 }
 
 std::vector<FilmRegime> film_regimes(const Case& c, double omega) {

@@ -6,15 +6,16 @@
 #include <vector>
 
 #include "fem/system.hpp"
+#include "forces/element_family.hpp"
 #include "forces/squeeze_film.hpp"
 #include "model/case.hpp"
 
 namespace vi {
 
-// One film per electrode (its span, its air gap gap - t_d) named "electrodes[i].film", and one per
-// [[films]] entry named "films[k]", all as wide as the beam; none without [air] or with film = false.
-std::vector<std::shared_ptr<const SqueezeFilm>> film_elements(const Case& c, const System& s,
-                                                              const std::vector<int>& bending_position);
+// The squeeze films as an element family of the model: one per electrode (its span, its air gap
+// gap - t_d) named "electrodes[i].film", and one per [[films]] entry named "films[k]", all as wide as
+// the beam; none without [air] or with film = false.
+const ElementFamily& squeeze_films();
 
 // A film's regime at rest: Knudsen number lambda / g [-], mu_eff / mu [-], squeeze number at omega.
 struct FilmRegime {

@@ -45,7 +45,8 @@ std::vector<std::vector<std::string>> episode_rows(const SwitchStudy& s) {
     const std::vector<ContactEpisode>& e = s.transient.result.episodes;
     for (std::size_t k = 0; k < e.size(); ++k) {
         const ContactEpisode& x = e[k];
-        rows.push_back({std::to_string(k + 1), "supports[" + std::to_string(x.support) + "]", formatted("%.5g", x.t_on * 1e6),
+        const std::string& contact = s.transient.built.model.contacts.at(static_cast<std::size_t>(x.support)).name;
+        rows.push_back({std::to_string(k + 1), contact, formatted("%.5g", x.t_on * 1e6),
                         x.closed_at_end ? "closed at the end" : formatted("%.5g", x.t_off * 1e6), formatted("%.4g", x.v_in),
                         formatted("%.4g", x.peak_force * 1e6), formatted("%.4g", x.peak_penetration * 1e9)});
     }

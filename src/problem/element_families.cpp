@@ -1,0 +1,24 @@
+#include "problem/element_families.hpp"
+
+#include "forces/midplane_stretching.hpp"
+#include "forces/point_load_element.hpp"
+#include "forces/support_contacts.hpp"
+#include "problem/electrode_elements.hpp"
+#include "problem/film_elements.hpp"
+
+namespace vi {
+
+// A new kind of force element adds its family here (and its header above).
+const std::vector<const ElementFamily*>& element_families() {
+    static const std::vector<const ElementFamily*> families{
+        &support_contacts(),   // [[supports]]: plain or adhesive contacts
+        &point_loads(),        // [[loads]]
+        &electrode_pads(),     // [[electrodes]]: the electrostatic force
+        &dielectric_layers(),  // [[electrodes]] with a dielectric layer: contacts
+        &squeeze_films(),      // [air]: the electrodes' films and [[films]]
+        &beam_stretching(),    // beam.stretching
+    };
+    return families;
+}
+
+}  // namespace vi
