@@ -10,7 +10,7 @@
 
 #include "dynamics/cvode/cvode_solver.hpp"
 #include "fem/system.hpp"
-#include "paper_cases.hpp"
+#include "transient_fixtures.hpp"
 
 namespace vi {
 namespace {
@@ -21,22 +21,16 @@ double total(const EnergyLedger& e) { return e.kinetic + e.strain + e.contact_sp
 
 // Mass m at distance h from a support (below for sign = +1, above for -1, surface at 0), moving
 // towards it at v0; K = 0, so only the contact acts.
-PiecewiseLinearProblem falling_mass(double zeta, double sign = 1.0) {
-    const double m = 1e-11, Kc = 50.0, v0 = 0.1, h = 0.2e-6;
-    PiecewiseLinearProblem p;
-    p.M = Eigen::MatrixXd::Constant(1, 1, m);
-    p.K = Eigen::MatrixXd::Zero(1, 1);
-    ContactElement c;
-    c.dof = 0;
-    c.sign = sign;
-    c.stiffness = Kc;
-    c.damping = zeta * 2.0 * std::sqrt(Kc * m);
-    p.contacts.push_back(c);
+constexpr double kMass = 1e-11, kContact = 50.0;
+double falling_mass_damper(double zeta) { return zeta * 2.0 * std::sqrt(kContact * kMass); }
+TransientProblem falling_mass(double zeta, double sign = 1.0) {
+    const double v0 = 0.1, h = 0.2e-6;
+    TransientProblem p = test::one_dof(kMass, 0.0);
+    p.forces.push_back(test::support(0, 0, sign, 0.0, kContact, falling_mass_damper(zeta)));
     p.q0 = Eigen::VectorXd::Constant(1, sign * h);
     p.v0 = Eigen::VectorXd::Constant(1, -sign * v0);
-    p.active0 = {false};
-    p.tip_dof = 0;
-    p.t_end = h / v0 + 2.0 * std::numbers::pi * std::sqrt(m / Kc);
+    p.modes0 = {0};
+    p.t_end = h / v0 + 2.0 * std::numbers::pi * std::sqrt(kMass / kContact);
     p.output_step = p.t_end / 100;
     return p;
 }
@@ -45,8 +39,8 @@ PiecewiseLinearProblem falling_mass(double zeta, double sign = 1.0) {
 // e = exp(-zeta w_n t_c). Measured (rtol 1e-10): t_c 2e-11..2e-10, e 1e-9..5e-9, impulse 3e-10..2e-9.
 TEST(CvodeSolver, FreeMassImpactMatchesKelvinVoigtClosedForm) {
     for (const auto& [zeta, sign] : {std::pair{0.0, 1.0}, {0.1, 1.0}, {0.5, 1.0}, {0.1, -1.0}}) {
-        const PiecewiseLinearProblem p = falling_mass(zeta, sign);
-        const double m = p.M(0, 0), Kc = p.contacts[0].stiffness, v0 = std::abs(p.v0[0]);
+        const TransientProblem p = falling_mass(zeta, sign);
+        const double m = kMass, Kc = kContact, v0 = std::abs(p.v0[0]);
         const double wn = std::sqrt(Kc / m);
         const double tc = (std::numbers::pi - 2.0 * std::asin(zeta)) / std::sqrt(1.0 - zeta * zeta) / wn;
         const double e = std::exp(-zeta * wn * tc);
@@ -64,7 +58,7 @@ TEST(CvodeSolver, FreeMassImpactMatchesKelvinVoigtClosedForm) {
             EXPECT_LT(rel(ep.peak_penetration, v0 / wn), 1e-7);
             EXPECT_LT(rel(ep.peak_force, Kc * v0 / wn), 1e-7);
         } else {
-            EXPECT_GE(ep.peak_force, p.contacts[0].damping * v0 * (1.0 - 1e-9));  // F at onset
+            EXPECT_GE(ep.peak_force, falling_mass_damper(zeta) * v0 * (1.0 - 1e-9));  // F at onset
         }
         // The mass leaves with e v0; the lost kinetic energy is the contact dissipation.
         const double k0 = 0.5 * m * v0 * v0;
@@ -80,20 +74,20 @@ TEST(CvodeSolver, FreeMassImpactMatchesKelvinVoigtClosedForm) {
 // Prestressed start: the mass rests at rest on the support with penetration d0 (closed at t = 0);
 // undamped, it is pushed out and leaves when d = 0 after a quarter period with speed w d0.
 TEST(CvodeSolver, ContactClosedAtStartOpensAfterQuarterPeriod) {
-    PiecewiseLinearProblem p = falling_mass(0.0);
-    const double d0 = 1e-8, wn = std::sqrt(p.contacts[0].stiffness / p.M(0, 0));
+    TransientProblem p = falling_mass(0.0);
+    const double d0 = 1e-8, wn = std::sqrt(kContact / kMass);
     p.q0[0] = -d0;
     p.v0[0] = 0.0;
-    p.active0 = {true};
+    p.modes0 = {1};
     p.t_end = 3.0 / wn;
     const TransientResult r = solve_cvode(p);
     ASSERT_EQ(r.episodes.size(), 1u);
     EXPECT_EQ(r.episodes[0].t_on, 0.0);
     EXPECT_LT(rel(r.episodes[0].t_off, 0.5 * std::numbers::pi / wn), 1e-8);
     EXPECT_LT(rel(r.episodes[0].v_out, wn * d0), 1e-8);
-    EXPECT_LT(rel(r.episodes[0].peak_force, p.contacts[0].stiffness * d0), 1e-12);
+    EXPECT_LT(rel(r.episodes[0].peak_force, kContact * d0), 1e-12);
     EXPECT_EQ(r.stats.events, 1);
-    EXPECT_LT(rel(r.initial_energy.contact_spring, 0.5 * p.contacts[0].stiffness * d0 * d0), 1e-12);
+    EXPECT_LT(rel(r.initial_energy.contact_spring, 0.5 * kContact * d0 * d0), 1e-12);
     EXPECT_EQ(r.initial_energy.contact_dissipated, 0.0);
 }
 
@@ -102,28 +96,22 @@ TEST(CvodeSolver, ContactClosedAtStartOpensAfterQuarterPeriod) {
 // The ledger: kinetic + strain = external work.
 TEST(CvodeSolver, StepLoadBreakpointIsExact) {
     const double m = 1e-11, k = 10.0, F = 1e-6, w = std::sqrt(k / m), T = 2.0 * std::numbers::pi / w;
-    PiecewiseLinearProblem p;
-    p.M = Eigen::MatrixXd::Constant(1, 1, m);
-    p.K = Eigen::MatrixXd::Constant(1, 1, k);
-    p.q0 = p.v0 = Eigen::VectorXd::Zero(1);
-    LoadTerm load;
-    load.shape = Eigen::VectorXd::Ones(1);
-    load.amplitude = F;
-    load.time.kind = TimeFunction::Kind::step;
-    load.time.t_on = 0.37 * T;
-    p.loads.push_back(load);
-    p.tip_dof = 0;
+    TransientProblem p = test::one_dof(m, k);
+    TimeFunction step;
+    step.kind = TimeFunction::Kind::step;
+    step.t_on = 0.37 * T;
+    p.forces.push_back(test::load_on_first_dof(F, step));
     p.t_end = 3.0 * T;
     p.output_step = T / 50;
     const TransientResult r = solve_cvode(p);
     double worst = 0.0, ledger = 0.0;
     for (std::size_t i = 0; i < r.history.t.size(); ++i) {
         const double t = r.history.t[i];
-        const double exact = t < load.time.t_on ? 0.0 : F / k * (1.0 - std::cos(w * (t - load.time.t_on)));
+        const double exact = t < step.t_on ? 0.0 : F / k * (1.0 - std::cos(w * (t - step.t_on)));
         worst = std::max(worst, std::abs(r.history.tip_v[i] - exact) / (2.0 * F / k));
         const EnergyLedger& e = r.history.energy[i];
         ledger = std::max(ledger, std::abs(e.kinetic + e.strain - e.external_work) / (2.0 * F * F / k));
-        if (t < load.time.t_on) {
+        if (t < step.t_on) {
             EXPECT_EQ(r.history.tip_v[i], 0.0);
         }
     }
@@ -141,17 +129,9 @@ TEST(CvodeSolver, StepLoadBreakpointIsExact) {
 TEST(CvodeSolver, GrazingContactIsNotMissed) {
     const double m = 1e-11, k = 10.0, A = 1e-6, w = std::sqrt(k / m);
     for (double eps : {1e-4, 1e-6, 1e-8}) {
-        PiecewiseLinearProblem p;
-        p.M = Eigen::MatrixXd::Constant(1, 1, m);
-        p.K = Eigen::MatrixXd::Constant(1, 1, k);
+        TransientProblem p = test::one_dof(m, k);
         p.q0 = Eigen::VectorXd::Constant(1, A);
-        p.v0 = Eigen::VectorXd::Zero(1);
-        ContactElement c;
-        c.dof = 0;
-        c.surface = -(1.0 - eps) * A;
-        c.stiffness = 1e3 * k;
-        p.contacts.push_back(c);
-        p.tip_dof = 0;
+        p.forces.push_back(test::support(0, 0, 1.0, -(1.0 - eps) * A, 1e3 * k, 0.0));
         p.t_end = 0.75 * 2.0 * std::numbers::pi / w;
         p.output_step = p.t_end / 10;
         const TransientResult r = solve_cvode(p);
@@ -168,26 +148,21 @@ TEST(CvodeSolver, GrazingContactIsNotMissed) {
 
 // The paper's cantilever (bending DOFs), one contact at the tip with zero gap, released from rest
 // in its static shape under a tip force with the tip 1 um up.
-PiecewiseLinearProblem bouncing_cantilever(int elements, double alpha, double beta, double Cc) {
+TransientProblem bouncing_cantilever(int elements, double alpha, double beta, double Cc) {
     const Case c = test::paper_cantilever(elements);
     const System s = build_system(c);
-    PiecewiseLinearProblem p;
-    p.M = Eigen::MatrixXd(submatrix(s.M, s.bending));
-    p.K = Eigen::MatrixXd(submatrix(s.K, s.bending));
+    TransientProblem p;
+    p.M = submatrix(s.M, s.bending);
+    p.K = submatrix(s.K, s.bending);
     const int tip_reduced = s.reduced_of[global_dof(s.mesh.node_count() - 1, 1)];
     p.tip_dof = static_cast<int>(std::find(s.bending.begin(), s.bending.end(), tip_reduced) - s.bending.begin());
     Eigen::VectorXd f = Eigen::VectorXd::Zero(p.size());
     f[p.tip_dof] = 1.0;
-    p.q0 = p.K.ldlt().solve(f);
+    p.q0 = Eigen::MatrixXd(p.K).ldlt().solve(f);
     p.q0 *= 1e-6 / p.q0[p.tip_dof];
     p.v0 = Eigen::VectorXd::Zero(p.size());
-    ContactElement contact;
-    contact.dof = p.tip_dof;
-    contact.stiffness = 50.0;
-    contact.damping = Cc;
-    contact.x = c.beam.length;
-    p.contacts.push_back(contact);
-    p.active0 = {false};
+    p.forces.push_back(test::support(0, p.tip_dof, 1.0, 0.0, 50.0, Cc, c.beam.length));
+    p.modes0 = {0};
     p.alpha = alpha;
     p.beta = beta;
     p.t_end = 145e-6;
@@ -214,7 +189,7 @@ void expect_sane_episodes(const TransientResult& r) {
 // the highest mode. With m = 2 elements and rtol 1e-11 (130 us: 21 episodes): drift 6.6e-9 in
 // 3.6e5 steps (docs/model.md §13 on why the modal tolerances are set as they are).
 TEST(CvodeSolver, UndampedBeamConservesEnergyThroughImpacts) {
-    const PiecewiseLinearProblem p = bouncing_cantilever(2, 0.0, 0.0, 0.0);
+    const TransientProblem p = bouncing_cantilever(2, 0.0, 0.0, 0.0);
     CvodeOptions o;
     o.rtol = 1e-11;
     const TransientResult r = solve_cvode(p, o);
@@ -233,7 +208,7 @@ TEST(CvodeSolver, UndampedBeamConservesEnergyThroughImpacts) {
 // sample. Measured (130 us): 21 episodes, 3.6e-10 relative, 8.8e4 steps, 1.1 s.
 TEST(CvodeSolver, DampedBeamLedgerBalancesAndEpisodesAreSane) {
     const double w1 = 7.15e5;  // about the first circular frequency of the cantilever [rad/s]
-    const PiecewiseLinearProblem p = bouncing_cantilever(10, 0.02 * w1, 0.002 / w1, 5e-6);
+    const TransientProblem p = bouncing_cantilever(10, 0.02 * w1, 0.002 / w1, 5e-6);
     const TransientResult r = solve_cvode(p);
     EXPECT_GT(r.episodes.size(), 20u);
     const double e0 = total(r.initial_energy);
@@ -254,7 +229,7 @@ TEST(CvodeSolver, DampedBeamLedgerBalancesAndEpisodesAreSane) {
 }
 
 TEST(CvodeSolver, RejectsInconsistentProblems) {
-    PiecewiseLinearProblem p = falling_mass(0.0);
+    TransientProblem p = falling_mass(0.0);
     p.tip_dof = 3;
     EXPECT_THROW((void)solve_cvode(p), std::invalid_argument);
     p = falling_mass(0.0);

@@ -21,7 +21,7 @@ namespace {
 // Both solvers on o over the given number of periods: response within 1e-10 of `scale` and the
 // ledger closed to 1e-10 for the exact solver, 1e-6 for CVODE.
 void expect_both_solvers_match(const LoadedOscillator& o, double periods, double scale, const std::string& what) {
-    const PiecewiseLinearProblem p = o.problem(periods * o.period(), o.period() / 40.0);
+    const TransientProblem p = o.problem(periods * o.period(), o.period() / 40.0);
     const LoadResponseError exact = load_response_error(o, solve_exact(p), scale);
     EXPECT_LT(exact.response, 1e-10) << what;
     EXPECT_LT(exact.ledger, 1e-10) << what;

@@ -9,6 +9,7 @@
 #include "validation/reference_problems.hpp"
 #include "dynamics/exact/secular.hpp"
 #include "dynamics/exact/state_modes.hpp"
+#include "dynamics/piecewise_linear_form.hpp"
 #include "fem/system.hpp"
 #include "transient_fixtures.hpp"
 
@@ -17,7 +18,7 @@ namespace {
 
 // The paper cantilever with its contact moved to the node nearest to x/l = position.
 PiecewiseLinearProblem with_contact_at(int m, double position, double beta) {
-    PiecewiseLinearProblem p = test::cantilever_drop(m, 1000.0, 5e-5, 1e-6, 0.0, beta, 1e-5);
+    PiecewiseLinearProblem p = piecewise_linear_form(test::cantilever_drop(m, 1000.0, 5e-5, 1e-6, 0.0, beta, 1e-5));
     const int node = static_cast<int>(std::lround(position * m));
     const System s = build_system(test::paper_cantilever(m, 1.0));
     const int reduced = s.reduced_of[static_cast<std::size_t>(global_dof(node, 1))];

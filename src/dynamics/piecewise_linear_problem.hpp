@@ -1,7 +1,10 @@
 #pragma once
-// PiecewiseLinearProblem: everything a transient solver needs, over the bending DOFs of one System.
+// PiecewiseLinearProblem: a transient problem in the exact solver's terms (dynamics/exact/), over the
+// bending DOFs: unilateral Kelvin-Voigt contacts and prescribed loads, made from a TransientProblem
+// by piecewise_linear_form.
 
 #include <Eigen/Dense>
+#include <string>
 #include <vector>
 
 #include "model/time_function.hpp"
@@ -14,6 +17,7 @@ namespace vi {
 // dd/dt = -sign dv/dt, force magnitude F = Kc d + Cc dd/dt, force on the DOF sign F
 // = Kc (surface - v) - Cc dv/dt. It acts only while d > 0 and F > 0 (no tension).
 struct ContactElement {
+    std::string name;        // its case key, for messages ("supports[0]")
     int dof = -1;            // index into the problem's DOF vector
     double sign = 1.0;       // +1 below, -1 above
     double surface = 0.0;    // height of the support surface in v [m]

@@ -4,7 +4,10 @@
 #include <cmath>
 #include <complex>
 #include <numbers>
+#include <memory>
 #include <stdexcept>
+
+#include "forces/point_load_element.hpp"
 
 namespace vi {
 
@@ -12,18 +15,15 @@ double LoadedOscillator::omega() const { return std::sqrt(stiffness / mass); }
 
 double LoadedOscillator::period() const { return 2.0 * std::numbers::pi / omega(); }
 
-PiecewiseLinearProblem LoadedOscillator::problem(double t_end, double output_step) const {
-    PiecewiseLinearProblem p;
-    p.M = Eigen::MatrixXd::Constant(1, 1, mass);
-    p.K = Eigen::MatrixXd::Constant(1, 1, stiffness);
+TransientProblem LoadedOscillator::problem(double t_end, double output_step) const {
+    TransientProblem p;
+    p.M = Eigen::MatrixXd::Constant(1, 1, mass).sparseView();
+    p.K = Eigen::MatrixXd::Constant(1, 1, stiffness).sparseView();
     p.alpha = 2.0 * zeta * omega();
     p.q0 = Eigen::VectorXd::Constant(1, q0);
     p.v0 = Eigen::VectorXd::Zero(1);
-    LoadTerm load;
-    load.shape = Eigen::VectorXd::Ones(1);
-    load.amplitude = force;
-    load.time = g;
-    p.loads.push_back(load);
+    p.forces.push_back(std::make_shared<PointLoadElement>("loads[0]", std::vector<int>{0}, std::vector<double>{1.0},
+                                                          force, g, -1.0));
     p.tip_dof = 0;
     p.t_end = t_end;
     p.output_step = output_step;

@@ -3,7 +3,7 @@
 // F g(t), with its response in closed form (harmonic, step and ramp forcing), and how far a solver's
 // time history and energy ledger are from it.
 
-#include "dynamics/piecewise_linear_problem.hpp"
+#include "dynamics/transient_problem.hpp"
 #include "dynamics/transient_result.hpp"
 #include "model/time_function.hpp"
 
@@ -19,8 +19,8 @@ struct LoadedOscillator {
 
     [[nodiscard]] double omega() const;   // undamped circular frequency [rad/s]
     [[nodiscard]] double period() const;  // 2 pi / omega [s]
-    // The problem both solvers take: one DOF, no contact.
-    [[nodiscard]] PiecewiseLinearProblem problem(double t_end, double output_step) const;
+    // The problem both solvers take: one DOF, the load "loads[0]", no contact.
+    [[nodiscard]] TransientProblem problem(double t_end, double output_step) const;
     // q(t) [m] in closed form. The ramp is solved undamped from rest only; any other combination
     // throws std::invalid_argument.
     [[nodiscard]] double response(double t) const;

@@ -32,7 +32,7 @@ std::string section_loads(const ValidationOptions& o) {
     t.header = {"load", "exact: response", "exact: ledger", "CVODE: response", "CVODE: ledger",
                 "test asserts (exact / CVODE)"};
     auto row = [&](const std::string& name, const LoadedOscillator& lo, double periods, double scale) {
-        const PiecewiseLinearProblem p = lo.problem(periods * lo.period(), lo.period() / 40.0);
+        const TransientProblem p = lo.problem(periods * lo.period(), lo.period() / 40.0);
         const LoadResponseError e = load_response_error(lo, solve_exact(p), scale);
         const LoadResponseError c = load_response_error(lo, solve_cvode(p), scale);
         t.add({name, err(e.response), err(e.ledger), err(c.response), err(c.ledger), "< 1e-10 / < 1e-6"});

@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "fem/system.hpp"
+#include "forces/kelvin_voigt_contact.hpp"
 #include "modal/modal_analysis.hpp"
 
 namespace vi {
@@ -29,12 +30,12 @@ Case clamped_clamped(int elements) {
     return c;
 }
 
-PiecewiseLinearProblem cantilever_drop(int m, double Kc, double Cc, double y0, double alpha, double beta, double t_end) {
+TransientProblem cantilever_drop(int m, double Kc, double Cc, double y0, double alpha, double beta, double t_end) {
     const Case c = paper_cantilever(m, 1.0);
     const System s = build_system(c);
-    PiecewiseLinearProblem p;
-    p.M = Eigen::MatrixXd(submatrix(s.M, s.bending));
-    p.K = Eigen::MatrixXd(submatrix(s.K, s.bending));
+    TransientProblem p;
+    p.M = submatrix(s.M, s.bending);
+    p.K = submatrix(s.K, s.bending);
     p.alpha = alpha;
     p.beta = beta;
     const int tip_reduced = s.reduced_of[static_cast<std::size_t>(global_dof(s.mesh.node_count() - 1, 1))];
@@ -44,36 +45,27 @@ PiecewiseLinearProblem cantilever_drop(int m, double Kc, double Cc, double y0, d
     }
     Eigen::VectorXd f = Eigen::VectorXd::Zero(p.K.rows());
     f[tip] = 1.0;
-    Eigen::VectorXd q = p.K.ldlt().solve(f);
+    Eigen::VectorXd q = Eigen::MatrixXd(p.K).ldlt().solve(f);
     q *= y0 / q[tip];
-    ContactElement ce;
-    ce.dof = tip;
-    ce.stiffness = Kc;
-    ce.damping = Cc;
-    ce.x = c.beam.length;
-    p.contacts.push_back(ce);
+    p.forces.push_back(std::make_shared<KelvinVoigtContact>("supports[0]", tip, 1.0, 0.0, Kc, Cc, c.beam.length));
     p.q0 = q;
     p.v0 = Eigen::VectorXd::Zero(q.size());
-    p.active0 = {false};
+    p.modes0 = {0};
     p.tip_dof = tip;
     p.t_end = t_end;
     p.output_step = t_end / 500;
     return p;
 }
 
-PiecewiseLinearProblem single_dof_drop(double m, double Kc, double Cc, double h, double v, double t_end) {
-    PiecewiseLinearProblem p;
-    p.M = Eigen::MatrixXd::Constant(1, 1, m);
+TransientProblem single_dof_drop(double m, double Kc, double Cc, double h, double v, double t_end) {
+    TransientProblem p;
+    p.M = Eigen::MatrixXd::Constant(1, 1, m).sparseView();
     // The free state needs a positive stiffness; 1e-14 Kc changes the closed forms by O(1e-14).
-    p.K = Eigen::MatrixXd::Constant(1, 1, 1e-14 * Kc);
-    ContactElement c;
-    c.dof = 0;
-    c.stiffness = Kc;
-    c.damping = Cc;
-    p.contacts.push_back(c);
+    p.K = Eigen::MatrixXd::Constant(1, 1, 1e-14 * Kc).sparseView();
+    p.forces.push_back(std::make_shared<KelvinVoigtContact>("supports[0]", 0, 1.0, 0.0, Kc, Cc, 0.0));
     p.q0 = Eigen::VectorXd::Constant(1, h);
     p.v0 = Eigen::VectorXd::Constant(1, -v);
-    p.active0 = {false};
+    p.modes0 = {0};
     p.tip_dof = 0;
     p.t_end = t_end;
     p.output_step = t_end / 100;

@@ -2,7 +2,7 @@
 // Reference problems shared by the validation report and the tests: the paper's cantilever as a
 // Case, and small transient problems built directly (no case file) for closed-form checks.
 
-#include "dynamics/piecewise_linear_problem.hpp"
+#include "dynamics/transient_problem.hpp"
 #include "model/case.hpp"
 
 namespace vi {
@@ -13,13 +13,14 @@ Case paper_cantilever(int elements, double support_at = -1.0);
 // The same beam clamped at both ends.
 Case clamped_clamped(int elements);
 
-// The paper's cantilever (m elements) on a Kelvin-Voigt contact at its tip (zero gap), released
-// from rest in its static shape under a tip force with the tip lifted by y0 [m].
-PiecewiseLinearProblem cantilever_drop(int m, double Kc, double Cc, double y0, double alpha, double beta, double t_end);
+// The paper's cantilever (m elements) on a Kelvin-Voigt contact "supports[0]" at its tip (zero gap),
+// released from rest in its static shape under a tip force with the tip lifted by y0 [m].
+TransientProblem cantilever_drop(int m, double Kc, double Cc, double y0, double alpha, double beta, double t_end);
 
-// One mass m [kg] on a contact below at height 0, from height h [m] moving down at v [m/s]. The free
+// One mass m [kg] on a contact "supports[0]" below at height 0, from height h [m] moving down at
+// v [m/s]. The free
 // state needs a positive stiffness; k0 = 1e-14 Kc changes the contact closed forms by O(1e-14).
-PiecewiseLinearProblem single_dof_drop(double m, double Kc, double Cc, double h, double v, double t_end);
+TransientProblem single_dof_drop(double m, double Kc, double Cc, double h, double v, double t_end);
 
 // Largest omega_1(supported) / omega_1(free) over the position of a pin on the m-element
 // cantilever: coarse scan in steps of 0.02, then golden-section search. Returns {x0/l, ratio}.

@@ -63,8 +63,9 @@ Drift drift(const TransientResult& r, F f) {
 }
 
 // Impacts after grouping with the default gap (a quarter of the first period of the beam, m elements).
-std::size_t impact_count(const TransientResult& r, const PiecewiseLinearProblem& p) {
-    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(p.K, p.M, Eigen::EigenvaluesOnly);
+std::size_t impact_count(const TransientResult& r, const TransientProblem& p) {
+    Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(Eigen::MatrixXd(p.K), Eigen::MatrixXd(p.M),
+                                                                Eigen::EigenvaluesOnly);
     ImpactSettings s;
     s.omega1 = std::sqrt(es.eigenvalues()[0]);
     s.length = 117e-6;
@@ -92,7 +93,7 @@ std::string section_single_dof(const ValidationOptions& o) {
         const double Cc = 2.0 * zeta * std::sqrt(Kc * m);
         const double tc = (std::numbers::pi - 2.0 * std::asin(zeta)) / (wn * std::sqrt(1.0 - zeta * zeta));
         const double e = std::exp(-zeta * wn * tc);
-        const PiecewiseLinearProblem p = single_dof_drop(m, Kc, Cc, h, v, h / v + 1.5 * tc);
+        const TransientProblem p = single_dof_drop(m, Kc, Cc, h, v, h / v + 1.5 * tc);
         const Attempt ex = attempt([&] { return solve_exact(p); });
         const Attempt cv = attempt([&] { return solve_cvode(p); });
         cvode_seconds += cv.seconds;
@@ -132,7 +133,7 @@ std::string section_energy(const ValidationOptions& o) {
          "equal the Rayleigh and contact-damper work the solver integrates. Ledger error = max of "
          "|E(t) + W_rayleigh(t) + W_contact(t) - E(0)| / E(0).\n\n";
     Table t{{"run", "episodes (impacts)", "quantity", "computed", "reference", "test asserts"}, {}};
-    auto add = [&](const std::string& run, const PiecewiseLinearProblem& p, const Attempt& a, bool damped,
+    auto add = [&](const std::string& run, const TransientProblem& p, const Attempt& a, bool damped,
                    const std::string& tol) {
         if (!a.result) {
             t.add({run, "-", damped ? "ledger error" : "energy drift", "failed: " + a.failure, "0", tol});
@@ -150,15 +151,15 @@ std::string section_energy(const ValidationOptions& o) {
         t.add({run, count, quantity, err(d.worst), "0", tol});
     };
 
-    const PiecewiseLinearProblem undamped10 = cantilever_drop(10, 40.0, 0.0, 1e-6, 0.0, 0.0, 1.5e-4);
-    const PiecewiseLinearProblem damped10 = cantilever_drop(10, 40.0, 5e-7, 1e-6, 2e3, 2e-10, 1.2e-4);
+    const TransientProblem undamped10 = cantilever_drop(10, 40.0, 0.0, 1e-6, 0.0, 0.0, 1.5e-4);
+    const TransientProblem damped10 = cantilever_drop(10, 40.0, 5e-7, 1e-6, 2e3, 2e-10, 1.2e-4);
     add("exact, undamped, m = 10, 150 us", undamped10, attempt([&] { return solve_exact(undamped10); }), false,
         "< 1e-8 (`UndampedEnergyIsConservedThroughTwentyImpacts`)");
     add("exact, damped, m = 10, 120 us", damped10, attempt([&] { return solve_exact(damped10); }), true,
         "< 1e-8 (`DampedEnergyLossEqualsDamperWork`)");
     report_progress(o, "section 6: exact solver energy");
 
-    const PiecewiseLinearProblem undamped2 = cantilever_drop(2, 40.0, 0.0, 1e-6, 0.0, 0.0, 1.5e-4);
+    const TransientProblem undamped2 = cantilever_drop(2, 40.0, 0.0, 1e-6, 0.0, 0.0, 1.5e-4);
     CvodeOptions tight;
     tight.rtol = 1e-11;
     const Attempt cv2 = attempt([&] { return solve_cvode(undamped2, tight); });
@@ -175,7 +176,7 @@ std::string section_energy(const ValidationOptions& o) {
     }
     // --quick: the damped check on m = 2 as well (m = 10 takes seconds).
     const int md = o.quick ? 2 : 10;
-    const PiecewiseLinearProblem damped_cv = o.quick ? cantilever_drop(2, 40.0, 5e-7, 1e-6, 2e3, 2e-10, 1.2e-4) : damped10;
+    const TransientProblem damped_cv = o.quick ? cantilever_drop(2, 40.0, 5e-7, 1e-6, 2e3, 2e-10, 1.2e-4) : damped10;
     const Attempt cvd = attempt([&] { return solve_cvode(damped_cv); });
     add("CVODE rtol 1e-10, damped, m = " + std::to_string(md) + ", 120 us", damped_cv, cvd, true,
         md == 10 ? "< 1e-7 (`DampedBeamLedgerBalancesAndEpisodesAreSane`, Kc = 50)" : "-");

@@ -17,7 +17,6 @@
 #include "dynamics/cvode/cvode_linear_solver.hpp"
 #include "dynamics/cvode/cvode_system.hpp"
 #include "dynamics/cvode/fast_nvector.hpp"
-#include "dynamics/piecewise_linear_form.hpp"
 #include "model/run_control.hpp"
 
 namespace vi {
@@ -479,10 +478,6 @@ TransientResult solve_cvode(const TransientProblem& p, const CvodeOptions& o) {
     element_refusal.clear();
     Driver driver(p, o);
     return driver.run();
-}
-
-TransientResult solve_cvode(const PiecewiseLinearProblem& p, const CvodeOptions& o) {
-    return solve_cvode(transient_problem_of(p), o);
 }
 
 }  // namespace vi

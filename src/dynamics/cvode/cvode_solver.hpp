@@ -6,7 +6,6 @@
 // elements (contacts) are handled by CVODE's root finding with a restart at every switch. Also the
 // independent cross-check of the exact event-driven solver.
 
-#include "dynamics/piecewise_linear_problem.hpp"
 #include "dynamics/transient_problem.hpp"
 #include "dynamics/transient_result.hpp"
 
@@ -43,7 +42,5 @@ struct CvodeOptions {
 // reaches an electrode; the element's message included), and StopRequested / TimeLimitReached from
 // check_run() (never returns a partial result).
 TransientResult solve_cvode(const TransientProblem& p, const CvodeOptions& o = {});
-// The same problem built for the exact solver (its contacts and loads become force elements).
-TransientResult solve_cvode(const PiecewiseLinearProblem& p, const CvodeOptions& o = {});
 
 }  // namespace vi

@@ -112,27 +112,27 @@ std::string endless_switching_message(const PiecewiseLinearProblem& p, int only,
     const std::string at = " switches without end at t = " + std::to_string(t * 1e6) + " us (zero-length contact states repeat)";
     if (only >= 0) {
         const ContactElement& ce = p.contacts[static_cast<std::size_t>(only)];
-        const std::string k = "supports[" + std::to_string(only) + "]";
+        const std::string& k = ce.name;
         std::ostringstream msg;
         msg << "transient: " << k << at << ": its damper (Cc = " << ce.damping << " N s/m, Cc/Kc = " << ce.damping / ce.stiffness * 1e6
             << " us) stops the contact point like a plastic stop, and the sign of its force at the opening is roundoff; lower "
             << k << ".damping_ratio (or .damping) or use fewer beam.elements";
         return msg.str();
     }
-    return "transient: " + (who >= 0 ? "supports[" + std::to_string(who) + "]" : std::string("a support")) + at +
+    return "transient: " + (who >= 0 ? p.contacts[static_cast<std::size_t>(who)].name : std::string("a support")) + at +
            "; give the supports some damping (damping_ratio) or move them apart";
 }
 
 // The piece of one contact state from t0; a state that cannot be decomposed is reported with the
 // time and the closed contacts, which is what the caller (or the user) needs to place it.
-const PieceSolution& piece_at(ExactModel& model, const std::vector<bool>& active, const Eigen::VectorXd& x, double t0,
-                              double t1) {
+const PieceSolution& piece_at(ExactModel& model, const PiecewiseLinearProblem& p, const std::vector<bool>& active,
+                              const Eigen::VectorXd& x, double t0, double t1) {
     try {
         return model.piece(active, x, t0, t1);
     } catch (const NotDiagonalisable& e) {
         std::string closed;
         for (std::size_t c = 0; c < active.size(); ++c) {
-            if (active[c]) closed += (closed.empty() ? "" : ", ") + ("supports[" + std::to_string(c) + "]");
+            if (active[c]) closed += (closed.empty() ? "" : ", ") + p.contacts[c].name;
         }
         throw NotDiagonalisable(std::string(e.what()) + " at t = " + std::to_string(t0 * 1e6) + " us, closed: " +
                                 (closed.empty() ? std::string("none") : closed));
@@ -197,7 +197,7 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions&
     double last_switch_t = -1.0;
 
     {
-        const PieceSolution& first = piece_at(model, active, x, 0.0, p.t_end);
+        const PieceSolution& first = piece_at(model, p, active, x, 0.0, p.t_end);
         for (int c = 0; c < nc; ++c) {
             if (active[static_cast<std::size_t>(c)]) open_episode(c, 0.0, first.contact_velocity(c).value(0.0));
         }
@@ -215,7 +215,7 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions&
         const double piece_end = bit == breaks.end() ? p.t_end : std::min(p.t_end, *bit);
         const auto t_piece = Clock::now();
         const double dec_before = model.decomposition_seconds();
-        const PieceSolution& s = piece_at(model, active, x, t, piece_end);
+        const PieceSolution& s = piece_at(model, p, active, x, t, piece_end);
         res.stats.propagation_s += seconds_since(t_piece) - (model.decomposition_seconds() - dec_before);
         const double span = piece_end - t;
         // At rest: with nothing left to change the forcing, a motion whose energy about this piece's
