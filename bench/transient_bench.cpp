@@ -47,7 +47,7 @@ void report(benchmark::State& state, const vi::TransientResult& r) {
 void BM_ExactThroughTp(benchmark::State& state) {
     const vi::Case c = example_through_tp();
     const vi::BuiltProblem b = vi::build_transient_problem(c);
-    vi::ExactOptions o;
+    vi::TransientOptions o;
     o.history = state.range(0) >= 1;
     o.energy = state.range(0) >= 2;
     vi::TransientResult r;
@@ -66,7 +66,7 @@ void BM_ExactSupportAt(benchmark::State& state) {
     c.supports.at(0).position = static_cast<double>(state.range(0)) / 100.0;
     c.beam.elements = static_cast<int>(state.range(1));
     const vi::BuiltProblem b = vi::build_transient_problem(c);
-    vi::ExactOptions o;
+    vi::TransientOptions o;
     o.history = false;
     o.energy = false;
     vi::TransientResult r;
@@ -102,7 +102,7 @@ void BM_CvodeThroughTp(benchmark::State& state) {
     co.reduced_modes = c.solver.reduced_modes;
     vi::TransientResult r;
     for (auto _ : state) {
-        r = vi::solve_cvode(b.problem, co);
+        r = vi::solve_cvode(b.problem, {}, co);
         benchmark::DoNotOptimize(r.episodes.data());
     }
     report(state, r);

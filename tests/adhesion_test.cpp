@@ -158,7 +158,7 @@ TEST(Adhesion, EnergyLedgerClosesThroughAdhesiveImpacts) {
     p.output_step = p.t_end / 2000.0;
     CvodeOptions o;
     o.rtol = 1e-11;
-    const TransientResult r = solve_cvode(p, o);
+    const TransientResult r = solve_cvode(p, {}, o);
     ASSERT_GE(r.episodes.size(), 4u);  // it hits and leaves again every period
     const auto total = [](const EnergyLedger& e) { return e.kinetic + e.strain + e.contact_spring; };
     const double e0 = total(r.initial_energy);

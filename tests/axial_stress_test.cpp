@@ -203,7 +203,7 @@ TEST(BridgeSwitchExample, PullinAndAClosingTransientWithItsEnergyBalance) {
     const BuiltProblem built = build_transient_problem(c);
     CvodeOptions o;
     o.rtol = 1e-9;  // at the example's 1e-8 the ledger drifts by 1.3e-6
-    const TransientResult t = solve_cvode(built.problem, o);
+    const TransientResult t = solve_cvode(built.problem, {}, o);
     ASSERT_FALSE(t.episodes.empty());
     const auto total = [](const EnergyLedger& e) {
         return e.kinetic + e.strain + e.contact_spring + e.electrical + e.contact_dissipated + e.rayleigh_dissipated -

@@ -192,7 +192,7 @@ TEST(CvodeSolver, UndampedBeamConservesEnergyThroughImpacts) {
     const TransientProblem p = bouncing_cantilever(2, 0.0, 0.0, 0.0);
     CvodeOptions o;
     o.rtol = 1e-11;
-    const TransientResult r = solve_cvode(p, o);
+    const TransientResult r = solve_cvode(p, {}, o);
     EXPECT_GT(r.episodes.size(), 20u);
     const double e0 = total(r.initial_energy);
     double worst = 0.0;
@@ -238,7 +238,7 @@ TEST(CvodeSolver, RejectsInconsistentProblems) {
 }
 
 TEST(CvodeSolver, StepBudgetExhaustedThrows) {
-    CvodeOptions o;
+    TransientOptions o;
     o.max_steps = 20;
     EXPECT_THROW((void)solve_cvode(bouncing_cantilever(10, 0.0, 0.0, 0.0), o), std::runtime_error);
 }

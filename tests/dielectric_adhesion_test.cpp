@@ -387,7 +387,7 @@ rtol = %.17g
         const BuiltProblem b = build_transient_problem(c);
         CvodeOptions o;
         o.rtol = rtol;
-        return solve_cvode(b.problem, o);
+        return solve_cvode(b.problem, {}, o);
     };
     const auto total = [](const EnergyLedger& e) {
         return e.kinetic + e.strain + e.contact_spring + e.electrical + e.rayleigh_dissipated + e.contact_dissipated -

@@ -159,7 +159,7 @@ rtol = 1e-9
     const BuiltProblem b = build_transient_problem(c);
     CvodeOptions o;
     o.rtol = 1e-9;
-    const TransientResult t = solve_cvode(b.problem, o);
+    const TransientResult t = solve_cvode(b.problem, {}, o);
     ASSERT_FALSE(t.episodes.empty());
     EXPECT_GT(t.episodes.front().t_on, 1e-6);
     EXPECT_LT(t.episodes.front().v_in, 0.0);  // it lands moving down

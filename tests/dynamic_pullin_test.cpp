@@ -86,7 +86,7 @@ std::string sci(double x) {
 StepTrial plate_trial(const Plate& p, double volts, double rtol, double periods) {
     CvodeOptions o;
     o.rtol = rtol;
-    const TransientResult r = solve_cvode(plate_problem(p, volts, periods), o);
+    const TransientResult r = solve_cvode(plate_problem(p, volts, periods), {}, o);
     StepTrial t;
     t.voltage = volts;
     t.closes = !r.episodes.empty();

@@ -162,7 +162,7 @@ TEST(SwitchExample, PullinAndAClosingTransientWithItsEnergyBalance) {
     const BuiltProblem b = build_transient_problem(read_case_file(file));
     CvodeOptions o;
     o.rtol = 1e-8;
-    const TransientResult t = solve_cvode(b.problem, o);
+    const TransientResult t = solve_cvode(b.problem, {}, o);
     ASSERT_FALSE(t.episodes.empty());
     const auto total = [](const EnergyLedger& e) {
         return e.kinetic + e.strain + e.contact_spring + e.electrical + e.contact_dissipated + e.rayleigh_dissipated -

@@ -151,7 +151,9 @@ TEST(ExactSolver, NegativelyDampedModelIsRefused) {
 // from 1e8 to 1e13 1/s); the contact state must still decompose and the ledger still close.
 TEST(ExactSolver, FineMeshWithOverdampedHighModes) {
     const PiecewiseLinearProblem p = pl(test::cantilever_drop(100, 1000.0, 2e-7, 1e-6, 0.0, 1.9e-9, 8e-6));
-    const TransientResult r = solve_exact(p, ExactOptions{true, false, 1e-9});
+    TransientOptions o;
+    o.history = false;
+    const TransientResult r = solve_exact(p, o);
     ASSERT_GE(r.episodes.size(), 1u);
     auto total = [](const EnergyLedger& e) {
         return e.kinetic + e.strain + e.contact_spring + e.rayleigh_dissipated + e.contact_dissipated - e.external_work;
@@ -178,7 +180,7 @@ TEST(ExactSolver, StateCacheBoundEvictsWithoutChangingTheResult) {
     const TransientResult kept = solve_exact(p);
     ExactOptions tight;
     tight.state_cache_bytes = 1;
-    const TransientResult evicted = solve_exact(p, tight);
+    const TransientResult evicted = solve_exact(p, {}, tight);
     ASSERT_GE(kept.episodes.size(), 4u);
     EXPECT_GT(evicted.stats.decompositions, kept.stats.decompositions);
     ASSERT_EQ(evicted.episodes.size(), kept.episodes.size());

@@ -185,7 +185,7 @@ TEST(SqueezeFilm, EnergyLedgerClosesInAir) {
                              "[initial]\nkind = \"displacement\"\ndisplacement = \"0.5 um\"\n"
                              "[solver]\nmethod = \"cvode\"\nhorizon = \"20 us\"\n";
     BuiltProblem b = build_transient_problem(read_case_text(text, "ledger.toml"));
-    const TransientResult r = solve_cvode(b.problem, CvodeOptions{});
+    const TransientResult r = solve_cvode(b.problem);
     const auto total = [](const EnergyLedger& e) {
         return e.kinetic + e.strain + e.contact_spring + e.electrical + e.rayleigh_dissipated + e.contact_dissipated -
                e.external_work;

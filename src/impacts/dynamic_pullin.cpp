@@ -7,6 +7,7 @@
 
 #include "dynamics/cvode/cvode_solver.hpp"
 #include "dynamics/transient_start.hpp"
+#include "impacts/simulation.hpp"
 #include "model/input_error.hpp"
 #include "model/run_control.hpp"
 #include "model/run_estimate.hpp"
@@ -72,11 +73,7 @@ StepTrial case_step_trial(const Case& c, double voltage, double horizon, PullinC
     const auto limits = check_transient_run(k, false, memory_budget_bytes());
     if (!limits.empty()) throw InputError(limits.front().key + ": " + limits.front().message);
     const BuiltProblem built = build_transient_problem(k);
-    CvodeOptions co;
-    co.rtol = k.solver.rtol;
-    co.max_steps = k.solver.max_steps;
-    co.max_events = k.solver.max_events;
-    co.reduced_modes = k.solver.reduced_modes;
+    CvodeOptions co = cvode_options(k.solver);
     // The first contact answers the question; the bouncing after it (grazing contacts near the
     // threshold chatter for millions of steps) is not needed.
     co.stop_at_first_contact = true;
@@ -84,7 +81,7 @@ StepTrial case_step_trial(const Case& c, double voltage, double horizon, PullinC
     t.voltage = voltage;
     t.how = "open";
     try {
-        const TransientResult r = solve_cvode(built.problem, co);
+        const TransientResult r = solve_cvode(built.problem, transient_options(k.solver), co);
         if (!r.episodes.empty()) {
             t.closes = true;
             t.closing_time = r.episodes.front().t_on;

@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <string>
 
 #include "dynamics/cvode/cvode_solver.hpp"
 #include "dynamics/exact/exact_give_up.hpp"
+#include "dynamics/exact/exact_solver.hpp"
 #include "model/input_error.hpp"
 #include "model/run_estimate.hpp"
 
@@ -25,7 +27,105 @@ bool use_exact(const Case& c, const TransientProblem& p) {
     return true;
 }
 
+ExactOptions exact_options(const SolverSettings& s) {
+    ExactOptions x;
+    x.h_min_periods = s.min_search_step;
+    return x;
+}
+
+// The solver the case chooses, and CVODE's answer where the exact solver gives up on a run it
+// cannot finish (solver.fallback).
+TransientResult solve_transient(const Case& c, const TransientProblem& p, const TransientOptions& o) {
+    const CvodeSolver cvode(cvode_options(c.solver));
+    if (!use_exact(c, p)) return cvode.solve(p, o);
+    try {
+        return ExactSolver(exact_options(c.solver)).solve(p, o);
+    } catch (const ExactSolverGaveUp& e) {
+        // The same model by the other solver (they agree to about 1e-9 where both run,
+        // docs/model.md §13): an answer, with why it came from CVODE in the summary.
+        if (c.solver.fallback == SolverSettings::Fallback::none) {
+            throw std::runtime_error(std::string(e.what()) + "; solver.fallback = \"cvode\" computes the run with CVODE instead");
+        }
+        TransientResult r = cvode.solve(p, o);
+        r.stats.fallback_reason = e.what();
+        return r;
+    }
+}
+
+// Released at rest from its own static equilibrium with nothing acting after t = 0: nothing ever
+// moves, and that is the answer, not a horizon too short (tests/cases/rest_on_support.toml).
+bool released_at_rest(const BuiltProblem& b) {
+    const TransientProblem& p = b.problem;
+    const bool loaded = std::any_of(p.forces.begin(), p.forces.end(), [](const ForceElementPtr& e) { return !e->in_static_state(); });
+    const Eigen::VectorXd& q_eq = b.start.q_equilibrium;
+    const double q_scale = std::max(q_eq.lpNorm<Eigen::Infinity>(), p.q0.lpNorm<Eigen::Infinity>());
+    return !loaded && p.v0.isZero(0.0) &&
+           (p.q0 - q_eq).lpNorm<Eigen::Infinity>() <= 64.0 * std::numeric_limits<double>::epsilon() * q_scale;
+}
+
+// A free transient (no electrode) that never touches a contact it has: the horizon was too short.
+void require_first_impact(const Case& c, const SimulationRun& run, bool at_rest) {
+    const TransientProblem& p = run.built.problem;
+    bool touching_at_start = false;
+    for (std::size_t i = 0; i < p.forces.size(); ++i) {
+        const ForceElement& e = *p.forces[i];
+        if (e.is_contact() && i < p.modes0.size() && p.modes0[i] == e.contact_mode()) touching_at_start = true;
+    }
+    // Under voltage, a switch that never closes is an answer of its own (the switching ledger says so).
+    const bool actuated = !c.electrodes.empty();
+    if (run.result.episodes.empty() && !touching_at_start && !run.built.model.contacts.empty() && !at_rest && !actuated) {
+        throw InputError("solver.horizon: too short to see the first impact (no contact before " +
+                         std::to_string(p.t_end * 1e6) + " us)");
+    }
+}
+
+ImpactSettings impact_settings(const Case& c, const BuiltProblem& b) {
+    ImpactSettings s;
+    s.omega1 = b.model.omega1;
+    s.group_gap = c.solver.group_gap;
+    s.settle_tolerance = c.solver.settle_tolerance;
+    s.group = c.solver.grouping == SolverSettings::Grouping::flights;
+    s.settle_by_velocity = c.solver.settle_rule == SolverSettings::SettleRule::velocity;
+    s.settle_velocity = c.solver.settle_velocity;
+    s.length = c.beam.length;
+    const Eigen::VectorXd& q_eq = b.start.q_equilibrium;
+    if (b.problem.tip_dof >= 0) s.tip_equilibrium = q_eq[b.problem.tip_dof];
+    if (!b.model.contacts.empty()) s.contact_equilibrium = q_eq[b.model.forces[b.model.contacts.front().element]->dofs().front()];
+    return s;
+}
+
+// Every contact of the model with what holds it where it is adhesive, for the switching ledger.
+std::vector<LedgerContact> ledger_contacts(const Case& c, const BeamModel& m) {
+    std::vector<LedgerContact> out;
+    for (const NamedContact& k : m.contacts) {
+        LedgerContact& lc = out.emplace_back(LedgerContact{k.name, std::nullopt, std::nullopt});
+        const std::size_t i = k.entry.index;
+        if (k.entry.table == "supports" && c.supports[i].adhesion != Adhesion::none) {
+            lc.hold = contact_hold(m.system, c, i);
+        } else if (k.entry.table == "electrodes" && c.electrodes[i].work_of_adhesion) {
+            lc.layer = layer_hold(c, i);
+        }
+    }
+    return out;
+}
+
 }  // namespace
+
+TransientOptions transient_options(const SolverSettings& s, const SimulationOptions& o) {
+    TransientOptions t;
+    t.history = o.history;
+    t.energy = o.energy;
+    t.max_steps = s.max_steps;
+    t.max_events = s.max_events;
+    return t;
+}
+
+CvodeOptions cvode_options(const SolverSettings& s) {
+    CvodeOptions c;
+    c.rtol = s.rtol;
+    c.reduced_modes = s.reduced_modes;
+    return c;
+}
 
 SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
     if (!(c.solver.horizon > 0.0)) throw InputError("solver.horizon: required for a transient (e.g. \"200 us\")");
@@ -34,83 +134,16 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
     if (!limits.empty()) throw InputError(limits.front().key + ": " + limits.front().message);
     SimulationRun run;
     run.built = build_transient_problem(c);
-    const TransientProblem& p = run.built.problem;
-    CvodeOptions co;
-    co.rtol = c.solver.rtol;
-    co.max_steps = c.solver.max_steps;
-    co.max_events = c.solver.max_events;
-    co.reduced_modes = c.solver.reduced_modes;
-    co.energy_history = o.energy;
-    if (!use_exact(c, p)) {
-        run.result = solve_cvode(p, co);
-    } else {
-        ExactOptions eo;
-        eo.history = o.history;
-        eo.energy = o.energy;
-        eo.h_min_periods = c.solver.min_search_step;
-        eo.max_events = c.solver.max_events;
-        eo.max_steps = c.solver.max_steps;
-        try {
-            run.result = solve_exact(p, eo);
-        } catch (const ExactSolverGaveUp& e) {
-            // The same model by the other solver (they agree to about 1e-9 where both run,
-            // docs/model.md §13): an answer, with why it came from CVODE in the summary.
-            if (c.solver.fallback == SolverSettings::Fallback::none) {
-                throw std::runtime_error(std::string(e.what()) + "; solver.fallback = \"cvode\" computes the run with CVODE instead");
-            }
-            run.result = solve_cvode(p, co);
-            run.result.stats.fallback_reason = e.what();
-        }
-    }
-    const std::vector<int> contacts = contact_indices(p.forces);
-    bool touching_at_start = false;
-    bool loaded = false;
-    for (std::size_t i = 0; i < p.forces.size(); ++i) {
-        const ForceElement& e = *p.forces[i];
-        if (e.is_contact() && i < p.modes0.size() && p.modes0[i] == e.contact_mode()) touching_at_start = true;
-        if (!e.in_static_state()) loaded = true;
-    }
-    // Released at rest from its own static equilibrium with nothing acting after t = 0: nothing ever
-    // moves, and that is the answer, not a horizon too short (tests/cases/rest_on_support.toml).
-    const double q_scale = std::max(run.built.start.q_equilibrium.lpNorm<Eigen::Infinity>(), p.q0.lpNorm<Eigen::Infinity>());
-    const bool at_rest = !loaded && p.v0.isZero(0.0) &&
-                         (p.q0 - run.built.start.q_equilibrium).lpNorm<Eigen::Infinity>() <=
-                             64.0 * std::numeric_limits<double>::epsilon() * q_scale;
-    // Under voltage, a switch that never closes is an answer of its own (the switching ledger says so).
-    const bool actuated = !c.electrodes.empty();
-    if (run.result.episodes.empty() && !touching_at_start && !contacts.empty() && !at_rest && !actuated) {
-        throw InputError("solver.horizon: too short to see the first impact (no contact before " +
-                         std::to_string(p.t_end * 1e6) + " us)");
-    }
-    ImpactSettings s;
-    s.omega1 = run.built.model.omega1;
-    s.group_gap = c.solver.group_gap;
-    s.settle_tolerance = c.solver.settle_tolerance;
-    s.group = c.solver.grouping == SolverSettings::Grouping::flights;
-    s.settle_by_velocity = c.solver.settle_rule == SolverSettings::SettleRule::velocity;
-    s.settle_velocity = c.solver.settle_velocity;
-    s.length = c.beam.length;
-    if (p.tip_dof >= 0) s.tip_equilibrium = run.built.start.q_equilibrium[p.tip_dof];
-    if (!contacts.empty()) {
-        s.contact_equilibrium = run.built.start.q_equilibrium[p.forces[static_cast<std::size_t>(contacts.front())]->dofs().front()];
-    }
-    run.summary = summarize_impacts(run.result, s);
+    run.result = solve_transient(c, run.built.problem, transient_options(c.solver, o));
+    const bool at_rest = released_at_rest(run.built);
+    require_first_impact(c, run, at_rest);
+    run.summary = summarize_impacts(run.result, impact_settings(c, run.built));
     if (at_rest && run.summary.impacts.empty()) {
         run.summary.Tp = 0.0;
         run.summary.Tp_reason = "at_rest";
     }
-    if (actuated) {
-        std::vector<LedgerContact> contacts;
-        for (const NamedContact& k : run.built.model.contacts) {
-            LedgerContact& lc = contacts.emplace_back(LedgerContact{k.name, std::nullopt, std::nullopt});
-            const std::size_t i = k.entry.index;
-            if (k.entry.table == "supports" && c.supports[i].adhesion != Adhesion::none) {
-                lc.hold = contact_hold(run.built.model.system, c, i);
-            } else if (k.entry.table == "electrodes" && c.electrodes[i].work_of_adhesion) {
-                lc.layer = layer_hold(c, i);
-            }
-        }
-        run.switching = switching_ledger(run.result, c.electrodes, run.built.model.omega1, contacts);
+    if (!c.electrodes.empty()) {
+        run.switching = switching_ledger(run.result, c.electrodes, run.built.model.omega1, ledger_contacts(c, run.built.model));
     }
     return run;
 }

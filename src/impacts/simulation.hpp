@@ -1,12 +1,13 @@
 #pragma once
-// One transient run of a case from start to summary: build, solve (exact or CVODE), summarise (the
-// impact ledger, and the switching ledger under electrode voltage).
+// One transient run of a case from start to summary: build, solve (the exact solver or CVODE, behind
+// TransientSolver), summarise (the impact ledger, and the switching ledger under electrode voltage).
 
 #include <optional>
 
 #include "impacts/impact_summary.hpp"
 #include "impacts/switching_ledger.hpp"
-#include "dynamics/exact/exact_solver.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
+#include "dynamics/transient_solver.hpp"
 #include "dynamics/transient_start.hpp"
 #include "dynamics/transient_result.hpp"
 #include "model/case.hpp"
@@ -26,9 +27,14 @@ struct SimulationOptions {
     bool energy = true;   // energy ledger at every sample (exact solver: O(n^2) per sample and per piece)
 };
 
-// Runs the case's transient. Throws InputError when the case cannot run (no horizon, a horizon too
-// short to see the first impact, a limit of check_transient_run, checked before any work) and
-// std::runtime_error on numerical trouble.
+// The options of a transient run from the case's [solver] table: the common ones, and CVODE's.
+TransientOptions transient_options(const SolverSettings& s, const SimulationOptions& o = {});
+CvodeOptions cvode_options(const SolverSettings& s);
+
+// Runs the case's transient on the solver it chooses (solver.method), CVODE where the exact solver
+// gives up and solver.fallback allows. Throws InputError when the case cannot run (no horizon, a
+// horizon too short to see the first impact, a limit of check_transient_run, checked before any
+// work) and std::runtime_error on numerical trouble.
 SimulationRun run_simulation(const Case& c, const SimulationOptions& o = {});
 
 }  // namespace vi

@@ -119,7 +119,8 @@ int root_fn(realtype t, N_Vector y, realtype* g, void* ud) {
 
 class Driver {
 public:
-    Driver(const TransientProblem& p, const CvodeOptions& o) : p_(p), o_(o), sys_(p, make_basis(p, o)) {}
+    Driver(const TransientProblem& p, const TransientOptions& o, const CvodeOptions& c)
+        : p_(p), o_(o), c_(c), sys_(p, make_basis(p, c)) {}
     TransientResult run();
 
 private:
@@ -136,7 +137,8 @@ private:
     void add_counters();
 
     const TransientProblem& p_;
-    CvodeOptions o_;
+    TransientOptions o_;
+    CvodeOptions c_;
     ModalSystem sys_;
     Sundials s_;
     std::string cvode_message_;
@@ -187,9 +189,9 @@ void Driver::setup() {
     check(CVodeSetErrHandlerFn(s_.mem, error_fn, &cvode_message_), "CVodeSetErrHandlerFn");
 
     Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(s_.y), N) = sys_.initial_state();
-    Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(s_.atol), N) = sys_.absolute_tolerances(o_.rtol * o_.atol_ratio);
+    Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(s_.atol), N) = sys_.absolute_tolerances(c_.rtol * c_.atol_ratio);
     check(CVodeInit(s_.mem, rhs_fn, 0.0, s_.y), "CVodeInit");
-    check(CVodeSVtolerances(s_.mem, o_.rtol, s_.atol), "CVodeSVtolerances");
+    check(CVodeSVtolerances(s_.mem, c_.rtol, s_.atol), "CVodeSVtolerances");
     check(CVodeSetUserData(s_.mem, &sys_), "CVodeSetUserData");
     check(CVodeSetLinearSolver(s_.mem, s_.LS, s_.A), "CVodeSetLinearSolver");
     check(CVodeSetJacFn(s_.mem, jac_fn), "CVodeSetJacFn");
@@ -231,7 +233,7 @@ void Driver::record(double t, const double* y) {
         h.contact_velocity[j].push_back(c.point_velocity);
         h.contact_force[j].push_back(modes_[static_cast<std::size_t>(e)] == sys_.element(e).contact_mode() ? c.force : 0.0);
     }
-    if (o_.energy_history) h.energy.push_back(sys_.energy(t, y, jump_));
+    if (o_.energy) h.energy.push_back(sys_.energy(t, y, jump_));
 }
 
 double Driver::handle_roots(double tret) {
@@ -441,7 +443,7 @@ TransientResult Driver::run() {
             } else {
                 stalled_roots_ = 0;
             }
-            if (o_.stop_at_first_contact && contact_closed()) {
+            if (c_.stop_at_first_contact && contact_closed()) {
                 sample_until(t, false);
                 t_final_ = t;
                 break;
@@ -473,10 +475,10 @@ TransientResult Driver::run() {
 
 }  // namespace
 
-TransientResult solve_cvode(const TransientProblem& p, const CvodeOptions& o) {
+TransientResult solve_cvode(const TransientProblem& p, const TransientOptions& o, const CvodeOptions& c) {
     cvode_detail::validate(p);
     element_refusal.clear();
-    Driver driver(p, o);
+    Driver driver(p, o, c);
     return driver.run();
 }
 

@@ -6,11 +6,13 @@
 // elements (contacts) are handled by CVODE's root finding with a restart at every switch. Also the
 // independent cross-check of the exact event-driven solver.
 
-#include "dynamics/transient_problem.hpp"
-#include "dynamics/transient_result.hpp"
+#include <string_view>
+
+#include "dynamics/transient_solver.hpp"
 
 namespace vi {
 
+// CVODE's own settings (the common ones are TransientOptions).
 struct CvodeOptions {
     double rtol = 1e-10;        // relative tolerance of every state component
     // Absolute tolerance of each component = rtol x atol_ratio x a characteristic magnitude derived
@@ -19,28 +21,33 @@ struct CvodeOptions {
     // makes rtol the one knob (the paper's transient: rtol 1e-8 is within 1e-7 of the exact solver,
     // 1e-10 within 5e-9; docs/model.md §13).
     double atol_ratio = 1e-4;
-    long max_steps = 50000000;  // CVODE internal steps over the whole horizon (solver.max_steps)
-    long max_events = 1000000;  // contact switches over the horizon (solver.max_events)
     // 0: every bending mode (the full FE model, an exact change of coordinates); N > 0: a
     // reduced-order model on the N lowest modes plus static corrections (solver.reduced_modes).
     int reduced_modes = 0;
     // End the run at the first contact onset (the result's t_end is then that time, the episode
     // closed_at_end): a question that the first contact answers (dynamic pull-in) needs no more.
     bool stop_at_first_contact = false;
-    // The energy ledger at every output sample (history.energy); off, only the initial and final
-    // ledgers are kept, and each sample saves a pass over every element (6 % of the switch
-    // example's transient).
-    bool energy_history = true;
 };
 
-// Integrates p from 0 to p.t_end. Elements switch only at located events (their switching
-// functions crossing zero upward), each followed by a restart of CVODE; element breakpoints (load
-// steps, table knots) are integration stops with a restart too. The energy ledger's integrals and
-// each contact's impulse are extra CVODE states. Throws std::invalid_argument for an inconsistent
-// problem, std::runtime_error when CVODE fails, WorkLimitReached at solver.max_steps or
-// solver.max_events, std::domain_error when a force element refuses the state reached (the beam
-// reaches an electrode; the element's message included), and StopRequested / TimeLimitReached from
-// check_run() (never returns a partial result).
-TransientResult solve_cvode(const TransientProblem& p, const CvodeOptions& o = {});
+// Integrates p from 0 to p.t_end (TransientSolver's rules; max_steps counts CVODE's internal steps,
+// max_events the switches). Elements switch only at located events (their switching functions
+// crossing zero upward), each followed by a restart of CVODE; element breakpoints (load steps, table
+// knots) are integration stops with a restart too. The energy ledger's integrals and each contact's
+// impulse are extra CVODE states. Without o.energy only the initial and final ledgers are kept, and
+// each sample saves a pass over every element (6 % of the switch example's transient). Its own
+// failure: std::runtime_error when CVODE fails.
+TransientResult solve_cvode(const TransientProblem& p, const TransientOptions& o = {}, const CvodeOptions& c = {});
+
+class CvodeSolver final : public TransientSolver {
+public:
+    explicit CvodeSolver(const CvodeOptions& c = {}) : c_(c) {}
+    [[nodiscard]] std::string_view method() const override { return "cvode"; }
+    [[nodiscard]] TransientResult solve(const TransientProblem& p, const TransientOptions& o) const override {
+        return solve_cvode(p, o, c_);
+    }
+
+private:
+    CvodeOptions c_;
+};
 
 }  // namespace vi

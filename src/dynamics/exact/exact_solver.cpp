@@ -141,7 +141,7 @@ const PieceSolution& piece_at(ExactModel& model, const PiecewiseLinearProblem& p
 
 }  // namespace
 
-TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions& o) {
+TransientResult solve_exact(const PiecewiseLinearProblem& p, const TransientOptions& o, const ExactOptions& settings) {
     if (p.size() == 0) throw std::runtime_error("transient: the model has no free bending DOF");
     if (!(p.t_end > 0.0)) throw std::runtime_error("transient: the horizon must be positive");
     TransientResult res;
@@ -149,13 +149,13 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions&
     res.t_end = p.t_end;
     // Decomposition time: the base modes here, each contact state inside the model (on first use).
     const auto t_base = Clock::now();
-    ExactModel model(p, o.energy, o.state_cache_bytes);
+    ExactModel model(p, o.energy, settings.state_cache_bytes);
     const double base_s = seconds_since(t_base);
 
     const int nc = static_cast<int>(p.contacts.size());
     const double period1 = 2.0 * std::numbers::pi / model.base().omega[0];
     CrossingSearch cs;
-    cs.h_min = o.h_min_periods * period1;
+    cs.h_min = settings.h_min_periods * period1;
     long steps_left = o.max_steps;
     cs.budget = &steps_left;
 
@@ -378,8 +378,8 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions&
     return res;
 }
 
-TransientResult solve_exact(const TransientProblem& p, const ExactOptions& o) {
-    return solve_exact(piecewise_linear_form(p), o);
+TransientResult solve_exact(const TransientProblem& p, const TransientOptions& o, const ExactOptions& settings) {
+    return solve_exact(piecewise_linear_form(p), o, settings);
 }
 
 }  // namespace vi

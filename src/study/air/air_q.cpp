@@ -104,7 +104,7 @@ AirQPoint air_q_point(const Case& base, double pressure, const AirQOptions& o) {
     // base case, measured), a stability limit, not accuracy. The uniform film's damping matrix is
     // (c / rho A) M, so the modes do not couple except through the film's nonlinearity.
     co.reduced_modes = kAirQModes;
-    const TransientResult r = solve_cvode(p, co);
+    const TransientResult r = solve_cvode(p, {}, co);
     const std::vector<Maximum> m = tip_maxima(r.history);
     out.maxima = static_cast<int>(m.size());
     if (m.size() >= 3) {

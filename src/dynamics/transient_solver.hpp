@@ -1,0 +1,47 @@
+#pragma once
+// TransientSolver: the contract both transient solvers keep (as MFEM's ODESolver), the exact
+// event-driven one (dynamics/exact/) and CVODE (dynamics/cvode/): one problem in, one result out,
+// the options common to both in one struct, each solver's own settings given to its constructor.
+//
+// The rules:
+//  - solve(p, o) integrates p (dynamics/transient_problem.hpp) from t = 0 to p.t_end and returns the
+//    whole result (dynamics/transient_result.hpp): the time history at p.output_step, every contact
+//    episode in onset order, the initial and final energy ledgers, the extremes, the statistics.
+//  - The stop flag: every loop of a solver calls check_run() (model/run_control.hpp), so SIGINT,
+//    SIGTERM or the thread's time limit end it with StopRequested or TimeLimitReached; it never
+//    returns a partial result.
+//  - Work bounds: more than o.max_steps steps or o.max_events events throws WorkLimitReached naming
+//    solver.max_steps or solver.max_events.
+//  - Failures: std::invalid_argument for an inconsistent problem, InputError for a problem the solver
+//    cannot take (naming the element and solver.method), ExactSolverGaveUp where the exact solver
+//    cannot finish a well-posed run (another solver can), std::domain_error where an element refuses
+//    the state reached (the beam reaches an electrode), std::runtime_error for other numerical
+//    trouble.
+
+#include <string_view>
+
+#include "dynamics/transient_problem.hpp"
+#include "dynamics/transient_result.hpp"
+
+namespace vi {
+
+struct TransientOptions {
+    // The time history at the output step. The exact solver skips sampling without it; CVODE samples
+    // anyway (at no cost to its steps).
+    bool history = true;
+    // The energy ledger at every sample (history.energy): O(n^2) per sample and per piece for the
+    // exact solver, a pass over every element per sample for CVODE.
+    bool energy = true;
+    long max_steps = 50000000;  // solver.max_steps: steps (CVODE) or search evaluations (exact)
+    long max_events = 1000000;  // solver.max_events: contact switches and load breakpoints
+};
+
+class TransientSolver {
+public:
+    virtual ~TransientSolver() = default;
+    // "exact" or "cvode" (TransientResult::stats.method).
+    [[nodiscard]] virtual std::string_view method() const = 0;
+    [[nodiscard]] virtual TransientResult solve(const TransientProblem& p, const TransientOptions& o) const = 0;
+};
+
+}  // namespace vi
