@@ -348,14 +348,12 @@ void add_entry(const SectionSpec& s, Case& c) {
     s.add(c);
     const std::size_t i = s.count(c) - 1;
     for (const KeySpec& k : s.keys) {
-        if (!k.in_params) continue;
         for (std::size_t e = 0; e < k.default_numbers.size(); ++e) k.set_number(c, i, e, k.default_numbers[e]);
-        if (!k.default_choice.empty()) {
-            if (k.kind == KeyKind::flag) {
-                k.set_number(c, i, 0, k.default_choice == "true" ? 1.0 : 0.0);
-            } else {
-                k.set_text(c, i, k.default_choice);
-            }
+        if (k.default_choice.empty()) continue;
+        if (k.kind == KeyKind::flag) {
+            k.set_number(c, i, 0, k.default_choice == "true" ? 1.0 : 0.0);
+        } else {
+            k.set_text(c, i, k.default_choice);
         }
     }
 }

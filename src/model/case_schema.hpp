@@ -210,7 +210,8 @@ private:
 // A condition for a registered key: the entry's choice (or text) key `selector` is one of `values`.
 KeyCondition when_chosen(std::string section, std::string selector, std::vector<std::string> values);
 
-// Appends an entry to the section's entries in c, with every default of its registered keys set.
+// Appends an entry to the section's entries in c with every key's default set (the schema's, which
+// is what a case file leaving the key out gets; the structs' own defaults serve cases built in code).
 void add_entry(const SectionSpec& s, Case& c);
 
 // Whether key k of entry i carries a value that means something: it applies and is set.
