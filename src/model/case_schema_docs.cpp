@@ -11,8 +11,9 @@ const std::string kBegin = "<!-- case-keys:";
 const std::string kEnd = "<!-- /case-keys:";
 const std::string kTopLevel = "top-level";
 
-// A default or bound as the docs write it: 1e-10, 1e9, 0.01, 200.
+// A default as the docs write it: 1e-10, 0.01, 200, and whole numbers in full (50000000).
 std::string doc_number(double v) {
+    if (v == std::floor(v) && std::abs(v) < 1e15) return std::to_string(static_cast<long long>(v));
     if (v != 0.0 && std::isfinite(v)) {
         const double e = std::round(std::log10(std::abs(v)));
         if ((e >= 6.0 || e <= -3.0) && std::abs(v) == std::pow(10.0, e)) {
