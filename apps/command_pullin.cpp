@@ -7,7 +7,7 @@
 #include <string>
 
 #include "commands.hpp"
-#include "dynamics/pullin.hpp"
+#include "statics/pullin.hpp"
 #include "impacts/dynamic_pullin.hpp"
 #include "io/case_reader.hpp"
 #include "io/output_files.hpp"
