@@ -137,5 +137,29 @@ TEST(ResolvedCase, HoldsEverySectionWithTheValuesTheRunUsed) {
     fs::remove_all(dir);
 }
 
+// A table file is written by its absolute path, so the written case reads the same rows from any
+// folder (and from summary.json, wherever the run's output went).
+TEST(ResolvedCase, TableFilesAreNamedSoThatTheyReadFromAnywhere) {
+    const std::string dir = test::make_temp_dir();
+    fs::create_directories(dir + "/case/tables");
+    fs::create_directories(dir + "/elsewhere");
+    test::write_text(dir + "/case/tables/pulse.csv", "t_s,g\n0,0\n1e-6,1\n2e-6,0\n");
+    test::write_text(dir + "/case/tables/drive.csv", "t_s,V_V\n0,0\n1e-6,3\n");
+    const std::string text = test::read_text(test::source_path("examples/paper/free_impact_tip.toml")) +
+                             "\n[[loads]]\nposition = 0.5\namplitude = \"1 uN\"\nkind = \"table\"\ntable = \"tables/pulse.csv\"\n"
+                             "[[electrodes]]\nfrom = 0.2\nto = 0.6\ngap = \"3 um\"\nwaveform = \"table\"\ntable = \"tables/drive.csv\"\n";
+    test::write_text(dir + "/case/case.toml", text);
+    const Case c = read_case_file(dir + "/case/case.toml");
+    test::write_text(dir + "/elsewhere/written.toml", case_to_toml(c));
+    const Case back = read_case_file(dir + "/elsewhere/written.toml");
+    EXPECT_EQ(back.loads[0].time.times, c.loads[0].time.times);
+    EXPECT_EQ(back.loads[0].time.values, c.loads[0].time.values);
+    EXPECT_EQ(back.electrodes[0].time.values, (std::vector<double>{0.0, 3.0}));
+    EXPECT_TRUE(fs::path(back.loads[0].table_file).is_absolute()) << back.loads[0].table_file;
+    EXPECT_EQ(case_to_json(back)["electrodes"][0]["table"], fs::weakly_canonical(dir + "/case/tables/drive.csv").string());
+    EXPECT_FALSE(case_to_json(back)["electrodes"][0].contains("voltage"));
+    fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace vi
