@@ -163,7 +163,9 @@ protected:
         law.otherwise(std::string("linear")).means("its force law");
         KeySpec cubic = number_key("cubic_coefficient", Dimension::dimensionless);
         cubic.require().in(non_negative()).only(when_chosen("springs", "law", {"cubic"})).means("k3 / k");
-        springs.keys = {position, stiffness, law, cubic};
+        KeySpec damped = flag_key("damped");
+        damped.otherwise(std::string("true")).means("whether it dissipates");
+        springs.keys = {position, stiffness, law, cubic, damped};
         springs.check = [](std::vector<CaseProblem>& out, const Case& c) {
             const auto it = c.sections.find("springs");
             if (it == c.sections.end()) return;
@@ -196,7 +198,14 @@ TEST_F(ToyRegistration, RegisteredKeysAreReadAndChecked) {
     EXPECT_EQ(c.sections.at("springs")[0].number("stiffness"), 2000.0);
     EXPECT_EQ(c.sections.at("springs")[0].text("law"), "linear");
     EXPECT_EQ(c.sections.at("springs")[1].number("cubic_coefficient"), 0.1);
+    EXPECT_EQ(c.sections.at("springs")[0].number("damped"), 1.0);
     EXPECT_EQ(c.supports[0].params.text("law"), "toy");
+    // An entry built in code, without the schema's defaults set, reads them through the keys.
+    Case code;
+    code.sections["springs"].emplace_back();
+    const SectionSpec& springs = *case_schema().section("springs");
+    EXPECT_EQ(springs.key("damped")->get_number(code, 0, 0), 1.0);
+    EXPECT_EQ(springs.key("law")->get_text(code, 0), "linear");
     EXPECT_EQ(c.supports[0].params.number("toy_exponent"), 2.5);
 
     const std::string base = test::kBaseCase + kToySupport;  // springs start at line 16

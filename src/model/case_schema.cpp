@@ -61,7 +61,9 @@ void bind_to_params(KeySpec& k, const std::string& section) {
     k.in_params = true;
     const std::string name = k.name;
     if (is_numeric(k.kind) || k.kind == KeyKind::flag) {
-        const std::vector<double> defaults = k.default_numbers;
+        // A flag's default is its default_choice ("true"/"false"), a number's default_numbers.
+        const std::vector<double> defaults =
+            k.kind == KeyKind::flag ? std::vector<double>{k.default_choice == "true" ? 1.0 : 0.0} : k.default_numbers;
         k.get_number = [section, name, defaults](const Case& c, std::size_t i, std::size_t e) {
             const std::string key = e == 0 ? name : name + "[" + std::to_string(e) + "]";
             const double fallback = e < defaults.size() ? defaults[e] : 0.0;
