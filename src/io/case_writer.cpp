@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <variant>
 
 #include "model/case_schema.hpp"
@@ -28,15 +29,23 @@ std::string table_path(const Case& c, const std::string& name) {
     return ec ? (folder / name).string() : p.lexically_normal().string();
 }
 
+// A whole number held as a double, as an integer (a registered key's value may lie beyond int64's
+// range, where the plain cast is undefined).
+std::int64_t whole(double v) {
+    if (!(v == v)) return 0;
+    if (v >= 9.2233720368547758e18) return std::numeric_limits<std::int64_t>::max();
+    if (v <= -9.2233720368547758e18) return std::numeric_limits<std::int64_t>::min();
+    return static_cast<std::int64_t>(v);
+}
+
 KeyValue key_value(const Case& c, const KeySpec& k, std::size_t i) {
     switch (k.kind) {
         case KeyKind::number: return k.get_number(c, i, 0);
-        case KeyKind::integer: return static_cast<std::int64_t>(k.get_number(c, i, 0));
+        case KeyKind::integer: return whole(k.get_number(c, i, 0));
         case KeyKind::flag: return k.get_number(c, i, 0) != 0.0;
         case KeyKind::number_pair: return std::array<double, 2>{k.get_number(c, i, 0), k.get_number(c, i, 1)};
         case KeyKind::integer_pair:
-            return std::array<std::int64_t, 2>{static_cast<std::int64_t>(k.get_number(c, i, 0)),
-                                               static_cast<std::int64_t>(k.get_number(c, i, 1))};
+            return std::array<std::int64_t, 2>{whole(k.get_number(c, i, 0)), whole(k.get_number(c, i, 1))};
         case KeyKind::table_file: return table_path(c, k.get_text(c, i));
         case KeyKind::choice:
         case KeyKind::text: return k.get_text(c, i);
