@@ -32,7 +32,7 @@ void BM_FitThreeParameters(benchmark::State& state) {
     data.t = run.result.history.t;
     std::mt19937 gen(1);
     std::normal_distribution<double> noise(0.0, 2e-9);
-    for (double v : run.result.history.tip_v) data.value.push_back(v + noise(gen));
+    for (double v : run.result.history.watched_v) data.value.push_back(v + noise(gen));
     vi::Case start = truth;
     start.supports[0].stiffness = 1300.0;
     start.supports[0].damping_ratio = 0.3;

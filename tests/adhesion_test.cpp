@@ -62,7 +62,7 @@ TransientProblem sdof_pull(const Sdof& s, double load, double ramp, double horiz
     p.forces.push_back(std::make_shared<PointLoadElement>("loads[0]", std::vector<int>{0}, std::vector<double>{1.0}, load, g, 0.0));
     p.q0 = Eigen::VectorXd::Zero(1);
     p.v0 = Eigen::VectorXd::Zero(1);
-    p.tip_dof = 0;
+    p.watched_dof = 0;
     p.t_end = horizon;
     p.output_step = horizon / 200.0;
     return p;
@@ -123,7 +123,7 @@ TEST(Adhesion, SdofTransientSticksBelowAndReleasesAbove) {
 
     const TransientResult free = solve_cvode(sdof_pull(s, 1.02 * s.threshold(), ramp, horizon));
     ASSERT_TRUE(released(free));
-    EXPECT_GT(free.history.tip_v.back(), s.fpo / s.kc + s.range);  // beyond d_end: no more attraction
+    EXPECT_GT(free.history.watched_v.back(), s.fpo / s.kc + s.range);  // beyond d_end: no more attraction
 }
 
 // Bisection on the transient's verdict (ramp, hold to 200 periods: the tension's approach to its
@@ -152,7 +152,7 @@ TEST(Adhesion, EnergyLedgerClosesThroughAdhesiveImpacts) {
     p.forces.push_back(std::make_shared<AdhesiveContact>("supports[0]", 0, 1.0, -gap, s.kc, 0.0, 0.0, s.fpo, s.range, "DMT"));
     p.q0 = Eigen::VectorXd::Zero(1);
     p.v0 = Eigen::VectorXd::Constant(1, -0.05);
-    p.tip_dof = 0;
+    p.watched_dof = 0;
     const double period = 2.0 * std::numbers::pi * std::sqrt(s.m / s.k);
     p.t_end = 5.0 * period;
     p.output_step = p.t_end / 2000.0;

@@ -108,11 +108,11 @@ TEST(CvodeSolver, StepLoadBreakpointIsExact) {
     for (std::size_t i = 0; i < r.history.t.size(); ++i) {
         const double t = r.history.t[i];
         const double exact = t < step.t_on ? 0.0 : F / k * (1.0 - std::cos(w * (t - step.t_on)));
-        worst = std::max(worst, std::abs(r.history.tip_v[i] - exact) / (2.0 * F / k));
+        worst = std::max(worst, std::abs(r.history.watched_v[i] - exact) / (2.0 * F / k));
         const EnergyLedger& e = r.history.energy[i];
         ledger = std::max(ledger, std::abs(e.kinetic + e.strain - e.external_work) / (2.0 * F * F / k));
         if (t < step.t_on) {
-            EXPECT_EQ(r.history.tip_v[i], 0.0);
+            EXPECT_EQ(r.history.watched_v[i], 0.0);
         }
     }
     EXPECT_LT(worst, 3e-8);  // measured 1e-8: BDF's phase error grows about 3e-9 per period
@@ -155,13 +155,13 @@ TransientProblem bouncing_cantilever(int elements, double alpha, double beta, do
     p.M = submatrix(s.M, s.bending);
     p.K = submatrix(s.K, s.bending);
     const int tip_reduced = s.reduced_of[global_dof(s.mesh.node_count() - 1, 1)];
-    p.tip_dof = static_cast<int>(std::find(s.bending.begin(), s.bending.end(), tip_reduced) - s.bending.begin());
+    p.watched_dof = static_cast<int>(std::find(s.bending.begin(), s.bending.end(), tip_reduced) - s.bending.begin());
     Eigen::VectorXd f = Eigen::VectorXd::Zero(p.size());
-    f[p.tip_dof] = 1.0;
+    f[p.watched_dof] = 1.0;
     p.q0 = Eigen::MatrixXd(p.K).ldlt().solve(f);
-    p.q0 *= 1e-6 / p.q0[p.tip_dof];
+    p.q0 *= 1e-6 / p.q0[p.watched_dof];
     p.v0 = Eigen::VectorXd::Zero(p.size());
-    p.forces.push_back(test::support(0, p.tip_dof, 1.0, 0.0, 50.0, Cc, c.beam.length));
+    p.forces.push_back(test::support(0, p.watched_dof, 1.0, 0.0, 50.0, Cc, c.beam.length));
     p.modes0 = {0};
     p.alpha = alpha;
     p.beta = beta;
@@ -230,7 +230,7 @@ TEST(CvodeSolver, DampedBeamLedgerBalancesAndEpisodesAreSane) {
 
 TEST(CvodeSolver, RejectsInconsistentProblems) {
     TransientProblem p = falling_mass(0.0);
-    p.tip_dof = 3;
+    p.watched_dof = 3;
     EXPECT_THROW((void)solve_cvode(p), std::invalid_argument);
     p = falling_mass(0.0);
     p.t_end = 0.0;

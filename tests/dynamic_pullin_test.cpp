@@ -53,7 +53,7 @@ TransientProblem plate_problem(const Plate& p, double volts, double periods) {
     tp.forces.push_back(std::make_shared<const KelvinVoigtContact>("supports[0]", 0, 1.0, -p.gc, kc, std::sqrt(kc * p.m), 0.0));
     tp.q0 = Eigen::VectorXd::Zero(1);
     tp.v0 = Eigen::VectorXd::Zero(1);
-    tp.tip_dof = 0;
+    tp.watched_dof = 0;
     tp.t_end = periods * 2 * std::numbers::pi / p.omega0();
     return tp;
 }

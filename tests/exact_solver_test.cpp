@@ -188,7 +188,7 @@ TEST(ExactSolver, StateCacheBoundEvictsWithoutChangingTheResult) {
         EXPECT_EQ(evicted.episodes[e].t_on, kept.episodes[e].t_on);
         EXPECT_EQ(evicted.episodes[e].t_off, kept.episodes[e].t_off);
     }
-    EXPECT_EQ(evicted.history.tip_v, kept.history.tip_v);
+    EXPECT_EQ(evicted.history.watched_v, kept.history.watched_v);
     std::printf("states decomposed: %d kept, %d with no room\n", kept.stats.decompositions, evicted.stats.decompositions);
 }
 

@@ -34,7 +34,7 @@ MeasuredTrajectory shifted(const Case& truth, int shift_samples, double g, doubl
     SimulationOptions o;
     o.energy = false;
     const SimulationRun run = run_simulation(truth, o);
-    const std::vector<double>& y = run.result.history.tip_v;
+    const std::vector<double>& y = run.result.history.watched_v;
     MeasuredTrajectory m;
     m.file = "synthetic";
     m.column = "tip_m";

@@ -44,7 +44,7 @@ MeasuredTrajectory synthetic(const Case& truth, double sigma, unsigned seed) {
     m.t = run.result.history.t;
     std::mt19937 gen(seed);
     std::normal_distribution<double> noise(0.0, 1.0);
-    for (double v : run.result.history.tip_v) m.value.push_back(v + sigma * noise(gen));
+    for (double v : run.result.history.watched_v) m.value.push_back(v + sigma * noise(gen));
     return m;
 }
 

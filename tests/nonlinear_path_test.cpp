@@ -32,7 +32,7 @@ TransientProblem duffing(double t_end, double output_step) {
     p.forces.push_back(std::make_shared<test::CubicSpring>(0, kCubic));
     p.q0 = Eigen::VectorXd::Constant(1, kAmplitude);
     p.v0 = Eigen::VectorXd::Zero(1);
-    p.tip_dof = 0;
+    p.watched_dof = 0;
     p.t_end = t_end;
     p.output_step = output_step;
     return p;
@@ -62,7 +62,7 @@ TEST(NonlinearPath, CubicSpringPeriodAndEnergy) {
     // so the interpolation error is third order in the sample step).
     std::vector<double> crossings;
     const auto& t = r.history.t;
-    const auto& q = r.history.tip_v;
+    const auto& q = r.history.watched_v;
     for (std::size_t i = 1; i < q.size(); ++i) {
         if (q[i - 1] > 0.0 && q[i] <= 0.0) crossings.push_back(t[i - 1] + q[i - 1] / (q[i - 1] - q[i]) * (t[i] - t[i - 1]));
     }

@@ -63,13 +63,13 @@ TEST(ProblemBuilder, TipLiftedAboveAZeroGapSupport) {
     ASSERT_EQ(p.size(), 100);  // 51 nodes x (v, theta), the clamp's two removed
     EXPECT_EQ(p.K.rows(), 100);
     EXPECT_EQ(p.q0.size(), 100);
-    ASSERT_EQ(p.tip_dof, 98);  // v of the last node
-    EXPECT_NEAR(p.q0[p.tip_dof], 1e-6, 1e-18);
+    ASSERT_EQ(p.watched_dof, 98);  // v of the last node
+    EXPECT_NEAR(p.q0[p.watched_dof], 1e-6, 1e-18);
     EXPECT_NEAR(b.start.static_force_n, tip_stiffness(c) * 1e-6, 1e-9 * tip_stiffness(c) * 1e-6);
     EXPECT_NEAR(b.start.y0_m, 1e-6, 1e-18);
     EXPECT_EQ(b.start.q_equilibrium.norm(), 0.0);
     ASSERT_EQ(p.contacts.size(), 1u);
-    EXPECT_EQ(p.contacts[0].dof, p.tip_dof);
+    EXPECT_EQ(p.contacts[0].dof, p.watched_dof);
     EXPECT_EQ(p.contacts[0].sign, 1.0);
     EXPECT_EQ(p.contacts[0].surface, 0.0);
     EXPECT_DOUBLE_EQ(p.contacts[0].x, 117e-6);
@@ -88,15 +88,15 @@ TEST(ProblemBuilder, PrestressedTipRestsOnItsSupport) {
     Case c = lifted_cantilever(0.0, s);
     c.initial.kind = vi::InitialState::Kind::rest;
     BuiltProblem b = vi::build_transient_problem(c);
-    EXPECT_NEAR(b.start.q_equilibrium[b.problem.tip_dof], v_eq, 1e-9 * v_eq);
+    EXPECT_NEAR(b.start.q_equilibrium[b.problem.watched_dof], v_eq, 1e-9 * v_eq);
     EXPECT_EQ(pl(b).active0, std::vector<bool>{true});
     EXPECT_EQ(b.problem.q0, b.start.q_equilibrium);
     EXPECT_EQ(b.start.static_force_n, 0.0);
 
     // A lift past the surface opens the contact: only the beam resists the force.
     b = vi::build_transient_problem(lifted_cantilever(1e-6, s));
-    const double v_eq_fe = b.start.q_equilibrium[b.problem.tip_dof];
-    EXPECT_NEAR(b.problem.q0[b.problem.tip_dof], v_eq_fe + 1e-6, 1e-12 * (v_eq_fe + 1e-6));
+    const double v_eq_fe = b.start.q_equilibrium[b.problem.watched_dof];
+    EXPECT_NEAR(b.problem.q0[b.problem.watched_dof], v_eq_fe + 1e-6, 1e-12 * (v_eq_fe + 1e-6));
     EXPECT_NEAR(b.start.static_force_n, kb * (v_eq + 1e-6), 1e-9 * kb * (v_eq + 1e-6));
     EXPECT_EQ(pl(b).active0, std::vector<bool>{false});
     EXPECT_NEAR(b.start.y0_m, 1e-6, 1e-15);
@@ -115,15 +115,15 @@ TEST(ProblemBuilder, PrestressedSupportAboveAndClampedClampedBeam) {
     BuiltProblem b = vi::build_transient_problem(c);
     EXPECT_EQ(pl(b).contacts[0].sign, -1.0);
     EXPECT_EQ(pl(b).contacts[0].surface, -0.5e-6);
-    EXPECT_NEAR(b.start.q_equilibrium[b.problem.tip_dof], -50.0 * 0.5e-6 / (50.0 + kb), 1e-15);
+    EXPECT_NEAR(b.start.q_equilibrium[b.problem.watched_dof], -50.0 * 0.5e-6 / (50.0 + kb), 1e-15);
 
     Case cc = vi::test::clamped_clamped(50);
     cc.initial.kind = vi::InitialState::Kind::rest;
     cc.supports.push_back(support_at(0.5, vi::Side::below, 0.5e-6));
     const double k_mid = 192.0 * cc.material.youngs_modulus * cc.beam.second_moment() / std::pow(cc.beam.length, 3);
     b = vi::build_transient_problem(cc);
-    ASSERT_EQ(b.problem.tip_dof, pl(b).contacts[0].dof);  // no free end: watch mid-span
-    EXPECT_NEAR(b.start.q_equilibrium[b.problem.tip_dof], 50.0 * 0.5e-6 / (50.0 + k_mid), 1e-9 * 0.5e-6);
+    ASSERT_EQ(b.problem.watched_dof, pl(b).contacts[0].dof);  // no free end: watch mid-span
+    EXPECT_NEAR(b.start.q_equilibrium[b.problem.watched_dof], 50.0 * 0.5e-6 / (50.0 + k_mid), 1e-9 * 0.5e-6);
 }
 
 TEST(ProblemBuilder, LiftIntoASupportAboveIsAnInputError) {
@@ -149,7 +149,7 @@ TEST(ProblemBuilder, ForceStep) {
     c.initial.force = 2e-6;
     const BuiltProblem b = vi::build_transient_problem(c);
     const double y = 2e-6 / tip_stiffness(c);
-    EXPECT_NEAR(b.problem.q0[b.problem.tip_dof], y, 1e-9 * y);
+    EXPECT_NEAR(b.problem.q0[b.problem.watched_dof], y, 1e-9 * y);
     EXPECT_NEAR(b.start.y0_m, y, 1e-9 * y);
     EXPECT_EQ(b.start.static_force_n, 2e-6);
 }
@@ -198,7 +198,7 @@ TEST(ProblemBuilder, InitialVelocities) {
     c.initial.velocity_kind = vi::InitialState::Velocity::mode;
     c.initial.velocity_mode = 2;
     b = vi::build_transient_problem(c);
-    EXPECT_NEAR(b.problem.v0[b.problem.tip_dof], -0.2, 1e-12);
+    EXPECT_NEAR(b.problem.v0[b.problem.watched_dof], -0.2, 1e-12);
     // Along mode 2: K v0 = omega2^2 M v0.
     const Eigen::VectorXd kv = b.problem.K * b.problem.v0;
     const Eigen::VectorXd mv = b.problem.M * b.problem.v0;
@@ -237,7 +237,7 @@ TEST(ProblemBuilder, LoadsAndSampling) {
 TEST(ProblemBuilder, ThePaperExampleFile) {
     const Case c = vi::read_case_file(std::string(VI_SOURCE_DIR) + "/examples/paper/free_impact_tip.toml");
     const BuiltProblem b = vi::build_transient_problem(c);
-    EXPECT_NEAR(b.problem.q0[b.problem.tip_dof], 1e-6, 1e-18);
+    EXPECT_NEAR(b.problem.q0[b.problem.watched_dof], 1e-6, 1e-18);
     EXPECT_EQ(pl(b).active0, std::vector<bool>{false});
     EXPECT_DOUBLE_EQ(b.problem.t_end, 150e-6);
     EXPECT_DOUBLE_EQ(b.problem.output_step, 10e-9);

@@ -24,7 +24,7 @@ inline TransientProblem one_dof(double m, double k) {
     p.M = Eigen::MatrixXd::Constant(1, 1, m).sparseView();
     p.K = Eigen::MatrixXd::Constant(1, 1, k).sparseView();
     p.q0 = p.v0 = Eigen::VectorXd::Zero(1);
-    p.tip_dof = 0;
+    p.watched_dof = 0;
     return p;
 }
 

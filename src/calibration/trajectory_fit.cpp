@@ -103,10 +103,10 @@ std::vector<double> model_trajectory(const Case& base, const std::vector<FitPara
     const TimeHistory& h = run.result.history;
     if (h.t.empty()) throw std::runtime_error("the model wrote no time history");
     const bool velocity = is_velocity(column);
-    const std::vector<double>& v = velocity ? h.tip_velocity : h.tip_v;
+    const std::vector<double>& v = velocity ? h.watched_velocity : h.watched_v;
     std::vector<double> out(times.size());
     for (std::size_t k = 0; k < times.size(); ++k) {
-        out[k] = n.scale * hermite(h.t, v, velocity ? nullptr : &h.tip_velocity, times[k] - n.time_shift);
+        out[k] = n.scale * hermite(h.t, v, velocity ? nullptr : &h.watched_velocity, times[k] - n.time_shift);
     }
     return out;
 }

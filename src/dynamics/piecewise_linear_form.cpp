@@ -43,7 +43,7 @@ PiecewiseLinearProblem piecewise_linear_form(const TransientProblem& p) {
     if (p.modes0.empty()) out.active0.clear();
     out.q0 = p.q0;
     out.v0 = p.v0;
-    out.tip_dof = p.tip_dof;
+    out.watched_dof = p.watched_dof;
     out.t_end = p.t_end;
     out.output_step = p.output_step;
     return out;

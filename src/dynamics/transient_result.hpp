@@ -34,7 +34,7 @@ struct EnergyLedger {
 // Samples at the output step: the time history the CSV holds.
 struct TimeHistory {
     std::vector<double> t;                          // [s]
-    std::vector<double> tip_v, tip_velocity;        // watched point (free end) [m], [m/s]
+    std::vector<double> watched_v, watched_velocity;        // watched point (free end) [m], [m/s]
     std::vector<std::vector<double>> contact_v;     // per contact: v at the contact point [m]
     std::vector<std::vector<double>> contact_velocity;  // [m/s]
     std::vector<std::vector<double>> contact_force; // F (0 when open) [N]
@@ -75,10 +75,10 @@ struct SolverStats {
 // begins (DESIGN.md section 3: y_max and the deepest deflection), located by root finding.
 struct Extremes {
     bool valid = false;           // false when no contact ever began
-    double tip_max = 0.0;         // largest tip v [m]
-    double tip_max_t = 0.0;       // when [s]
-    double tip_min = 0.0;         // smallest tip v [m]
-    double tip_min_t = 0.0;
+    double watched_max = 0.0;         // largest tip v [m]
+    double watched_max_t = 0.0;       // when [s]
+    double watched_min = 0.0;         // smallest tip v [m]
+    double watched_min_t = 0.0;
     double contact_max = 0.0;     // largest v at contact 0 [m]
 };
 

@@ -33,7 +33,7 @@ TransientProblem transient_problem(const BeamModel& m, const TransientStart& s) 
     p.q0 = s.q0;
     p.v0 = s.v0;
     p.modes0 = s.modes0;
-    p.tip_dof = m.watched.dof;
+    p.watched_dof = m.watched.dof;
     p.t_end = s.t_end;
     p.output_step = s.output_step;
     return p;

@@ -100,10 +100,10 @@ ImpactSummary summarize_impacts(const TransientResult& r, const ImpactSettings& 
         out.Tp_reason = "horizon";
     }
     if (r.extremes.valid) {
-        out.y_max = r.extremes.tip_max - s.tip_equilibrium;
+        out.y_max = r.extremes.watched_max - s.tip_equilibrium;
         out.z_max = *out.y_max / s.length;
         out.y_max_contact = r.extremes.contact_max - s.contact_equilibrium;
-        out.tip_min = r.extremes.tip_min;
+        out.watched_min = r.extremes.watched_min;
     }
     return out;
 }

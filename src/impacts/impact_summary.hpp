@@ -46,7 +46,7 @@ struct ImpactSummary {
     std::optional<double> Tp;           // [s]; empty when the horizon ended first or nothing hit
     std::string Tp_reason;              // "settled", "persistent_contact", "horizon", "no_impact", "at_rest",
                                         // "below_threshold" (velocity rule: no impact as fast as settle_velocity)
-    std::optional<double> y_max, z_max, y_max_contact, tip_min;  // [m], [-], [m], [m]
+    std::optional<double> y_max, z_max, y_max_contact, watched_min;  // [m], [-], [m], [m]
 };
 
 ImpactSummary summarize_impacts(const TransientResult& r, const ImpactSettings& s);

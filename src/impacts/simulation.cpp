@@ -89,7 +89,7 @@ ImpactSettings impact_settings(const Case& c, const BuiltProblem& b) {
     s.settle_velocity = c.solver.settle_velocity;
     s.length = c.beam.length;
     const Eigen::VectorXd& q_eq = b.start.q_equilibrium;
-    if (b.problem.tip_dof >= 0) s.tip_equilibrium = q_eq[b.problem.tip_dof];
+    if (b.problem.watched_dof >= 0) s.tip_equilibrium = q_eq[b.problem.watched_dof];
     if (!b.model.contacts.empty()) s.contact_equilibrium = q_eq[b.model.forces[b.model.contacts.front().element]->dofs().front()];
     return s;
 }

@@ -193,12 +193,12 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
     j["tau2"] = scaled(s.T2_first, w1);
     j["tau_p"] = scaled(s.Tp, w1);
     j["cycles"] = {{"support", s.cycle_support}, {"T_s", s.T}, {"T1_s", s.T1}, {"T2_s", s.T2}};
-    // y_max, z_max and tip_min are of this point (the free end, or mid-span of a bridge).
+    // y_max, z_max and watched_min are of this point (the free end, or mid-span of a bridge).
     j["watched_point"] = {{"name", b.model.watched.name}, {"x_over_l", b.model.watched.x_over_l}};
     j["y_max_m"] = opt(s.y_max);
     j["z_max"] = opt(s.z_max);
     j["y_max_contact_m"] = opt(s.y_max_contact);
-    j["tip_min_m"] = opt(s.tip_min);
+    j["tip_min_m"] = opt(s.watched_min);
     j["energy"] = {{"initial", energy_json(r.initial_energy)}, {"final", energy_json(r.final_energy)}};
     j["solver"] = {{"method", r.stats.method},
                    {"decompositions", r.stats.decompositions},
@@ -234,7 +234,7 @@ CsvTable history_csv(const TransientResult& r, const std::string& watched) {
                                          "rayleigh_dissipated_j", "contact_dissipated_j", "external_work_j"});
     }
     for (std::size_t i = 0; i < h.t.size(); ++i) {
-        std::vector<double> row{h.t[i], h.tip_v[i], h.tip_velocity[i]};
+        std::vector<double> row{h.t[i], h.watched_v[i], h.watched_velocity[i]};
         for (std::size_t k = 0; k < h.contact_v.size(); ++k) {
             row.insert(row.end(), {h.contact_v[k][i], h.contact_velocity[k][i], h.contact_force[k][i]});
         }

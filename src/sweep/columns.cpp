@@ -83,7 +83,7 @@ std::vector<SweepCell> simulate_cells(const SimulationRun& run) {
         opt_cell(s.y_max),
         opt_cell(s.z_max),
         opt_cell(s.y_max_contact),
-        opt_cell(s.tip_min),
+        opt_cell(s.watched_min),
         // Only the exact solver proves its event searches (CVODE's root finding may step over a
         // sign change unseen): empty for CVODE.
         run.result.stats.method == "exact" ? SweepCell(run.result.stats.unproven_excess) : SweepCell(),

@@ -26,16 +26,16 @@ std::string opt_rel(const std::optional<double>& a, const std::optional<double>&
 // Largest sampled tip displacement above the final equilibrium after the first contact begins: the
 // y_max of the time history at the output step (CVODE reports no root-found extremes).
 std::optional<double> sampled_y_max(const SimulationRun& run) {
-    if (run.result.episodes.empty() || run.built.problem.tip_dof < 0) return std::nullopt;
+    if (run.result.episodes.empty() || run.built.problem.watched_dof < 0) return std::nullopt;
     const double t_on = run.result.episodes.front().t_on;
     const auto& h = run.result.history;
     std::optional<double> best;
     for (std::size_t i = 0; i < h.t.size(); ++i) {
         if (h.t[i] < t_on) continue;
-        if (!best || h.tip_v[i] > *best) best = h.tip_v[i];
+        if (!best || h.watched_v[i] > *best) best = h.watched_v[i];
     }
     if (!best) return std::nullopt;
-    return *best - run.built.start.q_equilibrium[run.built.problem.tip_dof];
+    return *best - run.built.start.q_equilibrium[run.built.problem.watched_dof];
 }
 
 }  // namespace

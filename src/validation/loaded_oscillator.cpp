@@ -24,7 +24,7 @@ TransientProblem LoadedOscillator::problem(double t_end, double output_step) con
     p.v0 = Eigen::VectorXd::Zero(1);
     p.forces.push_back(std::make_shared<PointLoadElement>("loads[0]", std::vector<int>{0}, std::vector<double>{1.0},
                                                           force, g, -1.0));
-    p.tip_dof = 0;
+    p.watched_dof = 0;
     p.t_end = t_end;
     p.output_step = output_step;
     return p;
@@ -74,7 +74,7 @@ LoadResponseError load_response_error(const LoadedOscillator& o, const Transient
         big = std::max({big, e.kinetic + e.strain, std::abs(e.external_work), e.rayleigh_dissipated});
     }
     for (std::size_t i = 0; i < r.history.t.size(); ++i) {
-        err.response = std::max(err.response, std::abs(r.history.tip_v[i] - o.response(r.history.t[i])) / scale);
+        err.response = std::max(err.response, std::abs(r.history.watched_v[i] - o.response(r.history.t[i])) / scale);
         const EnergyLedger& e = r.history.energy[i];
         err.ledger = std::max(err.ledger, std::abs(e.kinetic + e.strain + e.rayleigh_dissipated - e.external_work - E0) / big);
     }

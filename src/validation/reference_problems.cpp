@@ -51,7 +51,7 @@ TransientProblem cantilever_drop(int m, double Kc, double Cc, double y0, double 
     p.q0 = q;
     p.v0 = Eigen::VectorXd::Zero(q.size());
     p.modes0 = {0};
-    p.tip_dof = tip;
+    p.watched_dof = tip;
     p.t_end = t_end;
     p.output_step = t_end / 500;
     return p;
@@ -66,7 +66,7 @@ TransientProblem single_dof_drop(double m, double Kc, double Cc, double h, doubl
     p.q0 = Eigen::VectorXd::Constant(1, h);
     p.v0 = Eigen::VectorXd::Constant(1, -v);
     p.modes0 = {0};
-    p.tip_dof = 0;
+    p.watched_dof = 0;
     p.t_end = t_end;
     p.output_step = t_end / 100;
     return p;

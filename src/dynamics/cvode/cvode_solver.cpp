@@ -224,8 +224,8 @@ void Driver::sample_until(double t_lim, bool interpolate) {
 void Driver::record(double t, const double* y) {
     TimeHistory& h = r_.history;
     h.t.push_back(t);
-    h.tip_v.push_back(sys_.tip(y));
-    h.tip_velocity.push_back(sys_.tip_velocity(y));
+    h.watched_v.push_back(sys_.watched(y));
+    h.watched_velocity.push_back(sys_.watched_velocity(y));
     for (std::size_t j = 0; j < sys_.contacts().size(); ++j) {
         const int e = sys_.contacts()[j];
         const ContactReading c = sys_.reading(e, t, y);

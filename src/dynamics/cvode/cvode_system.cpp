@@ -40,7 +40,7 @@ ModalSystem::ModalSystem(const TransientProblem& p, ModalBasis basis)
     std::size_t largest = 0;
     for (const ForceElementPtr& e : p.forces) largest = std::max(largest, e->dofs().size());
     for (std::size_t k = 0; k < largest; ++k) identity_.push_back(static_cast<int>(k));
-    tip_row_ = basis_.phi.row(p.tip_dof);
+    watched_row_ = basis_.phi.row(p.watched_dof);
     int root = 0;
     for (const ForceElementPtr& e : p.forces) {
         switch_root_.push_back(e->modes() > 1 ? root++ : -1);
@@ -156,7 +156,7 @@ void ModalSystem::root_functions(double t, const double* y, double* g) const {
         if (switch_root_[ue] >= 0) g[switch_root_[ue]] = el.switching_function(s, modes_[ue]);
         if (el.watch_count() > 0) el.watch_functions(s, modes_[ue], g + watch_root_[ue]);
     }
-    g[extreme_root()] = tip_velocity(y);
+    g[extreme_root()] = watched_velocity(y);
     if (contacts_.empty()) {
         g[extreme_root() + 1] = 1.0;
     } else {
@@ -284,7 +284,7 @@ Eigen::VectorXd ModalSystem::absolute_tolerances(double atol_scale) const {
         if (!(w1 > 0.0)) w1 = 1.0;
     }
     double L = std::max(p_.q0.cwiseAbs().maxCoeff(), p_.v0.cwiseAbs().maxCoeff() / w1);
-    double phi_ref = std::abs(tip_row_.head(std::min(r_, 5)).cwiseAbs().maxCoeff());
+    double phi_ref = std::abs(watched_row_.head(std::min(r_, 5)).cwiseAbs().maxCoeff());
     for (int e = 0; e < elements(); ++e) {
         const ForceElement& el = element(e);
         const Eigen::MatrixXd& P = rows_[static_cast<std::size_t>(e)];
@@ -349,7 +349,7 @@ void validate(const TransientProblem& p) {
             if (d < 0 || d >= n) bad(e->name() + ": DOF out of range");
         }
     }
-    if (p.tip_dof < 0 || p.tip_dof >= n) bad("tip_dof out of range");
+    if (p.watched_dof < 0 || p.watched_dof >= n) bad("watched_dof out of range");
     if (!(p.t_end > 0.0) || !std::isfinite(p.t_end)) bad("t_end must be positive");
     if (!std::isfinite(p.output_step)) bad("output_step must be finite");
 }

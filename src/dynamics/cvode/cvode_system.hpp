@@ -76,9 +76,9 @@ public:
     [[nodiscard]] std::vector<int> initial_modes(const double* y) const;
 
     // Displacement and velocity of the watched point and of a contact's point [m], [m/s].
-    [[nodiscard]] double tip(const double* y) const { return tip_row_.dot(Eigen::Map<const Eigen::VectorXd>(y, r_)); }
-    [[nodiscard]] double tip_velocity(const double* y) const {
-        return tip_row_.dot(Eigen::Map<const Eigen::VectorXd>(y + r_, r_));
+    [[nodiscard]] double watched(const double* y) const { return watched_row_.dot(Eigen::Map<const Eigen::VectorXd>(y, r_)); }
+    [[nodiscard]] double watched_velocity(const double* y) const {
+        return watched_row_.dot(Eigen::Map<const Eigen::VectorXd>(y + r_, r_));
     }
     [[nodiscard]] double contact_displacement(int j, const double* y) const;
 
@@ -118,7 +118,7 @@ private:
     std::vector<Eigen::MatrixXd> rows_;      // per element: basis rows of its DOFs (|D_e| x r)
     Eigen::MatrixXd union_rows_;             // basis rows of the union of the elements' DOFs (|U| x r)
     std::vector<std::vector<int>> local_;    // per element: positions of its DOFs in the union
-    Eigen::RowVectorXd tip_row_;
+    Eigen::RowVectorXd watched_row_;
     std::vector<int> contacts_;
     std::vector<int> modes_;
     std::vector<int> switch_root_, watch_root_;

@@ -51,24 +51,24 @@ SignalMaximum maximum_over(const ExpSignal& f, double tau_end, const CrossingSea
 // y_max is sought everywhere after the first onset; the deepest tip deflection only while some
 // contact is closed (DESIGN.md: "during impact"); the contact point's maximum only when it is not
 // the tip itself.
-void track_extremes(const PieceSolution& s, double t, double tau_e, int nc, bool in_contact, bool contact_is_tip,
+void track_extremes(const PieceSolution& s, double t, double tau_e, int nc, bool in_contact, bool contact_is_watched,
                     const CrossingSearch& cs, int* evals, Extremes& ex) {
-    // ex starts at tip_max = contact_max = -inf, tip_min = +inf (set by solve_exact).
-    const SignalMaximum top = maximum_over(s.tip_displacement(), tau_e, cs, evals, ex.tip_max);
-    SignalMaximum bottom{-ex.tip_min, -1.0};
-    if (in_contact) bottom = maximum_over(s.tip_displacement(), tau_e, cs, evals, -ex.tip_min, 1e-9, -1.0);
+    // ex starts at watched_max = contact_max = -inf, watched_min = +inf (set by solve_exact).
+    const SignalMaximum top = maximum_over(s.watched_displacement(), tau_e, cs, evals, ex.watched_max);
+    SignalMaximum bottom{-ex.watched_min, -1.0};
+    if (in_contact) bottom = maximum_over(s.watched_displacement(), tau_e, cs, evals, -ex.watched_min, 1e-9, -1.0);
     if (top.tau >= 0.0) {
-        ex.tip_max = top.value;
-        ex.tip_max_t = t + top.tau;
+        ex.watched_max = top.value;
+        ex.watched_max_t = t + top.tau;
     }
     if (bottom.tau >= 0.0) {
-        ex.tip_min = -bottom.value;
-        ex.tip_min_t = t + bottom.tau;
+        ex.watched_min = -bottom.value;
+        ex.watched_min_t = t + bottom.tau;
     }
-    if (nc > 0 && !contact_is_tip) {
+    if (nc > 0 && !contact_is_watched) {
         ex.contact_max = maximum_over(s.contact_displacement(0), tau_e, cs, evals, ex.contact_max).value;
     } else if (nc > 0) {
-        ex.contact_max = ex.tip_max;
+        ex.contact_max = ex.watched_max;
     }
     ex.valid = true;
 }
@@ -163,9 +163,9 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const TransientOpti
     if (active.size() != p.contacts.size()) active.assign(p.contacts.size(), false);
     Eigen::VectorXd x = model.initial_state(p.q0, p.v0);
 
-    const bool contact_is_tip = nc > 0 && p.contacts.front().dof == p.tip_dof;
-    res.extremes.tip_max = res.extremes.contact_max = -std::numeric_limits<double>::infinity();
-    res.extremes.tip_min = std::numeric_limits<double>::infinity();
+    const bool contact_is_watched = nc > 0 && p.contacts.front().dof == p.watched_dof;
+    res.extremes.watched_max = res.extremes.contact_max = -std::numeric_limits<double>::infinity();
+    res.extremes.watched_min = std::numeric_limits<double>::infinity();
     std::vector<int> open(static_cast<std::size_t>(nc), -1);
     auto open_episode = [&](int c, double t, double v_in) {
         ContactEpisode e;
@@ -316,7 +316,7 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const TransientOpti
         }
         if (!res.episodes.empty() && tau_e > 0.0) {
             const bool in_contact = std::find(active.begin(), active.end(), true) != active.end();
-            track_extremes(s, t, tau_e, nc, in_contact, contact_is_tip, cs, &res.stats.steps, res.extremes);
+            track_extremes(s, t, tau_e, nc, in_contact, contact_is_watched, cs, &res.stats.steps, res.extremes);
         }
         if (o.energy) s.accumulate_dissipation(tau_e, ledger);
         x = s.state_at(tau_e);

@@ -91,10 +91,10 @@ const StateData& ExactModel::state(const std::vector<bool>& active) {
         sd->contact_v.row(c) = v.transpose();
         sd->contact_vel.row(c) = v.cwiseProduct(lam).transpose();
     }
-    const int tip = p_->tip_dof >= 0 ? p_->tip_dof : 0;
+    const int tip = p_->watched_dof >= 0 ? p_->watched_dof : 0;
     const Eigen::VectorXcd tv = md.project(base_.phi.row(tip).transpose());
-    sd->tip_v = tv.transpose();
-    sd->tip_vel = tv.cwiseProduct(lam).transpose();
+    sd->watched_v = tv.transpose();
+    sd->watched_vel = tv.cwiseProduct(lam).transpose();
     sd->load_vel.resize(static_cast<Eigen::Index>(p_->loads.size()), m);
     for (std::size_t l = 0; l < p_->loads.size(); ++l) {
         const Eigen::VectorXcd v = md.project(base_.phi.transpose() * p_->loads[l].shape);
@@ -202,8 +202,8 @@ PieceSolution::PieceSolution(const PiecewiseLinearProblem& p, const BaseModes& b
         force_.push_back(std::move(F));
         event_.push_back(std::move(ev));
     }
-    tip_v_ = channel(s.tip_v, 1.0, 0.0);
-    tip_vel_ = channel(s.tip_vel, 1.0, 0.0);
+    watched_v_ = channel(s.watched_v, 1.0, 0.0);
+    watched_vel_ = channel(s.watched_vel, 1.0, 0.0);
     if (energy) {
         const double tm = 0.5 * (t0 + t1);
         for (std::size_t l = 0; l < p.loads.size(); ++l) {
@@ -392,7 +392,7 @@ const Eigen::VectorXcd& PieceSolution::sample_exponentials(double tau, double t_
             for (Eigen::Index k = 0; k < m; ++k) sample_live_.push_back(static_cast<int>(k));
         } else {
             if (sample_weight_.size() != m) {
-                sample_weight_ = tip_v_.A.cwiseAbs().cwiseMax(tip_vel_.A.cwiseAbs());
+                sample_weight_ = watched_v_.A.cwiseAbs().cwiseMax(watched_vel_.A.cwiseAbs());
                 for (std::size_t c = 0; c < v_.size(); ++c) {
                     sample_weight_ = sample_weight_.cwiseMax(v_[c].A.cwiseAbs())
                                          .cwiseMax(vel_[c].A.cwiseAbs())
@@ -428,8 +428,8 @@ void PieceSolution::sample(double tau, double t_abs, const std::vector<bool>& ac
     // One set of exponentials serves every channel, the state and the energy terms.
     const Eigen::VectorXcd& e = sample_exponentials(tau, t_abs, energy);
     h.t.push_back(t_abs);
-    h.tip_v.push_back(sampled_value(tip_v_, tau));
-    h.tip_velocity.push_back(sampled_value(tip_vel_, tau));
+    h.watched_v.push_back(sampled_value(watched_v_, tau));
+    h.watched_velocity.push_back(sampled_value(watched_vel_, tau));
     for (std::size_t c = 0; c < nc; ++c) {
         h.contact_v[c].push_back(sampled_value(v_[c], tau));
         h.contact_velocity[c].push_back(sampled_value(vel_[c], tau));

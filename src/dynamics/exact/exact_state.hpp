@@ -20,7 +20,7 @@ struct StateData {
     Eigen::VectorXd weight;         // 2 for a mode standing for a conjugate pair, else 1
     Eigen::MatrixXcd contact_v;     // nc x m: v at each contact point per mode
     Eigen::MatrixXcd contact_vel;   // nc x m
-    Eigen::RowVectorXcd tip_v, tip_vel;
+    Eigen::RowVectorXcd watched_v, watched_vel;
     Eigen::MatrixXcd load_vel;      // loads x m: shape^T q_dot per mode
     // Energy ledger only (2n modes):
     FullModes full;
@@ -49,7 +49,7 @@ public:
     [[nodiscard]] const ExpSignal& contact_force(int c) const { return force_[static_cast<std::size_t>(c)]; }
     [[nodiscard]] const ExpSignal& penetration(int c) const { return pen_[static_cast<std::size_t>(c)]; }
     [[nodiscard]] const ExpSignal& contact_velocity(int c) const { return vel_[static_cast<std::size_t>(c)]; }
-    [[nodiscard]] const ExpSignal& tip_displacement() const { return tip_v_; }
+    [[nodiscard]] const ExpSignal& watched_displacement() const { return watched_v_; }
     [[nodiscard]] const ExpSignal& contact_displacement(int c) const { return v_[static_cast<std::size_t>(c)]; }
     [[nodiscard]] Eigen::VectorXd state_at(double tau) const;
     // With a constant forcing (no load ramps or harmonics in the piece), the mechanical energy of the
@@ -95,7 +95,7 @@ private:
     std::vector<Term> terms_full_;
     std::vector<ExpSignal> event_, force_, pen_, v_, vel_, release_fn_;
     std::vector<bool> release_;
-    ExpSignal tip_v_, tip_vel_;
+    ExpSignal watched_v_, watched_vel_;
     std::vector<ExpSignal> load_vel_, load_time_;
     // Samples at an even step: the exponentials at tau + dt are those at tau times exp(lambda dt), one
     // complex product per mode instead of an exp and a sincos (sample()). Anchored afresh from the

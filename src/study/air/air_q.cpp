@@ -18,12 +18,12 @@ struct Maximum {
     double t = 0.0, v = 0.0;
 };
 
-std::vector<Maximum> tip_maxima(const TimeHistory& h) {
+std::vector<Maximum> watched_maxima(const TimeHistory& h) {
     std::vector<Maximum> out;
     double largest = 0.0;
-    for (double v : h.tip_v) largest = std::max(largest, std::abs(v));
+    for (double v : h.watched_v) largest = std::max(largest, std::abs(v));
     for (std::size_t i = 1; i + 1 < h.t.size(); ++i) {
-        const double a = h.tip_v[i - 1], b = h.tip_v[i], c = h.tip_v[i + 1];
+        const double a = h.watched_v[i - 1], b = h.watched_v[i], c = h.watched_v[i + 1];
         // Maxima below 1e-6 of the largest excursion are at the solver's tolerance, not the film's decay.
         if (!(b > a && b >= c && b > 1e-6 * largest)) continue;
         const double curvature = a - 2.0 * b + c;
@@ -92,7 +92,7 @@ AirQPoint air_q_point(const Case& base, double pressure, const AirQOptions& o) {
 
     // Ring-down: the first mode alone, its tip moving at amplitude x gap x omega1.
     const double gap = model.films.empty() ? 1e-6 : model.films.front().gap;
-    phi *= o.amplitude * gap * w1 / std::abs(phi[p.tip_dof]);
+    phi *= o.amplitude * gap * w1 / std::abs(phi[p.watched_dof]);
     p.v0 = phi;
     const double period = 2.0 * std::numbers::pi / w1;
     p.t_end = o.periods * period;
@@ -105,7 +105,7 @@ AirQPoint air_q_point(const Case& base, double pressure, const AirQOptions& o) {
     // (c / rho A) M, so the modes do not couple except through the film's nonlinearity.
     co.reduced_modes = kAirQModes;
     const TransientResult r = solve_cvode(p, {}, co);
-    const std::vector<Maximum> m = tip_maxima(r.history);
+    const std::vector<Maximum> m = watched_maxima(r.history);
     out.maxima = static_cast<int>(m.size());
     if (m.size() >= 3) {
         const double span = m.back().t - m.front().t;

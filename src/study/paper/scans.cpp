@@ -36,9 +36,9 @@ TransientPoint run_transient_point(const Case& c, double x) {
         const ImpactSummary& s = run.summary;
         const double l = c.beam.length;
         const double w1 = run.built.model.omega1;
-        const double eq = run.built.problem.tip_dof >= 0 ? run.built.start.q_equilibrium[run.built.problem.tip_dof] : 0.0;
+        const double eq = run.built.problem.watched_dof >= 0 ? run.built.start.q_equilibrium[run.built.problem.watched_dof] : 0.0;
         pt.z_max = s.z_max;
-        if (s.tip_min) pt.z_min = (*s.tip_min - eq) / l;
+        if (s.watched_min) pt.z_min = (*s.watched_min - eq) / l;
         pt.z_equilibrium = eq / l;
         pt.tau_p = times(s.Tp, w1);
         pt.tau = times(s.T_first, w1);
@@ -92,10 +92,10 @@ TypicalTransient run_typical_transient(const Case& c) {
     const SimulationRun run = run_simulation(k, o);
     TypicalTransient t;
     t.t = run.result.history.t;
-    t.tip = run.result.history.tip_v;
+    t.tip = run.result.history.watched_v;
     t.summary = run.summary;
     t.omega1 = run.built.model.omega1;
-    t.tip_equilibrium = run.built.problem.tip_dof >= 0 ? run.built.start.q_equilibrium[run.built.problem.tip_dof] : 0.0;
+    t.tip_equilibrium = run.built.problem.watched_dof >= 0 ? run.built.start.q_equilibrium[run.built.problem.watched_dof] : 0.0;
     t.y0 = run.built.start.y0_m;
     t.support_damping = run.built.model.contact_damping.empty() ? 0.0 : run.built.model.contact_damping.front();
     t.rayleigh_alpha = run.built.model.rayleigh.alpha;

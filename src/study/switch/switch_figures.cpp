@@ -149,7 +149,7 @@ FigureSpec transient_figure(const SwitchStudy& s) {
     for (std::size_t i = 0; i < h.t.size(); ++i) {
         double force = 0.0;
         for (const auto& f : h.contact_force) force += f[i];
-        t.add_row({h.t[i] * 1e6, h.tip_v[i] * 1e6, force * 1e6, e.voltage * e.time(h.t[i])});
+        t.add_row({h.t[i] * 1e6, h.watched_v[i] * 1e6, force * 1e6, e.voltage * e.time(h.t[i])});
     }
     FigureSpec f;
     f.name = "switch_transient";
