@@ -224,6 +224,79 @@ State locate(const Model& m, State a, State b, bool fix_modes, int& iterations, 
     return b;
 }
 
+// The equilibrium at zero voltage, where the continuation starts.
+State rest_state(const Model& m) {
+    const Index n = m.K.rows();
+    ForceSet at_rest = m.contacts;
+    at_rest.insert(at_rest.end(), m.structural.begin(), m.structural.end());
+    const StaticState rest = solve_static(m.K, at_rest, Eigen::VectorXd::Zero(n), {}, m.max_iterations);
+    State s;
+    s.q = rest.q;
+    s.modes.assign(rest.modes.begin(), rest.modes.begin() + static_cast<std::ptrdiff_t>(m.contacts.size()));
+    s.tau = m.row.dot(s.q);
+    return s;
+}
+
+// Secant predictor along the branch for a step of the travel from s (previous: the point before).
+State predict(const State& s, const State& previous, double step, bool has_previous) {
+    State trial = s;
+    if (has_previous && s.tau != previous.tau) {
+        const double ratio = step / (s.tau - previous.tau);
+        trial.q = s.q + ratio * (s.q - previous.q);
+        trial.lambda = s.lambda + ratio * (s.lambda - previous.lambda);
+    }
+    return trial;
+}
+
+// The last open state and the first closed one s bracket the touch-down: where the open branch's
+// deepest penetration crosses zero. Returns the largest lambda the closed branch is followed to.
+double note_touchdown(const Model& m, const State& previous, const State& s, BorderedSolver& ls, PullinResult& r) {
+    State a = previous, b = s;
+    b.modes = a.modes;
+    if (!solve_at(m, b.tau, b, true, r.newton_iterations, ls)) b = s;
+    // The voltage is smooth in the travel there: a bracket at roundoff gives it at roundoff.
+    const State td = locate(m, a, b, true, r.newton_iterations, ls, 4e-16, [&](const State& x) { return deepest(m, x); });
+    r.touchdown = describe(m, td, ls);
+    r.touchdown->contact = true;
+    // Held at touch-down when the closed branch starts stable there.
+    r.touchdown->stable = is_stable(m, s, ls);
+    if (r.touchdown->stable) r.release_voltage = r.touchdown->voltage;
+    const double ref = r.pullin ? r.pullin->voltage : r.touchdown->voltage;
+    return 16.0 * ref * ref;
+}
+
+// A point s of the open branch; the first fall of lambda places the pull-in fold between the last two
+// points of rising lambda and s.
+void note_open_point(const Model& m, const State& previous, const State& s, BorderedSolver& ls, std::vector<State>& open,
+                     PullinResult& r) {
+    open.push_back(s);
+    if (r.pullin || open.size() < 3 || !(s.lambda < previous.lambda)) return;
+    const State& a = open[open.size() - 3];
+    const State fold = locate(m, a, s, false, r.newton_iterations, ls, kFoldWidth,
+                              [&](const State& x) { return -lambda_slope(m, x, ls); });
+    r.pullin = describe(m, fold, ls);
+    // The tangent is singular at the fold: its sign there is roundoff. The point ends the stable
+    // branch and is reported as its limit, not stable.
+    r.pullin->stable = false;
+    open.insert(open.end() - 1, fold);
+}
+
+// Why the branch ends at s when the beam comes within 0.5 % of a bare electrode's air gap (the last
+// such electrode named), or "" when it does not. A dielectric layer is a contact (DielectricContact):
+// the beam lands on it and the branch goes on; a bare electrode's face is not.
+std::string collapse_onto_a_pad(const Model& m, const State& s, double voltage) {
+    std::string end;
+    for (const PadPtr& pad : m.pads) {
+        if (pad->geometry().dielectric_thickness > 0.0) continue;
+        const ElectrostaticPad::Narrowest narrow = pad->narrowest(assembler().gather(*pad, s.q).q);
+        if (narrow.air_gap <= 5e-3 * (pad->geometry().gap - pad->geometry().dielectric_thickness)) {
+            end = "the beam collapses onto " + pad->name() +
+                  text(" (it touches it at x = %.4g um, V = %.6g V on the unstable branch)", narrow.x * 1e6, voltage);
+        }
+    }
+    return end;
+}
+
 void add_frequencies(const Model& m, const std::vector<State>& open, double top, const PullinOptions& o,
                      PullinResult& r) {
     if (open.empty() || o.frequency_points < 2) return;
@@ -290,20 +363,8 @@ PullinResult trace_pullin(const Case& c, const PullinOptions& o) { return trace_
 PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
     PullinResult r;
     r.watched_x = m.watched_x;
-    const Index n = m.K.rows();
     BorderedSolver ls;
-
-    State s;
-    s.q = Eigen::VectorXd::Zero(n);
-    s.modes.assign(m.contacts.size(), 0);
-    {
-        ForceSet at_rest = m.contacts;
-        at_rest.insert(at_rest.end(), m.structural.begin(), m.structural.end());
-        const StaticState rest = solve_static(m.K, at_rest, Eigen::VectorXd::Zero(n), {}, m.max_iterations);
-        s.q = rest.q;
-        s.modes.assign(rest.modes.begin(), rest.modes.begin() + static_cast<std::ptrdiff_t>(m.contacts.size()));
-        s.tau = m.row.dot(s.q);
-    }
+    State s = rest_state(m);
     std::vector<State> open;  // the open branch, for frequencies and the fold
     open.push_back(s);
     r.branch.push_back(describe(m, s, ls));
@@ -320,13 +381,7 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
             r.end = "the mean travel reached the air gap of electrodes[0]";
             break;
         }
-        // Secant predictor along the branch.
-        State trial = s;
-        if (k > 0 && s.tau != previous.tau) {
-            const double ratio = step / (s.tau - previous.tau);
-            trial.q = s.q + ratio * (s.q - previous.q);
-            trial.lambda = s.lambda + ratio * (s.lambda - previous.lambda);
-        }
+        State trial = predict(s, previous, step, k > 0);
         if (!solve_at(m, tau, trial, false, r.newton_iterations, ls)) {
             step *= 0.5;
             if (step < full * 1e-9) {
@@ -341,37 +396,8 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
         step = std::min(full, 2.0 * step);
 
         const bool closed = any_closed(m, s);
-        if (closed && !r.touchdown) {
-            // The last open state and this closed one bracket the touch-down: where the open
-            // branch's deepest penetration crosses zero.
-            State a = previous, b = s;
-            b.modes = a.modes;
-            if (!solve_at(m, b.tau, b, true, r.newton_iterations, ls)) b = s;
-            // The voltage is smooth in the travel there: a bracket at roundoff gives it at roundoff.
-            const State td = locate(m, a, b, true, r.newton_iterations, ls, 4e-16,
-                                    [&](const State& x) { return deepest(m, x); });
-            r.touchdown = describe(m, td, ls);
-            r.touchdown->contact = true;
-            // Held at touch-down when the closed branch starts stable there.
-            r.touchdown->stable = is_stable(m, s, ls);
-            if (r.touchdown->stable) r.release_voltage = r.touchdown->voltage;
-            const double ref = r.pullin ? r.pullin->voltage : r.touchdown->voltage;
-            lambda_limit = 16.0 * ref * ref;
-        }
-        if (!closed && !r.touchdown) {
-            open.push_back(s);
-            if (!r.pullin && open.size() >= 3 && s.lambda < previous.lambda) {
-                // The fold lies between the last two points of rising lambda and this one.
-                const State& a = open[open.size() - 3];
-                const State fold = locate(m, a, s, false, r.newton_iterations, ls, kFoldWidth,
-                                          [&](const State& x) { return -lambda_slope(m, x, ls); });
-                r.pullin = describe(m, fold, ls);
-                // The tangent is singular at the fold: its sign there is roundoff. The point ends
-                // the stable branch and is reported as its limit, not stable.
-                r.pullin->stable = false;
-                open.insert(open.end() - 1, fold);
-            }
-        }
+        if (closed && !r.touchdown) lambda_limit = note_touchdown(m, previous, s, ls, r);
+        if (!closed && !r.touchdown) note_open_point(m, previous, s, ls, open, r);
         if (closed && r.touchdown && !r.collapse && s.lambda < previous.lambda && any_closed(m, previous)) {
             const State fold = locate(m, previous, s, false, r.newton_iterations, ls, kFoldWidth,
                                       [&](const State& x) { return -lambda_slope(m, x, ls); });
@@ -382,17 +408,7 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
         // Release: the lowest voltage at which a closed support still holds the beam stably.
         if (p.contact && p.stable) r.release_voltage = std::min(r.release_voltage.value_or(p.voltage), p.voltage);
         r.branch.push_back(p);
-
-        for (const PadPtr& pad : m.pads) {
-            // A dielectric layer is a contact (DielectricContact): the beam lands on it and the
-            // branch goes on; a bare electrode's face is not, so the branch ends before it.
-            if (pad->geometry().dielectric_thickness > 0.0) continue;
-            const ElectrostaticPad::Narrowest narrow = pad->narrowest(assembler().gather(*pad, s.q).q);
-            if (narrow.air_gap <= 5e-3 * (pad->geometry().gap - pad->geometry().dielectric_thickness)) {
-                r.end = "the beam collapses onto " + pad->name() +
-                        text(" (it touches it at x = %.4g um, V = %.6g V on the unstable branch)", narrow.x * 1e6, p.voltage);
-            }
-        }
+        r.end = collapse_onto_a_pad(m, s, p.voltage);
         if (!r.end.empty()) break;
         if (s.lambda > lambda_limit) {
             r.end = "the voltage passed 4 times the pull-in (or touch-down) voltage on the closed branch";

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -75,10 +76,12 @@ void error_fn(int code, const char* module, const char* function, char* msg, voi
 thread_local std::string element_refusal;
 
 // CVODE callbacks; user_data is the ModalSystem. They never let an exception into the C library:
-// one becomes an unrecoverable error (-1) and CVODE fails.
-int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void* ud) {
+// one becomes an unrecoverable error (-1) and CVODE fails; an element's refusal is kept for the
+// message.
+template <class Call>
+int guarded(Call call) {
     try {
-        static_cast<const ModalSystem*>(ud)->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+        call();
         return 0;
     } catch (const std::domain_error& e) {
         element_refusal = e.what();
@@ -88,33 +91,23 @@ int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void* ud) {
     }
 }
 
+int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void* ud) {
+    return guarded([&] { static_cast<const ModalSystem*>(ud)->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot)); });
+}
+
 int jac_fn(realtype t, N_Vector y, N_Vector, SUNMatrix J, void* ud, N_Vector, N_Vector, N_Vector) {
-    try {
+    return guarded([&] {
         cvode_detail::StructuredJacobian& j = cvode_detail::structured_content(J);
         auto tangents = std::make_shared<cvode_detail::ElementTangents>();
         static_cast<const ModalSystem*>(ud)->tangents(t, N_VGetArrayPointer(y), tangents->dfdq, tangents->dfdv);
         j.tangents = std::move(tangents);
         j.a = 1.0;
         j.b = 0.0;
-        return 0;
-    } catch (const std::domain_error& e) {
-        element_refusal = e.what();
-        return -1;
-    } catch (...) {
-        return -1;
-    }
+    });
 }
 
 int root_fn(realtype t, N_Vector y, realtype* g, void* ud) {
-    try {
-        static_cast<const ModalSystem*>(ud)->root_functions(t, N_VGetArrayPointer(y), g);
-        return 0;
-    } catch (const std::domain_error& e) {
-        element_refusal = e.what();
-        return -1;
-    } catch (...) {
-        return -1;
-    }
+    return guarded([&] { static_cast<const ModalSystem*>(ud)->root_functions(t, N_VGetArrayPointer(y), g); });
 }
 
 class Driver {
@@ -124,6 +117,11 @@ public:
     TransientResult run();
 
 private:
+    std::vector<int> prepare();
+    void enter_initial_modes(const std::vector<int>& start);
+    void integrate();
+    std::optional<double> step(double t, double t_stop);
+    void finish();
     void check(int flag, const char* what) const;
     void setup();
     [[nodiscard]] double sample_time(std::size_t k) const;
@@ -145,6 +143,7 @@ private:
     double t_final_ = p_.t_end;          // the horizon, or the first contact with stop_at_first_contact
     int close_root_restarts_ = 0;  // restarts after CVODE's "root found at and very near t"
     TransientResult r_;
+    Eigen::VectorXd y0_;                 // the state at t = 0
     std::vector<double> stops_;          // element breakpoints in (0, t_end), then t_end
     std::size_t samples_ = 0, next_sample_ = 0;
     std::vector<int> modes_;             // each element's mode
@@ -350,8 +349,9 @@ void Driver::restart(double t) {
     t_restart_ = t;
 }
 
-TransientResult Driver::run() {
-    const auto t_setup = Clock::now();
+// The stops, the sample count, the history's columns, the initial state, CVODE set up; returns each
+// element's mode at t = 0.
+std::vector<int> Driver::prepare() {
     const std::size_t nc = sys_.contacts().size();
     stops_ = breakpoints(p_.forces, 0.0, p_.t_end);
     stops_.push_back(p_.t_end);
@@ -360,23 +360,22 @@ TransientResult Driver::run() {
     r_.history.contact_v.resize(nc);
     r_.history.contact_velocity.resize(nc);
     r_.history.contact_force.resize(nc);
-    const Eigen::VectorXd y0 = sys_.initial_state();
-    const std::vector<int> start = sys_.initial_modes(y0.data());
+    y0_ = sys_.initial_state();
+    const std::vector<int> start = sys_.initial_modes(y0_.data());
     modes_.assign(start.size(), 0);
     sys_.set_modes(modes_);
     sys_.set_segment_end(stops_.front());
     setup();
-    r_.stats.decomposition_s = seconds_since(t_setup);  // basis, tolerance scales, CVODE setup
+    return start;
+}
 
-    // Wall time: the whole integration, steps, root finding (inside CVODE's step, not separable),
-    // restarts and sampling, is propagation_s; event_location_s stays 0.
-    const auto t_run = Clock::now();
+// Elements in another mode at t = 0 are the initial state: they switch at once, counted as no event
+// and with no energy jump.
+void Driver::enter_initial_modes(const std::vector<int>& start) {
     std::vector<int> switched;
     for (std::size_t e = 0; e < start.size(); ++e) {
         if (start[e] != 0) switched.push_back(static_cast<int>(e));
     }
-    // Elements in another mode at t = 0 are the initial state: they switch at once, counted as no
-    // event and with no energy jump.
     if (!switched.empty()) {
         for (int e : switched) {
             // mode_after_switch toggles two-mode elements; an element with more modes is set directly.
@@ -392,72 +391,85 @@ TransientResult Driver::run() {
     r_.stats.events = 0;
     burst_ = 0;
     jump_ = 0.0;
-    r_.initial_energy = sys_.energy(0.0, y0.data(), jump_);
-    sample_until(0.0, false);
+}
 
+// One return of CVODE towards t_stop from t (a step, a root, the stop); returns where it left the
+// run, or nullopt when the run ends there (stop_at_first_contact).
+std::optional<double> Driver::step(double t, double t_stop) {
+    check(CVodeSetStopTime(s_.mem, t_stop), "CVodeSetStopTime");
+    double tret = t;
+    const int flag = CVode(s_.mem, t_stop, s_.y, &tret, CV_ONE_STEP);
+    // A root function that stays exactly 0 just after a root it returned (a velocity at the noise
+    // level of a stiff start, e.g. a distributed force switched on at t = 0) makes CVODE refuse to go
+    // on; a restart there holds that function inactive until it moves away from 0.
+    if (flag == CV_ILL_INPUT && cvode_message_.find("very near") != std::string::npos && close_root_restarts_ < 1000) {
+        ++close_root_restarts_;
+        cvode_message_.clear();
+        restart(t);
+        return t;
+    }
+    check(flag, "CVode");
+    long nst = 0;
+    check(CVodeGetNumSteps(s_.mem, &nst), "CVodeGetNumSteps");
+    if (steps_done_ + nst > o_.max_steps) {
+        throw WorkLimitReached("solve_cvode: more than solver.max_steps = " + std::to_string(o_.max_steps) +
+                               " steps before the horizon (at t = " + std::to_string(tret * 1e6) +
+                               " us; raise solver.max_steps, or loosen solver.rtol)");
+    }
+    check_run();
+    if (flag == CV_ROOT_RETURN) {
+        const int events_before = r_.stats.events;
+        t = handle_roots(tret);
+        // Watch functions at the rounding level (a velocity of 1e-23 m/s just after a start at rest)
+        // can make CVODE return the same root again and again without stepping. A restart there
+        // forgets the step history and holds a function that is exactly 0 inactive.
+        if (r_.stats.events == events_before && same_time(t, t_done_)) {
+            if (++stalled_roots_ > 100) {
+                throw std::runtime_error("solve_cvode: root finding makes no progress in time at t = " +
+                                         std::to_string(t * 1e6) +
+                                         " us (a watch function stays at the rounding level; tighten solver.rtol)");
+            }
+            restart(t);
+        } else {
+            stalled_roots_ = 0;
+        }
+        if (c_.stop_at_first_contact && contact_closed()) {
+            sample_until(t, false);
+            t_final_ = t;
+            return std::nullopt;
+        }
+    } else {
+        sample_until(tret, true);
+        episodes_.update_peaks(tret, N_VGetArrayPointer(s_.y));
+        episodes_.update_extremes(tret, N_VGetArrayPointer(s_.y), modes_);
+        t = flag == CV_TSTOP_RETURN ? t_stop : tret;
+    }
+    t_done_ = t;
+    return t;
+}
+
+// From t = 0 to the horizon, stop by stop (element breakpoints, each a restart).
+void Driver::integrate() {
     double t = 0.0;
     std::size_t seg = 0;
     for (;;) {
         const double t_stop = stops_[seg];
         if (t >= t_stop || same_time(t, t_stop)) {  // reached a stop: the end, or a breakpoint
             sample_until(t_stop, false);
-            if (seg + 1 == stops_.size()) break;
+            if (seg + 1 == stops_.size()) return;
             sys_.set_segment_end(stops_[++seg]);
             restart(t);
             continue;
         }
-        check(CVodeSetStopTime(s_.mem, t_stop), "CVodeSetStopTime");
-        double tret = t;
-        const int flag = CVode(s_.mem, t_stop, s_.y, &tret, CV_ONE_STEP);
-        // A root function that stays exactly 0 just after a root it returned (a velocity at the
-        // noise level of a stiff start, e.g. a distributed force switched on at t = 0) makes CVODE
-        // refuse to go on; a restart there holds that function inactive until it moves away from 0.
-        if (flag == CV_ILL_INPUT && cvode_message_.find("very near") != std::string::npos && close_root_restarts_ < 1000) {
-            ++close_root_restarts_;
-            cvode_message_.clear();
-            restart(t);
-            continue;
-        }
-        check(flag, "CVode");
-        long nst = 0;
-        check(CVodeGetNumSteps(s_.mem, &nst), "CVodeGetNumSteps");
-        if (steps_done_ + nst > o_.max_steps) {
-            throw WorkLimitReached("solve_cvode: more than solver.max_steps = " + std::to_string(o_.max_steps) +
-                                   " steps before the horizon (at t = " + std::to_string(tret * 1e6) +
-                                   " us; raise solver.max_steps, or loosen solver.rtol)");
-        }
-        check_run();
-        if (flag == CV_ROOT_RETURN) {
-            const int events_before = r_.stats.events;
-            t = handle_roots(tret);
-            // Watch functions at the rounding level (a velocity of 1e-23 m/s just after a start at
-            // rest) can make CVODE return the same root again and again without stepping. A restart
-            // there forgets the step history and holds a function that is exactly 0 inactive.
-            if (r_.stats.events == events_before && same_time(t, t_done_)) {
-                if (++stalled_roots_ > 100) {
-                    throw std::runtime_error("solve_cvode: root finding makes no progress in time at t = " +
-                                             std::to_string(t * 1e6) +
-                                             " us (a watch function stays at the rounding level; tighten solver.rtol)");
-                }
-                restart(t);
-            } else {
-                stalled_roots_ = 0;
-            }
-            if (c_.stop_at_first_contact && contact_closed()) {
-                sample_until(t, false);
-                t_final_ = t;
-                break;
-            }
-        } else {
-            sample_until(tret, true);
-            episodes_.update_peaks(tret, N_VGetArrayPointer(s_.y));
-            episodes_.update_extremes(tret, N_VGetArrayPointer(s_.y), modes_);
-            t = flag == CV_TSTOP_RETURN ? t_stop : tret;
-        }
-        t_done_ = t;
+        const std::optional<double> next = step(t, t_stop);
+        if (!next) return;
+        t = *next;
     }
-    add_counters();
+}
 
+// Episodes open at the end, the final ledger, the statistics.
+void Driver::finish() {
+    add_counters();
     const double* y = N_VGetArrayPointer(s_.y);
     episodes_.close_at_end(t_final_, y);
     r_.final_energy = sys_.energy(t_final_, y, jump_);
@@ -469,6 +481,21 @@ TransientResult Driver::run() {
     r_.stats.steps = static_cast<int>(std::min<long>(steps_done_, std::numeric_limits<int>::max()));
     // For CVODE, "decompositions" counts the factorisations of the Newton matrix (linear solver setups).
     r_.stats.decompositions = static_cast<int>(std::min<long>(setups_done_, std::numeric_limits<int>::max()));
+}
+
+TransientResult Driver::run() {
+    const auto t_setup = Clock::now();
+    const std::vector<int> start = prepare();
+    r_.stats.decomposition_s = seconds_since(t_setup);  // basis, tolerance scales, CVODE setup
+
+    // Wall time: the whole integration, steps, root finding (inside CVODE's step, not separable),
+    // restarts and sampling, is propagation_s; event_location_s stays 0.
+    const auto t_run = Clock::now();
+    enter_initial_modes(start);
+    r_.initial_energy = sys_.energy(0.0, y0_.data(), jump_);
+    sample_until(0.0, false);
+    integrate();
+    finish();
     r_.stats.propagation_s = seconds_since(t_run);
     return std::move(r_);
 }

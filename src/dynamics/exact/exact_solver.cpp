@@ -49,7 +49,7 @@ SignalMaximum maximum_over(const ExpSignal& f, double tau_end, const CrossingSea
 }
 
 // y_max is sought everywhere after the first onset; the deepest tip deflection only while some
-// contact is closed (DESIGN.md: "during impact"); the contact point's maximum only when it is not
+// contact is closed (docs/model.md §14: "while a contact is closed"); the contact point's maximum only when it is not
 // the tip itself.
 void track_extremes(const PieceSolution& s, double t, double tau_e, int nc, bool in_contact, bool contact_is_watched,
                     const CrossingSearch& cs, int* evals, Extremes& ex) {
@@ -139,243 +139,332 @@ const PieceSolution& piece_at(ExactModel& model, const PiecewiseLinearProblem& p
     }
 }
 
+// One run of the exact solver: the piece of the current contact state from t, its events, its
+// samples, the switch that ends it, until the horizon.
+class ExactRun {
+public:
+    ExactRun(const PiecewiseLinearProblem& p, const TransientOptions& o, const ExactOptions& settings);
+    TransientResult run();
+
+private:
+    void start();
+    // Plays one piece from t_ to its end (an event, a breakpoint, the horizon); false when the motion
+    // came to rest and the rest of the horizon was sampled.
+    bool advance();
+    [[nodiscard]] double piece_end() const;
+    [[nodiscard]] bool resting(const PieceSolution& s, double piece_end);
+    void finish_at_rest(const PieceSolution& s, double span);
+    void locate_events(const PieceSolution& s, double span, const std::vector<double>& from);
+    void resolve_repeated_switch(const PieceSolution& s, double span, std::vector<double>& from);
+    void sample_piece(const PieceSolution& s);
+    void grow_episodes(const PieceSolution& s);
+    void count_zero_length_piece();
+    void switch_contact(const PieceSolution& s);
+    void finish();
+    void open_episode(int c, double t, double v_in);
+
+    const PiecewiseLinearProblem& p_;
+    const TransientOptions& o_;
+    TransientResult res_;
+    Clock::time_point t_base_;
+    ExactModel model_;
+    double base_s_ = 0.0;  // decomposition time of the base modes [s]
+    int nc_ = 0;
+    CrossingSearch cs_;
+    long steps_left_ = 0;
+    std::vector<bool> active_;
+    Eigen::VectorXd x_;
+    bool contact_is_watched_ = false;
+    std::vector<int> open_;  // each contact's open episode, -1 for none
+    std::vector<double> breaks_;
+    double dt_out_ = 0.0;
+    long n_samples_ = 0;
+    long next_sample_ = 0;
+    EnergyLedger ledger_;
+    int zero_length_run_ = 0;
+    int zero_length_contact_ = -1;  // the one contact switching in that run, or -2 for several
+    UnprovenSteps unproven_;
+    double t_ = 0.0;
+    long pieces_ = 0;
+    double largest_motion_ = 0.0;
+    std::vector<double> penetration_scale_;
+    int last_switch_ = -1;  // the contact that switched last, and when
+    double last_switch_t_ = -1.0;
+    // The piece being played: where its first event lies and whose (-1: none, or a release).
+    double tau_e_ = 0.0;
+    int who_ = -1;
+};
+
+ExactRun::ExactRun(const PiecewiseLinearProblem& p, const TransientOptions& o, const ExactOptions& settings)
+    : p_(p), o_(o), t_base_(Clock::now()), model_(p, o.energy, settings.state_cache_bytes) {
+    // Decomposition time: the base modes here, each contact state inside the model (on first use).
+    base_s_ = seconds_since(t_base_);
+    res_.stats.method = "exact";
+    res_.t_end = p.t_end;
+    nc_ = static_cast<int>(p.contacts.size());
+    const double period1 = 2.0 * std::numbers::pi / model_.base().omega[0];
+    cs_.h_min = settings.h_min_periods * period1;
+    steps_left_ = o.max_steps;
+    cs_.budget = &steps_left_;
+
+    active_ = p.active0;
+    if (active_.size() != p.contacts.size()) active_.assign(p.contacts.size(), false);
+    x_ = model_.initial_state(p.q0, p.v0);
+
+    contact_is_watched_ = nc_ > 0 && p.contacts.front().dof == p.watched_dof;
+    res_.extremes.watched_max = res_.extremes.contact_max = -std::numeric_limits<double>::infinity();
+    res_.extremes.watched_min = std::numeric_limits<double>::infinity();
+    open_.assign(static_cast<std::size_t>(nc_), -1);
+
+    for (const LoadTerm& l : p.loads) {
+        for (double b : l.time.breakpoints(0.0, p.t_end)) breaks_.push_back(b);
+    }
+    std::sort(breaks_.begin(), breaks_.end());
+
+    dt_out_ = p.output_step > 0 ? p.output_step : p.t_end / 2000.0;
+    n_samples_ = o.history ? static_cast<long>(std::floor(p.t_end / dt_out_ * (1 + 1e-12))) + 1 : 0;
+    penetration_scale_.assign(static_cast<std::size_t>(nc_), 0.0);
+}
+
+void ExactRun::open_episode(int c, double t, double v_in) {
+    ContactEpisode e;
+    e.support = c;
+    e.t_on = t;
+    e.v_in = v_in;
+    open_[static_cast<std::size_t>(c)] = static_cast<int>(res_.episodes.size());
+    res_.episodes.push_back(e);
+}
+
+// The contacts closed at t = 0 open their episodes; the initial ledger.
+void ExactRun::start() {
+    const PieceSolution& first = piece_at(model_, p_, active_, x_, 0.0, p_.t_end);
+    for (int c = 0; c < nc_; ++c) {
+        if (active_[static_cast<std::size_t>(c)]) open_episode(c, 0.0, first.contact_velocity(c).value(0.0));
+    }
+    if (o_.energy) res_.initial_energy = first.energy_at(0.0, ledger_);
+}
+
+// The next load breakpoint after t, or the horizon.
+double ExactRun::piece_end() const {
+    const auto bit = std::upper_bound(breaks_.begin(), breaks_.end(), t_ * (1 + 1e-15));
+    return bit == breaks_.end() ? p_.t_end : std::min(p_.t_end, *bit);
+}
+
+// At rest: with nothing left to change the forcing, a motion whose energy about this piece's
+// equilibrium is below roundoff of the largest motion seen (amplitude 1e-15) has nothing left to do
+// but decay. Searching on would only chase contact switches at roundoff (a zero-gap support, where
+// the equilibrium lies on the switching surface, after a few thousand periods); the rest of the
+// horizon is this piece, sampled, and the summary says from when.
+// A closed contact whose equilibrium force is at roundoff (the equilibrium on its switching surface)
+// is not resting on it: the roundoff switch that opens it comes next, and the rest is declared in
+// the open state, so that a beam merely touching a zero-gap support at rest does not count as
+// lasting contact.
+bool ExactRun::resting(const PieceSolution& s, double end) {
+    bool firm = true;
+    for (int c = 0; c < nc_; ++c) {
+        const ExpSignal& d = s.penetration(c);
+        auto& scale = penetration_scale_[static_cast<std::size_t>(c)];
+        scale = std::max(scale, d.bound(0.0, 0.0, 0));
+        if (active_[static_cast<std::size_t>(c)] && constant_part(d) <= kFirmPenetration * scale) firm = false;
+    }
+    const double motion = s.motion_energy();
+    if (motion < 0.0) return false;
+    largest_motion_ = std::max(largest_motion_, motion);
+    return firm && end == p_.t_end && motion <= kRestEnergy * largest_motion_;
+}
+
+void ExactRun::finish_at_rest(const PieceSolution& s, double span) {
+    while (next_sample_ < n_samples_) {
+        const double ts = std::min(next_sample_ * dt_out_, p_.t_end);
+        s.sample(ts - t_, ts, active_, res_.history, o_.energy, ledger_);
+        if ((++next_sample_ & 1023) == 0) check_run();
+    }
+    if (o_.energy) s.accumulate_dissipation(span, ledger_);
+    x_ = s.state_at(span);
+    res_.stats.at_rest_from = t_;
+    t_ = p_.t_end;
+}
+
+// The first event of the piece: a contact switching (who_ >= 0) or a contact done waiting for its
+// release (who_ = -1); `from[c]` is where the search for contact c starts.
+void ExactRun::locate_events(const PieceSolution& s, double span, const std::vector<double>& from) {
+    tau_e_ = span;
+    who_ = -1;
+    for (int c = 0; c < nc_; ++c) {
+        const double tau0 = std::min(from[static_cast<std::size_t>(c)], tau_e_);
+        const auto hit = first_upcrossing(s.event_function(c), tau0, tau_e_, cs_, &res_.stats.steps, &unproven_);
+        if (hit && *hit <= tau_e_) {
+            tau_e_ = *hit;
+            who_ = c;
+        }
+        if (s.waits_for_release(c)) {
+            // d reaching 0 only changes which function is watched: the piece ends, the state stays.
+            const auto out = first_upcrossing(s.release_function(c), tau0, tau_e_, cs_, &res_.stats.steps, &unproven_);
+            if (out && *out < tau_e_) {
+                tau_e_ = *out;
+                who_ = -1;
+            }
+        }
+    }
+}
+
+// The contact that has just switched wants to switch back at once: a tangency. Where the state just
+// entered is the consistent one, its search starts again past the tangency.
+void ExactRun::resolve_repeated_switch(const PieceSolution& s, double span, std::vector<double>& from) {
+    if (!(who_ >= 0 && who_ == last_switch_ && t_ == last_switch_t_ && tau_e_ <= cs_.t_tol)) return;
+    const std::size_t w = static_cast<std::size_t>(who_);
+    const auto tg = resolve_tangency(s.contact_force(who_), s.penetration(who_), span, cs_.h_min, cs_.budget);
+    if (tg && tg->closed != active_[w]) return;
+    from[w] = tg ? tg->tau : span;
+    ++unproven_.count;
+    unproven_.excess = std::max(unproven_.excess, tg ? tg->excess : 0.0);
+    ++res_.stats.tangencies;
+    locate_events(s, span, from);
+}
+
+// The samples up to the piece's end (the one at its end belongs to the next piece, but the last).
+void ExactRun::sample_piece(const PieceSolution& s) {
+    while (next_sample_ < n_samples_) {
+        const double ts = std::min(next_sample_ * dt_out_, p_.t_end);
+        if (ts > t_ + tau_e_ || (ts == t_ + tau_e_ && t_ + tau_e_ < p_.t_end)) break;
+        s.sample(ts - t_, ts, active_, res_.history, o_.energy, ledger_);
+        // A long flight sampled finely is one piece of many samples: watch the stop flag there too.
+        if ((++next_sample_ & 1023) == 0) check_run();
+    }
+}
+
+// The open episodes' impulse and peaks over the piece, and the extremes.
+void ExactRun::grow_episodes(const PieceSolution& s) {
+    for (int c = 0; c < nc_; ++c) {
+        const int e = open_[static_cast<std::size_t>(c)];
+        if (e < 0) continue;
+        ContactEpisode& ep = res_.episodes[static_cast<std::size_t>(e)];
+        const ExpSignal& F = s.contact_force(c);
+        ep.impulse += F.integral(tau_e_);
+        ep.peak_force = maximum_over(F, tau_e_, cs_, &res_.stats.steps, ep.peak_force, 1e-7).value;
+        ep.peak_penetration = maximum_over(s.penetration(c), tau_e_, cs_, &res_.stats.steps, ep.peak_penetration, 1e-7).value;
+    }
+    if (!res_.episodes.empty() && tau_e_ > 0.0) {
+        const bool in_contact = std::find(active_.begin(), active_.end(), true) != active_.end();
+        track_extremes(s, t_, tau_e_, nc_, in_contact, contact_is_watched_, cs_, &res_.stats.steps, res_.extremes);
+    }
+}
+
+// Only a contact set that keeps switching at one instant, with every tangency resolved, comes here
+// 50 times: two contacts whose states decide each other, or one whose damper is so strong for the
+// mesh (a plastic stop: Cc far above the nearest element's critical damping) that the sign of its
+// force at the opening is roundoff. Both are ill-posed.
+void ExactRun::count_zero_length_piece() {
+    if (tau_e_ > cs_.t_tol) {
+        zero_length_run_ = 0;
+        zero_length_contact_ = -1;
+        return;
+    }
+    if (who_ >= 0) zero_length_contact_ = zero_length_run_ == 0 || zero_length_contact_ == who_ ? who_ : -2;
+    if (++zero_length_run_ > 50) throw EndlessSwitching(endless_switching_message(p_, zero_length_contact_, who_, t_));
+}
+
+// Contact who_ switches at t_ (its new state holds from the next piece on).
+void ExactRun::switch_contact(const PieceSolution& s) {
+    last_switch_ = who_;
+    last_switch_t_ = t_;
+    ++res_.stats.events;
+    const double v_contact = s.contact_velocity(who_).value(tau_e_);
+    const std::size_t w = static_cast<std::size_t>(who_);
+    // A damped contact opens (F = 0) while still compressed (d > 0): the massless Kelvin-Voigt
+    // element then relaxes through its damper, so its spring energy is booked as contact
+    // dissipation; a closing at d > 0 books it back (docs/model.md).
+    const double d_switch = std::max(0.0, s.penetration(who_).value(tau_e_));
+    const double stored = 0.5 * p_.contacts[w].stiffness * d_switch * d_switch;
+    ledger_.contact_dissipated += active_[w] ? stored : -stored;
+    if (active_[w]) {
+        ContactEpisode& ep = res_.episodes[static_cast<std::size_t>(open_[w])];
+        ep.t_off = t_;
+        ep.v_out = v_contact;
+        open_[w] = -1;
+    } else {
+        open_episode(who_, t_, v_contact);
+    }
+    active_[w] = !active_[w];
+}
+
+bool ExactRun::advance() {
+    check_run();
+    if (++pieces_ > o_.max_events) {
+        throw WorkLimitReached("more than solver.max_events = " + std::to_string(o_.max_events) +
+                               " contact switches and load breakpoints before the horizon (at t = " +
+                               std::to_string(t_ * 1e6) + " us; raise solver.max_events or shorten solver.horizon)");
+    }
+    const double end = piece_end();
+    const auto t_piece = Clock::now();
+    const double dec_before = model_.decomposition_seconds();
+    const PieceSolution& s = piece_at(model_, p_, active_, x_, t_, end);
+    res_.stats.propagation_s += seconds_since(t_piece) - (model_.decomposition_seconds() - dec_before);
+    const double span = end - t_;
+    if (resting(s, end)) {
+        finish_at_rest(s, span);
+        return false;
+    }
+    // Roots to a few ulps of the absolute time (and of the piece's own clock): far below the 1e-10
+    // relative time tolerance required, whatever the first free period (a single mass on a weak
+    // spring has one of minutes).
+    cs_.t_tol = 4.0 * std::numeric_limits<double>::epsilon() * (t_ + span);
+
+    const auto t_ev = Clock::now();
+    // Where the search for each contact starts (after a resolved tangency, past it).
+    std::vector<double> from(static_cast<std::size_t>(nc_), 0.0);
+    locate_events(s, span, from);
+    resolve_repeated_switch(s, span, from);
+    res_.stats.event_location_s += seconds_since(t_ev);
+
+    const auto t_prop = Clock::now();
+    sample_piece(s);
+    grow_episodes(s);
+    if (o_.energy) s.accumulate_dissipation(tau_e_, ledger_);
+    x_ = s.state_at(tau_e_);
+    res_.stats.propagation_s += seconds_since(t_prop);
+    ++res_.stats.steps;
+    t_ += tau_e_;
+    count_zero_length_piece();
+    if (who_ >= 0) switch_contact(s);
+    return true;
+}
+
+// Episodes still open at the horizon, the final ledger, the statistics.
+void ExactRun::finish() {
+    for (int c = 0; c < nc_; ++c) {
+        const int e = open_[static_cast<std::size_t>(c)];
+        if (e < 0) continue;
+        ContactEpisode& ep = res_.episodes[static_cast<std::size_t>(e)];
+        ep.t_off = p_.t_end;
+        ep.closed_at_end = true;
+    }
+    if (o_.energy) {
+        const PieceSolution& last = model_.piece(active_, x_, p_.t_end, p_.t_end);
+        res_.final_energy = last.energy_at(0.0, ledger_);
+    }
+    res_.stats.unproven_steps = unproven_.count;
+    res_.stats.unproven_excess = unproven_.excess;
+    res_.stats.decompositions = model_.decompositions();
+    res_.stats.decomposition_s = base_s_ + model_.decomposition_seconds();
+    std::sort(res_.episodes.begin(), res_.episodes.end(),
+              [](const ContactEpisode& a, const ContactEpisode& b) { return a.t_on < b.t_on; });
+}
+
+TransientResult ExactRun::run() {
+    start();
+    while (t_ < p_.t_end && advance()) {
+    }
+    finish();
+    return std::move(res_);
+}
+
 }  // namespace
 
 TransientResult solve_exact(const PiecewiseLinearProblem& p, const TransientOptions& o, const ExactOptions& settings) {
     if (p.size() == 0) throw std::runtime_error("transient: the model has no free bending DOF");
     if (!(p.t_end > 0.0)) throw std::runtime_error("transient: the horizon must be positive");
-    TransientResult res;
-    res.stats.method = "exact";
-    res.t_end = p.t_end;
-    // Decomposition time: the base modes here, each contact state inside the model (on first use).
-    const auto t_base = Clock::now();
-    ExactModel model(p, o.energy, settings.state_cache_bytes);
-    const double base_s = seconds_since(t_base);
-
-    const int nc = static_cast<int>(p.contacts.size());
-    const double period1 = 2.0 * std::numbers::pi / model.base().omega[0];
-    CrossingSearch cs;
-    cs.h_min = settings.h_min_periods * period1;
-    long steps_left = o.max_steps;
-    cs.budget = &steps_left;
-
-    std::vector<bool> active = p.active0;
-    if (active.size() != p.contacts.size()) active.assign(p.contacts.size(), false);
-    Eigen::VectorXd x = model.initial_state(p.q0, p.v0);
-
-    const bool contact_is_watched = nc > 0 && p.contacts.front().dof == p.watched_dof;
-    res.extremes.watched_max = res.extremes.contact_max = -std::numeric_limits<double>::infinity();
-    res.extremes.watched_min = std::numeric_limits<double>::infinity();
-    std::vector<int> open(static_cast<std::size_t>(nc), -1);
-    auto open_episode = [&](int c, double t, double v_in) {
-        ContactEpisode e;
-        e.support = c;
-        e.t_on = t;
-        e.v_in = v_in;
-        open[static_cast<std::size_t>(c)] = static_cast<int>(res.episodes.size());
-        res.episodes.push_back(e);
-    };
-
-    std::vector<double> breaks;
-    for (const LoadTerm& l : p.loads) {
-        for (double b : l.time.breakpoints(0.0, p.t_end)) breaks.push_back(b);
-    }
-    std::sort(breaks.begin(), breaks.end());
-
-    const double dt_out = p.output_step > 0 ? p.output_step : p.t_end / 2000.0;
-    const long n_samples = o.history ? static_cast<long>(std::floor(p.t_end / dt_out * (1 + 1e-12))) + 1 : 0;
-    long next_sample = 0;
-    EnergyLedger ledger;
-    int zero_length_run = 0;
-    int zero_length_support = -1;  // the one support switching in that run, or -2 for several
-    UnprovenSteps unproven;
-    double t = 0.0;
-    long pieces = 0;
-    double largest_motion = 0.0;
-    std::vector<double> penetration_scale(static_cast<std::size_t>(nc), 0.0);
-    int last_switch = -1;       // the contact that switched last, and when
-    double last_switch_t = -1.0;
-
-    {
-        const PieceSolution& first = piece_at(model, p, active, x, 0.0, p.t_end);
-        for (int c = 0; c < nc; ++c) {
-            if (active[static_cast<std::size_t>(c)]) open_episode(c, 0.0, first.contact_velocity(c).value(0.0));
-        }
-        if (o.energy) res.initial_energy = first.energy_at(0.0, ledger);
-    }
-
-    while (t < p.t_end) {
-        check_run();
-        if (++pieces > o.max_events) {
-            throw WorkLimitReached("more than solver.max_events = " + std::to_string(o.max_events) +
-                                   " contact switches and load breakpoints before the horizon (at t = " +
-                                   std::to_string(t * 1e6) + " us; raise solver.max_events or shorten solver.horizon)");
-        }
-        const auto bit = std::upper_bound(breaks.begin(), breaks.end(), t * (1 + 1e-15));
-        const double piece_end = bit == breaks.end() ? p.t_end : std::min(p.t_end, *bit);
-        const auto t_piece = Clock::now();
-        const double dec_before = model.decomposition_seconds();
-        const PieceSolution& s = piece_at(model, p, active, x, t, piece_end);
-        res.stats.propagation_s += seconds_since(t_piece) - (model.decomposition_seconds() - dec_before);
-        const double span = piece_end - t;
-        // At rest: with nothing left to change the forcing, a motion whose energy about this piece's
-        // equilibrium is below roundoff of the largest motion seen (amplitude 1e-15) has nothing left
-        // to do but decay. Searching on would only chase contact switches at roundoff (a zero-gap
-        // support, where the equilibrium lies on the switching surface, after a few thousand periods);
-        // the rest of the horizon is this piece, sampled, and the summary says from when.
-        // A closed contact whose equilibrium force is at roundoff (the equilibrium on its switching
-        // surface) is not resting on it: the roundoff switch that opens it comes next, and the rest
-        // is declared in the open state, so that a beam merely touching a zero-gap support at rest
-        // does not count as lasting contact.
-        bool firm = true;
-        for (int c = 0; c < nc; ++c) {
-            const ExpSignal& d = s.penetration(c);
-            auto& scale = penetration_scale[static_cast<std::size_t>(c)];
-            scale = std::max(scale, d.bound(0.0, 0.0, 0));
-            if (active[static_cast<std::size_t>(c)] && constant_part(d) <= kFirmPenetration * scale) firm = false;
-        }
-        if (const double motion = s.motion_energy(); motion >= 0.0) {
-            largest_motion = std::max(largest_motion, motion);
-            if (firm && piece_end == p.t_end && motion <= kRestEnergy * largest_motion) {
-                while (next_sample < n_samples) {
-                    const double ts = std::min(next_sample * dt_out, p.t_end);
-                    s.sample(ts - t, ts, active, res.history, o.energy, ledger);
-                    if ((++next_sample & 1023) == 0) check_run();
-                }
-                if (o.energy) s.accumulate_dissipation(span, ledger);
-                x = s.state_at(span);
-                res.stats.at_rest_from = t;
-                t = p.t_end;
-                break;
-            }
-        }
-        // Roots to a few ulps of the absolute time (and of the piece's own clock): far below the 1e-10
-        // relative time tolerance required, whatever the first free period (a single mass on a weak
-        // spring has one of minutes).
-        cs.t_tol = 4.0 * std::numeric_limits<double>::epsilon() * (t + span);
-
-        const auto t_ev = Clock::now();
-        double tau_e = span;
-        int who = -1;
-        // `from[c]`: where the search for contact c starts (after a resolved tangency, past it).
-        std::vector<double> from(static_cast<std::size_t>(nc), 0.0);
-        const auto locate_events = [&]() {
-            tau_e = span;
-            who = -1;
-            for (int c = 0; c < nc; ++c) {
-                const double tau0 = std::min(from[static_cast<std::size_t>(c)], tau_e);
-                const auto hit = first_upcrossing(s.event_function(c), tau0, tau_e, cs, &res.stats.steps, &unproven);
-                if (hit && *hit <= tau_e) {
-                    tau_e = *hit;
-                    who = c;
-                }
-                if (s.waits_for_release(c)) {
-                    // d reaching 0 only changes which function is watched: the piece ends, the state stays.
-                    const auto out =
-                        first_upcrossing(s.release_function(c), tau0, tau_e, cs, &res.stats.steps, &unproven);
-                    if (out && *out < tau_e) {
-                        tau_e = *out;
-                        who = -1;
-                    }
-                }
-            }
-        };
-        locate_events();
-        if (who >= 0 && who == last_switch && t == last_switch_t && tau_e <= cs.t_tol) {
-            const std::size_t w = static_cast<std::size_t>(who);
-            const auto tg = resolve_tangency(s.contact_force(who), s.penetration(who), span, cs.h_min, cs.budget);
-            const bool keep = !tg || tg->closed == active[w];
-            if (keep) {
-                // The state just entered is the consistent one: search again from past the tangency.
-                from[w] = tg ? tg->tau : span;
-                ++unproven.count;
-                unproven.excess = std::max(unproven.excess, tg ? tg->excess : 0.0);
-                ++res.stats.tangencies;
-                locate_events();
-            }
-        }
-        res.stats.event_location_s += seconds_since(t_ev);
-
-        const auto t_prop = Clock::now();
-        while (next_sample < n_samples) {
-            const double ts = std::min(next_sample * dt_out, p.t_end);
-            if (ts > t + tau_e || (ts == t + tau_e && t + tau_e < p.t_end)) break;
-            s.sample(ts - t, ts, active, res.history, o.energy, ledger);
-            // A long flight sampled finely is one piece of many samples: watch the stop flag there too.
-            if ((++next_sample & 1023) == 0) check_run();
-        }
-        for (int c = 0; c < nc; ++c) {
-            const int e = open[static_cast<std::size_t>(c)];
-            if (e < 0) continue;
-            ContactEpisode& ep = res.episodes[static_cast<std::size_t>(e)];
-            const ExpSignal& F = s.contact_force(c);
-            ep.impulse += F.integral(tau_e);
-            ep.peak_force = maximum_over(F, tau_e, cs, &res.stats.steps, ep.peak_force, 1e-7).value;
-            ep.peak_penetration =
-                maximum_over(s.penetration(c), tau_e, cs, &res.stats.steps, ep.peak_penetration, 1e-7).value;
-        }
-        if (!res.episodes.empty() && tau_e > 0.0) {
-            const bool in_contact = std::find(active.begin(), active.end(), true) != active.end();
-            track_extremes(s, t, tau_e, nc, in_contact, contact_is_watched, cs, &res.stats.steps, res.extremes);
-        }
-        if (o.energy) s.accumulate_dissipation(tau_e, ledger);
-        x = s.state_at(tau_e);
-        res.stats.propagation_s += seconds_since(t_prop);
-        ++res.stats.steps;
-        t += tau_e;
-        if (tau_e <= cs.t_tol) {
-            // Only a contact set that keeps switching at one instant, with every tangency resolved,
-            // comes here 50 times: two contacts whose states decide each other, or one whose damper
-            // is so strong for the mesh (a plastic stop: Cc far above the nearest element's critical
-            // damping) that the sign of its force at the opening is roundoff. Both are ill-posed.
-            if (who >= 0) zero_length_support = zero_length_run == 0 || zero_length_support == who ? who : -2;
-            if (++zero_length_run > 50) throw EndlessSwitching(endless_switching_message(p, zero_length_support, who, t));
-        } else {
-            zero_length_run = 0;
-            zero_length_support = -1;
-            zero_length_run = 0;
-        }
-        if (who >= 0) {
-            last_switch = who;
-            last_switch_t = t;
-            ++res.stats.events;
-            const double v_contact = s.contact_velocity(who).value(tau_e);
-            const std::size_t w = static_cast<std::size_t>(who);
-            // A damped contact opens (F = 0) while still compressed (d > 0): the massless Kelvin-Voigt
-            // element then relaxes through its damper, so its spring energy is booked as contact
-            // dissipation; a closing at d > 0 books it back (docs/model.md).
-            const double d_switch = std::max(0.0, s.penetration(who).value(tau_e));
-            const double stored = 0.5 * p.contacts[w].stiffness * d_switch * d_switch;
-            ledger.contact_dissipated += active[w] ? stored : -stored;
-            if (active[w]) {
-                ContactEpisode& ep = res.episodes[static_cast<std::size_t>(open[w])];
-                ep.t_off = t;
-                ep.v_out = v_contact;
-                open[w] = -1;
-            } else {
-                open_episode(who, t, v_contact);
-            }
-            active[w] = !active[w];
-        }
-    }
-    for (int c = 0; c < nc; ++c) {
-        const int e = open[static_cast<std::size_t>(c)];
-        if (e < 0) continue;
-        ContactEpisode& ep = res.episodes[static_cast<std::size_t>(e)];
-        ep.t_off = p.t_end;
-        ep.closed_at_end = true;
-    }
-    if (o.energy) {
-        const PieceSolution& last = model.piece(active, x, p.t_end, p.t_end);
-        res.final_energy = last.energy_at(0.0, ledger);
-    }
-    res.stats.unproven_steps = unproven.count;
-    res.stats.unproven_excess = unproven.excess;
-    res.stats.decompositions = model.decompositions();
-    res.stats.decomposition_s = base_s + model.decomposition_seconds();
-    std::sort(res.episodes.begin(), res.episodes.end(),
-              [](const ContactEpisode& a, const ContactEpisode& b) { return a.t_on < b.t_on; });
-    return res;
+    return ExactRun(p, o, settings).run();
 }
 
 TransientResult solve_exact(const TransientProblem& p, const TransientOptions& o, const ExactOptions& settings) {

@@ -57,6 +57,155 @@ struct Part {
     std::atomic<long long> cpu_us{0};
 };
 
+// The parts of the study, each reported when its last job ends.
+enum PartId { typical, forces, scans, prestress, modes, part_count };
+struct Parts : std::array<Part, part_count> {
+    Parts() {
+        (*this)[typical].name = "Fig. 3 transient";
+        (*this)[forces].name = "Fig. 11 impact forces";
+        (*this)[scans].name = "Figs. 4, 5, 10 support-position transients";
+        (*this)[prestress].name = "Fig. 9 prestress transients";
+        (*this)[modes].name = "Figs. 6-8 supported modes";
+    }
+};
+
+struct Job {
+    PartId part;
+    std::function<void()> run;
+};
+
+// What a job that must not fail said (the scans keep each point's error in the point).
+struct JobErrors {
+    std::string typical;
+    std::vector<std::string> forces;
+};
+
+// The study's points before any run: each transient scan's positions (moving: the free-impact case
+// with its support's damper fixed), the prestress values, the modal positions, the force slots.
+void lay_out_points(PaperStudy& st, const Case& moving, const std::vector<double>& positions) {
+    const PaperStudyOptions& options = st.options;
+    for (int m : options.meshes) {
+        Case base = moving;
+        base.beam.elements = m;
+        TransientScan scan;
+        scan.elements = m;
+        scan.omega1 = first_omega(base);
+        scan.horizon = options.position_horizon;
+        for (double x : positions) {
+            TransientPoint pt;
+            pt.x = x;
+            scan.points.push_back(pt);
+        }
+        st.position_scans.push_back(std::move(scan));
+    }
+    st.prestress.elements = options.cases.prestress.beam.elements;
+    st.prestress.omega1 = first_omega(options.cases.prestress);
+    st.prestress.horizon = options.cases.prestress.solver.horizon;
+    for (int i = 0; i < options.prestress_points; ++i) {
+        TransientPoint pt;
+        pt.x = options.prestress_max * i / (options.prestress_points - 1);
+        st.prestress.points.push_back(pt);
+    }
+    for (int i = 1; i <= options.modal_positions; ++i) {
+        ModalPoint pt;
+        pt.x0 = static_cast<double>(i) / options.modal_positions;
+        st.modal.push_back(pt);
+    }
+    st.forces.resize(options.force_positions.size());
+}
+
+// Every transient of every figure, the longest first so that no thread is left with a long run at
+// the end. Each job writes only its own slot of st.
+std::vector<Job> transient_jobs(PaperStudy& st, const Case& moving, const std::vector<double>& positions, JobErrors& errors) {
+    const PaperStudyOptions& options = st.options;
+    std::vector<Job> jobs;
+    jobs.push_back({typical, [&] {
+                        try {
+                            st.typical = run_typical_transient(options.cases.free_impact);
+                        } catch (const std::exception& e) {
+                            errors.typical = e.what();
+                        }
+                    }});
+    for (std::size_t i = 0; i < options.force_positions.size(); ++i) {
+        jobs.push_back({forces, [&, i] {
+                            try {
+                                st.forces[i] = run_impact_force(moving, options.force_positions[i]);
+                            } catch (const std::exception& e) {
+                                errors.forces[i] = e.what();
+                            }
+                        }});
+    }
+    for (std::size_t s = 0; s < st.position_scans.size(); ++s) {
+        for (std::size_t i = 0; i < positions.size(); ++i) {
+            jobs.push_back({scans, [&, s, i] {
+                                Case c = moving;
+                                c.beam.elements = st.position_scans[s].elements;
+                                c.solver.horizon = st.position_scans[s].horizon;
+                                c.supports.front().position = positions[i];
+                                st.position_scans[s].points[i] = run_transient_point(c, positions[i]);
+                            }});
+        }
+    }
+    for (std::size_t i = 0; i < st.prestress.points.size(); ++i) {
+        jobs.push_back({prestress, [&, i] {
+                            Case c = options.cases.prestress;
+                            const double d = st.prestress.points[i].x;
+                            c.supports.front().surface = d * c.beam.length;
+                            c.supports.front().surface_key = "prestress";
+                            st.prestress.points[i] = run_transient_point(c, d);
+                        }});
+    }
+    return jobs;
+}
+
+// The modal jobs: the ratio peak (bracketed on a coarse grid, then refined) and each modal position.
+void add_modal_jobs(std::vector<Job>& jobs, PaperStudy& st, const std::vector<double>& free_omega) {
+    const PaperStudyOptions& options = st.options;
+    jobs.push_back({modes, [&] {
+                        const double w1 = free_omega.at(0);
+                        double best = 0.05, best_ratio = 0.0;
+                        for (int i = 1; i <= 20; ++i) {
+                            const double x = 0.05 * i;
+                            const double r = pinned_first_omega(options.cases.cantilever, x) / w1;
+                            if (r > best_ratio) {
+                                best_ratio = r;
+                                best = x;
+                            }
+                        }
+                        st.ratio_peak = find_ratio_peak(options.cases.cantilever, w1, best - 0.05, std::min(1.0, best + 0.05));
+                        st.pinned_tip_omega1 = pinned_first_omega(options.cases.free_impact, 1.0);
+                    }});
+    for (std::size_t i = 0; i < st.modal.size(); ++i) {
+        jobs.push_back({modes, [&, i] {
+                            st.modal[i] = run_modal_point(options.cases.cantilever, st.modal[i].x0, options.modes, free_omega);
+                        }});
+    }
+}
+
+// Runs the jobs on `threads` threads, each part's CPU time summed and its line reported as it ends.
+void run_jobs(const std::vector<Job>& jobs, Parts& parts, int threads, const PaperStudyOptions& options,
+              Clock::time_point t_start) {
+    for (const Job& j : jobs) ++parts[j.part].left;
+    std::mutex report_mutex;
+    auto report = [&](const std::string& line) {
+        if (!options.progress) return;
+        const std::lock_guard<std::mutex> lock(report_mutex);
+        options.progress(line);
+    };
+    parallel_for(jobs.size(), threads, [&](std::size_t k) {
+        const double start = thread_cpu_seconds();
+        jobs[k].run();
+        Part& p = parts[jobs[k].part];
+        p.cpu_us += static_cast<long long>(1e6 * (thread_cpu_seconds() - start));
+        if (--p.left == 0) {
+            char buf[160];
+            std::snprintf(buf, sizeof buf, "%s: done (%.2f s of CPU), %.2f s since start", p.name.c_str(), p.cpu_us.load() * 1e-6,
+                          seconds_since(t_start));
+            report(buf);
+        }
+    });
+}
+
 }  // namespace
 
 std::vector<double> scan_positions(int count, double lo) {
@@ -93,130 +242,18 @@ PaperStudy run_paper_study(const PaperStudyOptions& options) {
     const double setup_s = seconds_since(t0);
 
     const std::vector<double> positions = scan_positions(options.positions, options.position_min);
-    for (int m : options.meshes) {
-        Case base = moving;
-        base.beam.elements = m;
-        TransientScan scan;
-        scan.elements = m;
-        scan.omega1 = first_omega(base);
-        scan.horizon = options.position_horizon;
-        for (double x : positions) {
-            TransientPoint pt;
-            pt.x = x;
-            scan.points.push_back(pt);
-        }
-        st.position_scans.push_back(std::move(scan));
-    }
-    st.prestress.elements = cases.prestress.beam.elements;
-    st.prestress.omega1 = first_omega(cases.prestress);
-    st.prestress.horizon = cases.prestress.solver.horizon;
-    for (int i = 0; i < options.prestress_points; ++i) {
-        TransientPoint pt;
-        pt.x = options.prestress_max * i / (options.prestress_points - 1);
-        st.prestress.points.push_back(pt);
-    }
-    for (int i = 1; i <= options.modal_positions; ++i) {
-        ModalPoint pt;
-        pt.x0 = static_cast<double>(i) / options.modal_positions;
-        st.modal.push_back(pt);
-    }
-    st.forces.resize(options.force_positions.size());
-
-    // Every run of every figure in one batch, the longest first so that no thread is left with a
-    // long run at the end.
-    enum PartId { typical, forces, scans, prestress, modes, part_count };
-    std::array<Part, part_count> parts;
-    parts[typical].name = "Fig. 3 transient";
-    parts[forces].name = "Fig. 11 impact forces";
-    parts[scans].name = "Figs. 4, 5, 10 support-position transients";
-    parts[prestress].name = "Fig. 9 prestress transients";
-    parts[modes].name = "Figs. 6-8 supported modes";
-    struct Job {
-        PartId part;
-        std::function<void()> run;
-    };
-    std::vector<Job> jobs;
-    std::string typical_error;
-    jobs.push_back({typical, [&] {
-                        try {
-                            st.typical = run_typical_transient(cases.free_impact);
-                        } catch (const std::exception& e) {
-                            typical_error = e.what();
-                        }
-                    }});
-    std::vector<std::string> force_errors(options.force_positions.size());
-    for (std::size_t i = 0; i < options.force_positions.size(); ++i) {
-        jobs.push_back({forces, [&, i] {
-                            try {
-                                st.forces[i] = run_impact_force(moving, options.force_positions[i]);
-                            } catch (const std::exception& e) {
-                                force_errors[i] = e.what();
-                            }
-                        }});
-    }
-    for (std::size_t s = 0; s < st.position_scans.size(); ++s) {
-        for (std::size_t i = 0; i < positions.size(); ++i) {
-            jobs.push_back({scans, [&, s, i] {
-                                Case c = moving;
-                                c.beam.elements = st.position_scans[s].elements;
-                                c.solver.horizon = st.position_scans[s].horizon;
-                                c.supports.front().position = positions[i];
-                                st.position_scans[s].points[i] = run_transient_point(c, positions[i]);
-                            }});
-        }
-    }
-    for (std::size_t i = 0; i < st.prestress.points.size(); ++i) {
-        jobs.push_back({prestress, [&, i] {
-                            Case c = cases.prestress;
-                            const double d = st.prestress.points[i].x;
-                            c.supports.front().surface = d * c.beam.length;
-                            c.supports.front().surface_key = "prestress";
-                            st.prestress.points[i] = run_transient_point(c, d);
-                        }});
-    }
-    jobs.push_back({modes, [&] {
-                        // Bracket the largest first-frequency ratio on a coarse grid, then refine.
-                        const double w1 = free_omega.at(0);
-                        double best = 0.05, best_ratio = 0.0;
-                        for (int i = 1; i <= 20; ++i) {
-                            const double x = 0.05 * i;
-                            const double r = pinned_first_omega(cases.cantilever, x) / w1;
-                            if (r > best_ratio) {
-                                best_ratio = r;
-                                best = x;
-                            }
-                        }
-                        st.ratio_peak = find_ratio_peak(cases.cantilever, w1, best - 0.05, std::min(1.0, best + 0.05));
-                        st.pinned_tip_omega1 = pinned_first_omega(cases.free_impact, 1.0);
-                    }});
-    for (std::size_t i = 0; i < st.modal.size(); ++i) {
-        jobs.push_back({modes, [&, i] { st.modal[i] = run_modal_point(cases.cantilever, st.modal[i].x0, options.modes, free_omega); }});
-    }
-    for (const Job& j : jobs) ++parts[j.part].left;
-
-    std::mutex report_mutex;
-    auto report = [&](const std::string& line) {
-        if (!options.progress) return;
-        const std::lock_guard<std::mutex> lock(report_mutex);
-        options.progress(line);
-    };
+    lay_out_points(st, moving, positions);
+    Parts parts;
+    JobErrors errors;
+    errors.forces.resize(options.force_positions.size());
+    std::vector<Job> jobs = transient_jobs(st, moving, positions, errors);
+    add_modal_jobs(jobs, st, free_omega);
     const int threads = resolve_thread_count(options.threads);
-    parallel_for(jobs.size(), threads, [&](std::size_t k) {
-        const double start = thread_cpu_seconds();
-        jobs[k].run();
-        Part& p = parts[jobs[k].part];
-        p.cpu_us += static_cast<long long>(1e6 * (thread_cpu_seconds() - start));
-        if (--p.left == 0) {
-            char buf[160];
-            std::snprintf(buf, sizeof buf, "%s: done (%.2f s of CPU), %.2f s since start", p.name.c_str(), p.cpu_us.load() * 1e-6,
-                          seconds_since(t_start));
-            report(buf);
-        }
-    });
-    if (!typical_error.empty()) throw std::runtime_error("Fig. 3 transient: " + typical_error);
-    for (std::size_t i = 0; i < force_errors.size(); ++i) {
-        if (!force_errors[i].empty()) {
-            throw std::runtime_error("Fig. 11 impact at x0/l = " + std::to_string(options.force_positions[i]) + ": " + force_errors[i]);
+    run_jobs(jobs, parts, threads, options, t_start);
+    if (!errors.typical.empty()) throw std::runtime_error("Fig. 3 transient: " + errors.typical);
+    for (std::size_t i = 0; i < errors.forces.size(); ++i) {
+        if (!errors.forces[i].empty()) {
+            throw std::runtime_error("Fig. 11 impact at x0/l = " + std::to_string(options.force_positions[i]) + ": " + errors.forces[i]);
         }
     }
 
