@@ -195,7 +195,7 @@ int run_optimize(const OptimizeCommandOptions& opt) {
     const auto t0 = std::chrono::steady_clock::now();
     try {
         r = optimize_design(p, o);
-        const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const double wall_s = seconds_since(t0);
         j = result_json(p, r, command_text(opt, p));
         j["run"] = run_json(r, wall_s);
         OutputFiles files;

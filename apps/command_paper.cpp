@@ -89,7 +89,7 @@ CommandBody add_paper_command(CLI::App& app) {
     return [opt]() {
         using Clock = std::chrono::steady_clock;
         const auto t0 = Clock::now();
-        auto elapsed = [t0]() { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+        auto elapsed = [t0]() { return seconds_since(t0); };
         auto progress = [opt, elapsed](const std::string& line) {
             if (!opt->quiet) std::fprintf(stderr, "paper: [%5.1f s] %s\n", elapsed(), line.c_str());
         };
@@ -131,7 +131,7 @@ CommandBody add_paper_command(CLI::App& app) {
         if (opt->prestress_points != 26) run.command += " --prestress-points " + std::to_string(opt->prestress_points);
         if (opt->scan_horizon != "500 us") run.command += " --scan-horizon '" + opt->scan_horizon + "'";
         if (!opt->examples.empty()) run.command += " --examples " + opt->examples;
-        run.figures_s = std::chrono::duration<double>(Clock::now() - f0).count();
+        run.figures_s = seconds_since(f0);
         progress("figures drawn (" + std::to_string(figures.size()) + " with gnuplot)");
         run.total_s = elapsed();
         const OutputFiles files = paper_output_files(study, claims, figures, rendered, run);

@@ -13,15 +13,14 @@
 #include "model/run_control.hpp"
 #include "report/transient_output.hpp"
 #include "stop_signals.hpp"
+#include "model/number_format.hpp"
 
 namespace vi::cli {
 namespace {
 
 std::string us(const std::optional<double>& v) {
     if (!v) return "n/a";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.4f us", *v * 1e6);
-    return buf;
+    return decimals(*v * 1e6, 4) + " us";
 }
 
 void print_switching(const SwitchingLedger& l) {

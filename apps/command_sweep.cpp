@@ -230,7 +230,7 @@ int run_sweep(const SweepCommandOptions& o) {
         info.fingerprint = plan.fingerprint;
         info.threads = threads;
         info.processes = ranks->size();
-        info.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        info.wall_s = seconds_since(t0);
         int finished = kExitOk;
         code = attempt([&] { finished = finish_on_root(o, plan, *store, info); }, message);
         if (code != kExitOk) {

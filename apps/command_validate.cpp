@@ -48,9 +48,7 @@ CommandBody add_validate_command(CLI::App& app) {
         vo.example = read_case_file(opt->example);
         vo.example_path = opt->example;
         const auto t0 = std::chrono::steady_clock::now();
-        auto elapsed = [t0]() {
-            return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        };
+        auto elapsed = [t0]() { return seconds_since(t0); };
         if (!opt->quiet) {
             vo.progress = [elapsed](const std::string& line) {
                 std::fprintf(stderr, "validate: [%6.1f s] %s\n", elapsed(), line.c_str());

@@ -5,17 +5,14 @@
 #include <cstdio>
 
 #include "io/csv_writer.hpp"
+#include "model/number_format.hpp"
 
 namespace vi::cli {
 namespace {
 
 nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
-std::string format(const char* f, double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, v);
-    return buf;
-}
+std::string format(const char* f, double v) { return formatted(f, v); }
 
 // "low" or "high" when the estimate sits on a bound (within 1e-6 of the parameter's scale), else "".
 std::string at_bound(const FitParameter& p, double x) {

@@ -12,17 +12,14 @@
 #include "io/text_file.hpp"
 #include "model/input_error.hpp"
 #include "sweep/identity.hpp"
+#include "model/number_format.hpp"
 
 namespace vi {
 namespace {
 
 constexpr std::string_view kMagic = "# vibroimpact optimize journal 1";
 
-std::string exact(double v) {
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
+std::string exact(double v) { return significant(v, 17); }
 
 std::string cell(const std::optional<double>& v) { return v ? round_trip_text(*v) : ""; }
 

@@ -10,6 +10,8 @@
 #include <map>
 #include <stdexcept>
 
+#include "model/run_control.hpp"
+
 namespace vi {
 namespace {
 
@@ -314,11 +316,11 @@ public:
                 throw std::logic_error("optimize: the look-ahead left the search's path");
             }
             batch = std::move(ahead.guesses);
-            replay_s_ += std::chrono::duration<double>(Clock::now() - t0).count();
+            replay_s_ += seconds_since(t0);
         }
         const auto t1 = Clock::now();
         store_.compute(batch);
-        compute_s_ += std::chrono::duration<double>(Clock::now() - t1).count();
+        compute_s_ += seconds_since(t1);
         if (look_ahead_ && store_.batches() >= 4 && replay_s_ > 0.1 * compute_s_) {
             look_ahead_ = false;
             gave_up_after = store_.batches();

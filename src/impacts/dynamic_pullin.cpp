@@ -11,15 +11,12 @@
 #include "model/input_error.hpp"
 #include "model/run_control.hpp"
 #include "model/run_estimate.hpp"
+#include "model/number_format.hpp"
 
 namespace vi {
 namespace {
 
-std::string volts(double v) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.6g V", v);
-    return buf;
-}
+std::string volts(double v) { return significant(v, 6) + " V"; }
 
 // c with every electrode stepped to `voltage` at t = 0, over `horizon`, the supports removed for the
 // electrode criterion.

@@ -5,14 +5,12 @@
 #include <cstdio>
 #include <numbers>
 
+#include "model/number_format.hpp"
+
 namespace vi {
 namespace {
 
-std::string us_text(double t) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.4g us", t * 1e6);
-    return buf;
-}
+std::string us_text(double t) { return significant(t * 1e6, 4) + " us"; }
 
 // Where g, linear from (t0, a) to (t1, b), reaches the level `level` (a and b on either side of it).
 double crossing(double t0, double a, double t1, double b, double level) {
@@ -89,11 +87,7 @@ VoltageWindow voltage_window(const std::vector<Electrode>& electrodes) {
 
 namespace {
 
-std::string newton_text(double f) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.4g N", f);
-    return buf;
-}
+std::string newton_text(double f) { return significant(f, 4) + " N"; }
 
 // A layer's force over the last period of mode 1 before the horizon (from `from` on, if later) [N]:
 // a beam held down still vibrates, and its layer's force swings about the holding force with it.
@@ -130,11 +124,7 @@ std::optional<StuckBalance> stuck_balance(const TransientResult& r, const std::v
     return std::nullopt;
 }
 
-std::string number_text(double v, const char* unit) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, "%.4g %s", v, unit);
-    return buf;
-}
+std::string number_text(double v, const char* unit) { return significant(v, 4) + " " + unit; }
 
 // The peel balance of a layer that holds the beam (docs/adhesion.md §10).
 std::string layer_reason(const StuckBalance& b, double held_for) {

@@ -113,4 +113,16 @@ bool csv_column_name_ok(std::string_view name) {
     return false;
 }
 
+std::vector<std::string> numbered_columns(std::string_view stem, std::size_t count, std::string_view suffix) {
+    std::vector<std::string> out;
+    for (std::size_t k = 1; k <= count; ++k) {
+        // Built step by step: GCC 12 warns (-Wrestrict) on a chain of + here.
+        std::string name(stem);
+        name += std::to_string(k);
+        name += suffix;
+        out.push_back(std::move(name));
+    }
+    return out;
+}
+
 }  // namespace vi

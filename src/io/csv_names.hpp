@@ -2,8 +2,10 @@
 // Column names of the CSV files: every name ends in its unit ("t_s", "tip_m", "force_un") or is a
 // dimensionless name ("z_max", "tau", "ratio_2", "impacts"); docs/architecture.md, "Output files".
 
+#include <cstddef>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace vi {
 
@@ -26,5 +28,8 @@ std::string csv_unit_suffix(std::string_view unit);
 // a dimensionless name (digits standing for any number: "ratio_#", "tau#", "Y_#_#", "impacts",
 // "z_max", "status", ...; the list is in csv_names.cpp and docs/architecture.md).
 bool csv_column_name_ok(std::string_view name);
+
+// stem + k + suffix for k = 1 .. count: numbered columns ("f", 3, "_hz" -> f1_hz, f2_hz, f3_hz).
+std::vector<std::string> numbered_columns(std::string_view stem, std::size_t count, std::string_view suffix);
 
 }  // namespace vi

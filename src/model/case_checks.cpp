@@ -9,6 +9,7 @@
 #include "model/key_checks.hpp"
 #include "model/magnitude_checks.hpp"
 #include "model/run_estimate.hpp"
+#include "model/number_format.hpp"
 
 namespace vi {
 namespace {
@@ -44,11 +45,7 @@ bool at_fixed_end(const Case& c, double position) {
     return position == 1.0 && c.beam.right != EndCondition::free;
 }
 
-std::string number_text(double v) {
-    std::ostringstream s;
-    s << (v == 0.0 ? 0.0 : v);  // no "-0"
-    return s.str();
-}
+std::string number_text(double v) { return significant(v == 0.0 ? 0.0 : v, 6); }  // no "-0"
 
 // Height of a support's surface in beam coordinates (v, positive up).
 double surface_height(const Support& s) { return s.side == Side::below ? s.surface : -s.surface; }

@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cstdio>
 
+#include "model/number_format.hpp"
+
 namespace vi {
 namespace {
 
@@ -63,9 +65,7 @@ double time_limit_elapsed() { return t_deadline > 0.0 ? now_s() - (t_deadline - 
 void check_run() {
     if (g_stop.load(std::memory_order_relaxed)) throw StopRequested(g_signal.load());
     if (t_deadline > 0.0 && now_s() > t_deadline) {
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "%g", t_seconds);
-        throw TimeLimitReached("timeout: more than " + std::string(buf) + " s of wall time (raise " + t_setting +
+        throw TimeLimitReached("timeout: more than " + significant(t_seconds, 6) + " s of wall time (raise " + t_setting +
                                ")");
     }
 }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "io/csv_reader.hpp"
+#include "model/number_format.hpp"
 
 namespace vi {
 namespace {
@@ -64,9 +65,7 @@ std::string json_string(const std::string& s) {
 // series read from one column line up on x.
 std::string json_number(double v) {
     if (!std::isfinite(v)) return "null";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.7g", v);
-    return buf;
+    return significant(v, 7);
 }
 
 std::string json_numbers(const std::vector<double>& v) {

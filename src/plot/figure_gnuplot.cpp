@@ -21,6 +21,7 @@
 #include "model/parallel_for.hpp"
 #include "io/text_file.hpp"
 #include "model/run_control.hpp"
+#include "model/number_format.hpp"
 
 namespace vi {
 namespace {
@@ -129,9 +130,7 @@ std::string gp_quote(const std::string& s) {
 
 std::string gp_number(double v) {
     if (!std::isfinite(v)) return "NaN";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.10g", v);
-    return buf;
+    return significant(v, 10);
 }
 
 std::optional<std::string> find_gnuplot(const std::string& requested) {

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "io/csv_names.hpp"
 #include "io/csv_writer.hpp"
 
 namespace vi {
@@ -91,12 +92,7 @@ OutputFiles pullin_files(const PullinResult& r) {
     std::size_t count = 0;
     for (const PullinFrequencies& f : r.frequencies) count = std::max(count, f.frequency_hz.size());
     freq.header = {"voltage_v"};
-    for (std::size_t k = 0; k < count; ++k) {
-        std::string name = "f";  // built step by step: GCC 12 warns (-Wrestrict) on "f" + ... + "_hz"
-        name += std::to_string(k + 1);
-        name += "_hz";
-        freq.header.push_back(name);
-    }
+    for (std::string& name : numbered_columns("f", count, "_hz")) freq.header.push_back(std::move(name));
     for (const PullinFrequencies& f : r.frequencies) {
         std::vector<double> row{f.voltage};
         for (std::size_t k = 0; k < count; ++k) row.push_back(k < f.frequency_hz.size() ? f.frequency_hz[k] : std::nan(""));

@@ -8,17 +8,14 @@
 
 #include "forces/force_assembly.hpp"
 #include "model/input_error.hpp"
+#include "model/number_format.hpp"
 
 namespace vi {
 namespace {
 
 using Index = Eigen::Index;
 
-std::string length_text(double v) {
-    std::ostringstream s;
-    s << v << " m";
-    return s.str();
-}
+std::string length_text(double v) { return significant(v, 6) + " m"; }
 
 }  // namespace
 

@@ -3,18 +3,19 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "model/number_format.hpp"
+
 namespace vi {
 
 std::string sweep_identity_text(std::string_view case_text, const SweepGrid& grid, const SweepSettings& settings) {
     std::string t = "vibroimpact sweep identity 1\n";
     // The case text is hashed on its own so that no text inside it can mimic the lines below.
     t += "case " + fingerprint_of(case_text) + " " + std::to_string(case_text.size()) + "\n";
-    char buf[40];
     for (const SweepAxis& a : grid.axes()) {
         t += "set " + a.path.text() + " =";
         for (double v : a.values) {
-            std::snprintf(buf, sizeof buf, " %.17g", v);
-            t += buf;
+            t += ' ';
+            t += significant(v, 17);
         }
         t += "\n";
     }

@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "forces/electrostatic_pad.hpp"
+#include "model/golden_section.hpp"
 
 namespace vi {
 namespace {
@@ -105,28 +106,10 @@ BridgePullin bridge_pullin_shooting(const AxialBeam& b, double gap, double elect
         best = l;
         best_delta = 0.01 * step;
     }
-    // Golden-section search for the largest lambda around the best grid point.
-    double a = best_delta - 0.01, c = best_delta + 0.01;
-    const double phi = (std::sqrt(5.0) - 1) / 2;
-    double x1 = c - phi * (c - a), x2 = a + phi * (c - a);
-    double f1 = lambda_at(x1), f2 = lambda_at(x2);
-    for (int it = 0; it < 50; ++it) {
-        if (f1 > f2) {
-            c = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = c - phi * (c - a);
-            f1 = lambda_at(x1);
-        } else {
-            a = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = a + phi * (c - a);
-            f2 = lambda_at(x2);
-        }
-    }
-    const double delta = 0.5 * (a + c);
-    const double lambda = lambda_at(delta);
+    // The largest lambda around the best grid point.
+    const GoldenSectionPeak peak = golden_section_max(lambda_at, best_delta - 0.01, best_delta + 0.01, 1e-12);
+    const double delta = peak.x;
+    const double lambda = peak.value;
     // lambda = eps0 w_e V^2 l^4 / (2 EI g^3).
     const double l4 = std::pow(b.length, 4);
     return {std::sqrt(2.0 * b.EI * gap * gap * gap * lambda / (kEpsilon0 * electrode_width * l4)), delta};

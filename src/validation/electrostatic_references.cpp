@@ -7,6 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "model/golden_section.hpp"
+
 namespace vi {
 
 std::shared_ptr<const ElectrostaticPad> parallel_plate_pad(double gap, double width, double length, double voltage,
@@ -75,14 +77,8 @@ double cantilever_pullin_lambda_shooting() {
             best_tip = 0.01 * step;
         }
     }
-    // Golden-section search for the largest lambda around the best grid point.
-    double a = best_tip - 0.01, b = best_tip + 0.01;
-    const double phi = (std::sqrt(5.0) - 1) / 2;
-    for (int it = 0; it < 40; ++it) {
-        const double c = b - phi * (b - a), d = a + phi * (b - a);
-        (lambda_at(c) > lambda_at(d) ? b : a) = (lambda_at(c) > lambda_at(d) ? d : c);
-    }
-    return lambda_at(0.5 * (a + b));
+    // The largest lambda around the best grid point.
+    return golden_section_max(lambda_at, best_tip - 0.01, best_tip + 0.01, 1e-10).value;
 }
 
 }  // namespace vi

@@ -7,6 +7,7 @@
 #include "fem/system.hpp"
 #include "forces/kelvin_voigt_contact.hpp"
 #include "modal/modal_analysis.hpp"
+#include "model/golden_section.hpp"
 
 namespace vi {
 
@@ -78,18 +79,8 @@ std::pair<double, double> first_ratio_peak(int elements) {
     for (double x = 0.02; x <= 1.0 + 1e-12; x += 0.02) {
         if (ratio(x) > ratio(best)) best = x;
     }
-    double a = best - 0.02, b = std::min(1.0, best + 0.02);
-    const double g = (std::sqrt(5.0) - 1) / 2;
-    for (int it = 0; it < 40; ++it) {
-        const double x1 = b - g * (b - a), x2 = a + g * (b - a);
-        if (ratio(x1) > ratio(x2)) {
-            b = x2;
-        } else {
-            a = x1;
-        }
-    }
-    const double x_star = 0.5 * (a + b);
-    return {x_star, ratio(x_star)};
+    const GoldenSectionPeak p = golden_section_max(ratio, best - 0.02, std::min(1.0, best + 0.02), 1e-10);
+    return {p.x, p.value};
 }
 
 }  // namespace vi

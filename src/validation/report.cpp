@@ -10,6 +10,7 @@
 #include "model/run_control.hpp"
 #include "validation/closed_forms.hpp"
 #include "fem/system.hpp"
+#include "model/number_format.hpp"
 
 namespace vi {
 namespace validation_detail {
@@ -21,25 +22,14 @@ double closed_omega(const Case& c, double beta_l) {
 
 double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
-namespace {
-
-std::string printf_string(const char* format, int precision, double v) {
-    if (!std::isfinite(v)) return "n/a";
-    char buf[64];
-    std::snprintf(buf, sizeof buf, format, precision, v);
-    return buf;
-}
-
-}  // namespace
-
-std::string num(double v, int sig) { return printf_string("%.*g", sig, v); }
+std::string num(double v, int sig) { return std::isfinite(v) ? significant(v, sig) : "n/a"; }
 
 std::string err(double v) {
     if (v == 0.0) return "0";
-    return printf_string("%.*e", 1, v);
+    return std::isfinite(v) ? formatted("%.1e", v) : "n/a";
 }
 
-std::string fixed(double v, int decimals) { return printf_string("%.*f", decimals, v); }
+std::string fixed(double v, int places) { return std::isfinite(v) ? decimals(v, places) : "n/a"; }
 
 std::string us(double seconds, int decimals) { return fixed(seconds * 1e6, decimals); }
 

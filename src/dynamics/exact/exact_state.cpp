@@ -156,7 +156,7 @@ const StateData& ExactModel::state(const std::vector<bool>& active) {
     ++decompositions_;
     auto [pos, inserted] = cache_.emplace(active, Cached{std::move(sd), bytes, ++uses_});
     (void)inserted;
-    decomposition_s_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    decomposition_s_ += seconds_since(t0);
     return *pos->second.data;
 }
 

@@ -15,11 +15,7 @@
 namespace vi::claims_detail {
 
 inline std::string pct(double v) {
-    if (v != 0.0 && std::abs(v) < 1e-3) {
-        char buf[32];
-        std::snprintf(buf, sizeof buf, "%.1e %%", 100.0 * v);
-        return buf;
-    }
+    if (v != 0.0 && std::abs(v) < 1e-3) return formatted("%.1e %%", 100.0 * v);
     return decimals(100.0 * v, 1) + " %";
 }
 

@@ -9,6 +9,8 @@
 #include "fem/system.hpp"
 #include "io/text_file.hpp"
 #include "modal/eigen_solver.hpp"
+#include "model/golden_section.hpp"
+#include "model/run_control.hpp"
 
 namespace vi {
 namespace {
@@ -51,7 +53,7 @@ TransientPoint run_transient_point(const Case& c, double x) {
     } catch (const std::exception& e) {
         pt.error = one_line(e.what());
     }
-    pt.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    pt.seconds = seconds_since(t0);
     return pt;
 }
 
@@ -148,28 +150,9 @@ double pinned_first_omega(const Case& c, double x0) {
 }
 
 RatioPeak find_ratio_peak(const Case& c, double omega1_free, double lo, double hi) {
-    auto ratio = [&](double x) { return pinned_first_omega(c, x) / omega1_free; };
-    const double g = (std::sqrt(5.0) - 1.0) / 2.0;
-    double a = lo, b = hi;
-    double x1 = b - g * (b - a), x2 = a + g * (b - a);
-    double f1 = ratio(x1), f2 = ratio(x2);
-    while (b - a > 1e-9) {
-        if (f1 > f2) {
-            b = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = b - g * (b - a);
-            f1 = ratio(x1);
-        } else {
-            a = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = a + g * (b - a);
-            f2 = ratio(x2);
-        }
-    }
-    const double x = 0.5 * (a + b);
-    return {x, ratio(x)};
+    const GoldenSectionPeak p =
+        golden_section_max([&](double x) { return pinned_first_omega(c, x) / omega1_free; }, lo, hi, 1e-9);
+    return {p.x, p.value};
 }
 
 }  // namespace vi

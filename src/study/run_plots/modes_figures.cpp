@@ -11,6 +11,7 @@
 #include "study/run_plots/plot_style.hpp"
 #include "study/run_plots/run_figures.hpp"
 #include "study/run_plots/run_table.hpp"
+#include "model/number_format.hpp"
 
 namespace vi {
 namespace {
@@ -41,10 +42,7 @@ std::vector<ModeFacts> mode_facts(const nlohmann::json& j, const std::string& se
 
 std::string frequency_text(double hz) {
     const DisplayUnit u = display_unit("Hz", std::fabs(hz));
-    std::ostringstream s;
-    s.precision(4);
-    s << hz * u.factor << " " << u.text;
-    return s.str();
+    return significant(hz * u.factor, 4) + " " + u.text;
 }
 
 FigureSpec shapes_figure(const std::string& dir, const std::string& set, const std::vector<ModeFacts>& facts) {

@@ -5,6 +5,7 @@
 #include <optional>
 #include <sstream>
 
+#include "io/csv_names.hpp"
 #include "io/csv_writer.hpp"
 #include "study/switch/switch_study.hpp"
 
@@ -96,12 +97,7 @@ FigureSpec fv_figure(const SwitchStudy& s) {
     std::size_t modes = 0;
     for (const PullinFrequencies& x : r.frequencies) modes = std::max(modes, x.frequency_hz.size());
     t.header = {"voltage_v"};
-    for (std::size_t k = 0; k < modes; ++k) {
-        std::string name = "f";  // built step by step: GCC 12 warns (-Wrestrict) on "f" + ... + "_khz"
-        name += std::to_string(k + 1);
-        name += "_khz";
-        t.header.push_back(name);
-    }
+    for (std::string& name : numbered_columns("f", modes, "_khz")) t.header.push_back(std::move(name));
     for (const PullinFrequencies& x : r.frequencies) {
         std::vector<CsvCell> row{csv_number(x.voltage)};
         for (std::size_t k = 0; k < modes; ++k) {

@@ -1,0 +1,17 @@
+#pragma once
+// Golden-section search: where a unimodal function of one variable is largest on an interval.
+
+#include <functional>
+
+namespace vi {
+
+struct GoldenSectionPeak {
+    double x = 0.0;      // where f is largest (the middle of the last bracket)
+    double value = 0.0;  // f(x)
+};
+
+// The maximum of f over [a, b], f unimodal there: the bracket shrinks by the golden ratio, one new
+// evaluation each time, until it is no wider than `width` (in x's own unit).
+GoldenSectionPeak golden_section_max(const std::function<double(double)>& f, double a, double b, double width);
+
+}  // namespace vi
