@@ -1,7 +1,7 @@
 // Wall time of the cantilever switch's 50 us switching transient at m = 50 (CVODE, full FE model)
 // in vacuum (examples/switch/cantilever_switch.toml) against the same switch in air with the squeeze
 // film (cantilever_switch_air.toml) at 1 atm and lower pressures: the cost of the film, a distributed
-// nonlinear element on 80 % of the beam's DOFs (issue 14 asks for under 1 s).
+// nonlinear element on 80 % of the beam's DOFs (the aim: under 1 s).
 
 #include <benchmark/benchmark.h>
 

@@ -1,4 +1,4 @@
-// Adhesion at a support (issue 14, items 2-5; docs/adhesion.md): the pull-off forces of the DMT and
+// Adhesion at a support (docs/adhesion.md): the pull-off forces of the DMT and
 // JKR models, the release condition of a one-degree-of-freedom adhesive contact (static and
 // transient), the energy ledger through adhesive impacts, the stuck cantilever's detached length,
 // and the case keys with their refusals.

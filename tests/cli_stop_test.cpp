@@ -1,4 +1,4 @@
-// SIGINT and SIGTERM stop `simulate`, `paper` and `validate` within a second (issue 11, item 3):
+// SIGINT and SIGTERM stop `simulate`, `paper` and `validate` within a second:
 // exit 130 / 143, "stopped by ...; nothing written", no output folder or file left behind (and an
 // existing one untouched), gnuplot children ended with the command; a second signal ends even work
 // that cannot see the stop, by the signal itself, while the same signal delivered twice at once

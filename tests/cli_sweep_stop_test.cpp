@@ -1,4 +1,4 @@
-// Stopping and resuming a sweep (issue 11, items 3 and 4) on a grid with one slow point: SIGINT and
+// Stopping and resuming a sweep on a grid with one slow point: SIGINT and
 // SIGTERM end it within a second with 130 / 143, the journal intact (every finished point, its row
 // byte for byte, no torn line), and --resume completes it into the CSV of an uninterrupted run; the
 // same under `mpirun -n 2` (signal to mpirun, and to every rank at once as Slurm's --signal does).
@@ -231,7 +231,7 @@ TEST_F(SweepStop, SigtermStopsWithin1sKeepsTheJournalAndResumesIdentically) {
     expect_intact_then_resume();
 }
 
-// The issue's own words: `timeout -s TERM 5 vibroimpact sweep ...` exits within 6 s with the journal
+// As a user would run it: `timeout -s TERM 5 vibroimpact sweep ...` exits within 6 s with the journal
 // intact (here with a 2 s timeout, the same shape sooner: the slow point runs for about 8 s).
 TEST_F(SweepStop, TimeoutCommandEndsTheSweepWithItsJournal) {
     const std::string timeout = test::find_on_path("timeout");

@@ -97,7 +97,7 @@ StepTrial plate_trial(const Plate& p, double volts, double rtol, double periods)
 TEST(OneDofStep, PullsInAtSqrt27Over32OfTheStaticVoltage) {
     // Below the step pull-in the undamped plate swings to at most g/2 and back, so any contact with
     // the stop at 0.9 g is a pull-in. The bisection stops at a relative width of 1e-7; CVODE at rtol
-    // 1e-10 places the turning point's energy to ~1e-9, so 1e-6 (the bound) has room.
+    // 1e-10 places the turning point's energy to ~1e-9, so the 1e-6 checked below has room.
     const Plate p;
     StepBisectionOptions o;
     o.rel_width = 1e-7;

@@ -1,4 +1,4 @@
-// Fuzz test of the command line (issue 11, item 8): mutants of the example case files (values to
+// Fuzz test of the command line: mutants of the example case files (values to
 // extremes, units swapped, keys removed, duplicated, misspelled, wrong types, truncation, random
 // bytes, extra tables; tests/support/case_mutator.*) each run `vibroimpact simulate MUTANT --out DIR`
 // (every fourth `modes`) in a child process with a wall-clock limit. Every run must end inside the
@@ -55,8 +55,7 @@ const std::vector<std::string> kSources = {"examples/paper/free_impact_tip.toml"
                                            "examples/paper/free_impact_prestress.toml",
                                            "examples/paper/cantilever.toml"};
 
-// Defects a mutant can reach in code this test's author may not change (src/dynamics solver
-// internals, being rewritten under issue 11 items 1-2): each is recognised, counted and printed,
+// Known defects a mutant can reach (in the solvers' internals): each is recognised, counted and printed,
 // never passed silently. Empty: every finding so far was fixed where it arose.
 struct KnownFinding {
     const char* name;

@@ -1,5 +1,5 @@
-// Runs that cannot end, or cannot mean anything, are refused before they start (issue 11, item 5;
-// docs/case-files.md, "Limits"): each refusal exits 2 with one line naming the file, the line and the
+// Runs that cannot end, or cannot mean anything, are refused before they start
+// (docs/case-files.md, "Limits"): each refusal exits 2 with one line naming the file, the line and the
 // key (and the estimate where there is one), and writes nothing.
 
 #include <gtest/gtest.h>

@@ -40,7 +40,7 @@ TEST(ShapePoints, CantileverNodalPointsMatchClosedForm) {
         ASSERT_EQ(exact.size(), fe.size());
         for (std::size_t k = 0; k < fe.size(); ++k) EXPECT_NEAR(fe[k], exact[k], 1e-5) << "mode " << i + 1;
     }
-    // The values the paper and the issue quote.
+    // The values the paper quotes (Table 1 of Ostasevicius et al. 2009).
     EXPECT_NEAR(r.bending[1].features.nodes[0], 0.7834, 1e-4);
     EXPECT_NEAR(r.bending[2].features.nodes[0], 0.5036, 1e-4);
     EXPECT_NEAR(r.bending[2].features.nodes[1], 0.8677, 1e-4);

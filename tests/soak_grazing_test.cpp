@@ -1,4 +1,4 @@
-// Soak test around grazing contact (issue 11, item 8): sweeps of the free-impact example over support
+// Soak test around grazing contact: sweeps of the free-impact example over support
 // position x contact stiffness x small gaps or prestresses (the beam barely reaching, or barely
 // leaving, the support: where chattering and near-tangent events live) x contact damping. The sweep
 // must end within its wall-clock limit with every point "ok": no hang, no "error:" or "timeout:"

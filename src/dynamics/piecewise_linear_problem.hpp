@@ -44,7 +44,7 @@ struct PiecewiseLinearProblem {
     Eigen::VectorXd q0;                // initial displacement [m, rad]
     Eigen::VectorXd v0;                // initial velocity [m/s, rad/s]
     std::vector<bool> active0;         // which contacts are closed at t = 0
-    int watched_dof = -1;                  // DOF of the free end's v (or of the watched point), for output
+    int watched_dof = -1;              // DOF of the watched point's v (free end, mid-span, ...), for output
     double t_end = 0.0;                // horizon [s]
     double output_step = 0.0;          // sampling step of the time history [s]
     [[nodiscard]] int size() const { return static_cast<int>(M.rows()); }

@@ -21,7 +21,7 @@ struct TransientProblem {
     Eigen::VectorXd q0;             // initial displacement [m, rad]
     Eigen::VectorXd v0;             // initial velocity [m/s, rad/s]
     std::vector<int> modes0;        // each element's mode at t = 0 (empty: its initial_mode)
-    int watched_dof = -1;               // DOF of the watched point's v (the free end), for output
+    int watched_dof = -1;           // DOF of the watched point's v (free end, mid-span, ...), for output
     double t_end = 0.0;             // horizon [s]
     double output_step = 0.0;       // sampling step of the time history [s]
     [[nodiscard]] int size() const { return static_cast<int>(M.rows()); }

@@ -6,7 +6,7 @@
 
 namespace vi {
 
-// One stretch of contact of one support (DESIGN.md section 3).
+// One stretch of contact of one contact element (docs/model.md §14).
 struct ContactEpisode {
     int support = 0;              // index of the contact element
     double t_on = 0.0;            // onset [s]
@@ -34,7 +34,7 @@ struct EnergyLedger {
 // Samples at the output step: the time history the CSV holds.
 struct TimeHistory {
     std::vector<double> t;                          // [s]
-    std::vector<double> watched_v, watched_velocity;        // watched point (free end) [m], [m/s]
+    std::vector<double> watched_v, watched_velocity;  // the watched point's v [m] and dv/dt [m/s]
     std::vector<std::vector<double>> contact_v;     // per contact: v at the contact point [m]
     std::vector<std::vector<double>> contact_velocity;  // [m/s]
     std::vector<std::vector<double>> contact_force; // F (0 when open) [N]
@@ -72,12 +72,12 @@ struct SolverStats {
 };
 
 // Exact extremes of the watched point and of the first contact's point after the first contact
-// begins (DESIGN.md section 3: y_max and the deepest deflection), located by root finding.
+// begins (docs/model.md §14: y_max and the deepest deflection), located by root finding.
 struct Extremes {
     bool valid = false;           // false when no contact ever began
-    double watched_max = 0.0;         // largest tip v [m]
-    double watched_max_t = 0.0;       // when [s]
-    double watched_min = 0.0;         // smallest tip v [m]
+    double watched_max = 0.0;     // largest v of the watched point [m]
+    double watched_max_t = 0.0;   // when [s]
+    double watched_min = 0.0;     // smallest v of the watched point [m]
     double watched_min_t = 0.0;
     double contact_max = 0.0;     // largest v at contact 0 [m]
 };

@@ -1,7 +1,8 @@
 #pragma once
-// ForceElement: one physical force acting on a few DOFs of the beam (a contact support, a point
-// load; electrostatic pads, squeeze films and adhesion to come). Solvers, the static solution and
-// the energy ledger see forces only through this interface (docs/architecture.md).
+// ForceElement: one physical force acting on a few DOFs of the beam (a contact support, plain or
+// adhesive, a point load, an electrostatic pad, a dielectric layer, a squeeze film, mid-plane
+// stretching). Solvers, the statics and the energy ledger see forces only through this interface
+// (docs/architecture.md).
 
 #include <memory>
 #include <optional>

@@ -1,5 +1,5 @@
 #pragma once
-// Impact characteristics of a transient (DESIGN.md section 3): episodes grouped into impacts, the
+// Impact characteristics of a transient (docs/model.md §14): episodes grouped into impacts, the
 // periods T, T1, T2, the transient duration T_p, rebound y_max and their dimensionless forms.
 
 #include <optional>

@@ -10,7 +10,7 @@
 
 namespace vi {
 
-// One natural mode with its shape features (DESIGN.md section 3).
+// One natural mode with its shape features (docs/model.md §§8-9).
 struct Mode {
     int number = 0;            // 1-based within its family (bending or axial)
     double omega = 0.0;        // circular frequency [rad/s]

@@ -8,7 +8,7 @@
 
 namespace vi {
 
-// A peak of |v| or |theta|: position x/l and dimensionless amplitude (DESIGN.md section 3):
+// A peak of |v| or |theta|: position x/l and dimensionless amplitude (docs/model.md §9):
 // |v| sqrt(rho A l) for displacement, |theta| l sqrt(rho A l) for rotation, of a mass-normalised shape.
 struct ShapePeak {
     double x = 0.0;

@@ -1,5 +1,5 @@
 #pragma once
-// Pull-in results (dynamics/pullin.hpp) as JSON, a terminal summary and CSV files.
+// Pull-in results (statics/pullin.hpp) as JSON, a terminal summary and CSV files.
 
 #include <nlohmann/json.hpp>
 #include <string>

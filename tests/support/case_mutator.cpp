@@ -8,7 +8,7 @@
 namespace vi::test {
 namespace {
 
-// Values a key may be set to: the extremes of the brief (zero, -1, overflow, subnormal, non-finite),
+// Values a key may be set to: the extremes (zero, -1, overflow, subnormal, non-finite),
 // integers at the ends of int64, and units far off their scale. Strings carry a unit.
 const std::vector<std::string> kValues = {
     "0", "-1", "1e308", "-1e308", "1e-320", "-1e-320", "nan", "inf", "-inf", "-0.0", "0.0",

@@ -51,20 +51,20 @@ void EpisodeRecorder::update_peaks(double t, const double* y) {
 void EpisodeRecorder::update_extremes(double t, const double* y, const std::vector<int>& modes) {
     if (r_.episodes.empty()) return;
     Extremes& ex = r_.extremes;
-    const double tip = sys_.watched(y);
+    const double w = sys_.watched(y);
     if (!ex.valid) {
         ex.valid = true;
         ex.watched_max = ex.contact_max = -std::numeric_limits<double>::infinity();
         ex.watched_min = std::numeric_limits<double>::infinity();
     }
-    if (tip > ex.watched_max) {
-        ex.watched_max = tip;
+    if (w > ex.watched_max) {
+        ex.watched_max = w;
         ex.watched_max_t = t;
     }
     bool in_contact = false;
     for (int e : sys_.contacts()) in_contact = in_contact || modes[static_cast<std::size_t>(e)] == sys_.element(e).contact_mode();
-    if (in_contact && tip < ex.watched_min) {
-        ex.watched_min = tip;
+    if (in_contact && w < ex.watched_min) {
+        ex.watched_min = w;
         ex.watched_min_t = t;
     }
     if (!sys_.contacts().empty()) ex.contact_max = std::max(ex.contact_max, sys_.contact_displacement(0, y));

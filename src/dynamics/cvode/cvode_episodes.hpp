@@ -1,7 +1,7 @@
 #pragma once
 // The CVODE solver's record of contact episodes and extremes: episodes open and close as contact
 // elements switch, peaks and extremes are updated at every return of CVODE. Internal to the CVODE
-// solver (dynamics/cvode_solver.cpp).
+// solver (dynamics/cvode/cvode_solver.cpp).
 
 #include <vector>
 
@@ -21,8 +21,8 @@ public:
     // where dF/dt jumps; this runs at every return of CVODE (each step, root and stop), so all of those
     // are covered.
     void update_peaks(double t, const double* y);
-    // y_max, the deepest tip deflection while a contact is closed and the first contact point's
-    // maximum, after the first onset: local extrema are roots of the velocities (located by CVODE),
+    // y_max, the watched point's deepest deflection while a contact is closed and the first contact
+    // point's maximum, after the first onset: local extrema are roots of the velocities (located by CVODE),
     // values at every return cover the ends.
     void update_extremes(double t, const double* y, const std::vector<int>& modes);
     // Episodes still open at the horizon end there.

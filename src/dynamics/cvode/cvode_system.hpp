@@ -1,7 +1,7 @@
 #pragma once
 // ModalSystem: the first-order form CVODE integrates, in the coordinates of a ModalBasis (right-hand
 // side, the pieces of the Jacobian, root functions, element readings, energy). Internal to the CVODE
-// solver (dynamics/cvode_solver.*).
+// solver (dynamics/cvode/cvode_solver.*).
 
 #include <Eigen/Dense>
 #include <vector>

@@ -48,9 +48,9 @@ SignalMaximum maximum_over(const ExpSignal& f, double tau_end, const CrossingSea
                           cs.budget);
 }
 
-// y_max is sought everywhere after the first onset; the deepest tip deflection only while some
-// contact is closed (docs/model.md §14: "while a contact is closed"); the contact point's maximum only when it is not
-// the tip itself.
+// y_max is sought everywhere after the first onset; the watched point's deepest deflection only
+// while some contact is closed (docs/model.md §14); the contact point's maximum only when it is not
+// the watched point itself.
 void track_extremes(const PieceSolution& s, double t, double tau_e, int nc, bool in_contact, bool contact_is_watched,
                     const CrossingSearch& cs, int* evals, Extremes& ex) {
     // ex starts at watched_max = contact_max = -inf, watched_min = +inf (set by solve_exact).

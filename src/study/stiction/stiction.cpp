@@ -17,7 +17,7 @@ namespace {
 
 // The energy release rate -dU/ds [J/m] of the beam section of c over [0, s], clamped at x = 0 and
 // held at v = -gap, theta = 0 at x = s (flat on the substrate from there on), on `elements` elements
-// (dynamics/layer_hold.hpp). A difference quotient of U would lose digits (the FE energy's rounding
+// (statics/layer_hold.hpp). A difference quotient of U would lose digits (the FE energy's rounding
 // grows with the mesh's condition and is divided by the step).
 double release_rate(const Case& c, double s, double gap, int elements) {
     return peel_release_rate(c, EndCondition::clamped, s, gap, elements).release_rate;
