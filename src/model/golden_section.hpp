@@ -11,7 +11,9 @@ struct GoldenSectionPeak {
 };
 
 // The maximum of f over [a, b], f unimodal there: the bracket shrinks by the golden ratio, one new
-// evaluation each time, until it is no wider than `width` (in x's own unit).
+// evaluation each time, until it is no wider than `width` (in x's own unit). At a smooth peak f is
+// flat to roundoff within about sqrt(machine epsilon) of it, so x is found only to that (relative to
+// the peak's curvature scale) however small the width; the value to roundoff.
 GoldenSectionPeak golden_section_max(const std::function<double(double)>& f, double a, double b, double width);
 
 }  // namespace vi
