@@ -23,11 +23,7 @@ FitParameter parse_fit_parameter(const std::string& text, const Case& c) {
     const std::size_t eq = text.find('=');
     FitParameter p;
     p.setting = text;
-    try {
-        p.path = resolve_case_path(text.substr(0, eq), c);
-    } catch (const InputError& e) {
-        throw fail(e.what());
-    }
+    p.path = resolve_setting_path("--fit", text, c);
     if (is_integer_path(p.path)) throw fail(p.path.text() + " takes whole numbers, which a least-squares fit cannot vary");
     p.start = get_case_value(c, p.path);
     if (eq != std::string::npos) {

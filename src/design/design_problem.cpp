@@ -23,11 +23,7 @@ DesignVariable parse_design_variable(const std::string& text, const Case& c) {
     if (eq == std::string::npos) throw fail("expected PATH=LOW:HIGH, e.g. supports[0].position=0.3:1");
     DesignVariable v;
     v.setting = text;
-    try {
-        v.path = resolve_case_path(text.substr(0, eq), c);
-    } catch (const InputError& e) {
-        throw fail(e.what());
-    }
+    v.path = resolve_setting_path("--vary", text, c);
     if (is_integer_path(v.path)) {
         throw fail(v.path.text() + " takes whole numbers, which a continuous optimiser cannot vary; sweep it with --set");
     }

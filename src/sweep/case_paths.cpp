@@ -124,6 +124,14 @@ std::string CasePath::text() const {
     return t;
 }
 
+CasePath resolve_setting_path(std::string_view option, const std::string& setting, const Case& c) {
+    try {
+        return resolve_case_path(setting.substr(0, setting.find('=')), c);
+    } catch (const InputError& e) {
+        throw InputError(std::string(option) + " " + setting + ": " + e.what());
+    }
+}
+
 CasePath resolve_case_path(std::string_view text, const Case& c) {
     std::string_view rest = text;
     CasePath p;

@@ -30,6 +30,10 @@ struct CasePath {
 // loads[i].frequency only for a harmonic load, ...). Throws InputError with a one-line reason.
 CasePath resolve_case_path(std::string_view text, const Case& c);
 
+// The path before the '=' of an option's setting "PATH=..." (the whole setting without one), resolved
+// on c; an InputError names the option and the setting: "--set supports[9].gap=1:2: supports[9]: ...".
+CasePath resolve_setting_path(std::string_view option, const std::string& setting, const Case& c);
+
 // True where the value must be a whole number: beam.elements, damping.modes[k],
 // initial.velocity_mode.
 bool is_integer_path(const CasePath& p);

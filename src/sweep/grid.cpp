@@ -16,11 +16,7 @@ SweepAxis parse_sweep_setting(const std::string& setting, const Case& c) {
     if (eq == std::string::npos) throw fail("expected PATH=SPEC, e.g. supports[0].position=0.5:1:11");
     SweepAxis axis;
     axis.setting = setting;
-    try {
-        axis.path = resolve_case_path(setting.substr(0, eq), c);
-    } catch (const InputError& e) {
-        throw fail(e.what());
-    }
+    axis.path = resolve_setting_path("--set", setting, c);
     const std::string spec = setting.substr(eq + 1);
     try {
         axis.values = parse_range_spec(spec, case_path_dimension(axis.path));
