@@ -4,6 +4,7 @@
 // energy ledger of a transient in air.
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -16,7 +17,9 @@
 #include "dynamics/cvode/cvode_solver.hpp"
 #include "dynamics/transient_start.hpp"
 #include "forces/squeeze_film.hpp"
+#include "impacts/simulation.hpp"
 #include "io/case_reader.hpp"
+#include "report/transient_output.hpp"
 #include "study/air/air_q.hpp"
 #include "support/run_command.hpp"
 
@@ -174,8 +177,8 @@ TEST(SqueezeFilm, QualityFactorOfThePaperCantileverFromARingDown) {
     }
 }
 
-// The ledger closes with the film: kinetic + strain - external work + the elements' dissipation
-// (the film's, in contact_dissipated_j) + Rayleigh's is constant through a release in air at 1 atm
+// The ledger closes with the film: kinetic + strain - external work + the film's dissipation (its
+// own term, film_dissipated) + Rayleigh's is constant through a release in air at 1 atm
 // (Q about 7 from the film, 100 from the material; the Rayleigh damping also keeps CVODE from
 // resolving the undamped high modes the static step excites).
 TEST(SqueezeFilm, EnergyLedgerClosesInAir) {
@@ -187,14 +190,36 @@ TEST(SqueezeFilm, EnergyLedgerClosesInAir) {
     BuiltProblem b = build_transient_problem(read_case_text(text, "ledger.toml"));
     const TransientResult r = solve_cvode(b.problem);
     const auto total = [](const EnergyLedger& e) {
-        return e.kinetic + e.strain + e.contact_spring + e.electrical + e.rayleigh_dissipated + e.contact_dissipated -
-               e.external_work;
+        return e.kinetic + e.strain + e.contact_spring + e.electrical + e.rayleigh_dissipated + e.contact_dissipated +
+               e.film_dissipated - e.external_work;
     };
     const double e0 = total(r.initial_energy);
     ASSERT_GT(e0, 0.0);
-    EXPECT_GT(r.final_energy.contact_dissipated, 0.5 * e0);  // the film took most of it
+    EXPECT_GT(r.final_energy.film_dissipated, 0.5 * e0);  // the film took most of it
+    EXPECT_EQ(r.final_energy.contact_dissipated, 0.0);    // and there is no contact to book it to
     EXPECT_LT(std::abs(total(r.final_energy) - e0), 1e-7 * e0);
     for (const EnergyLedger& e : r.history.energy) EXPECT_LT(std::abs(total(e) - e0), 1e-7 * e0);
+}
+
+// The film's term is written where a model has a film, and only there: summary.json's energy and a
+// column of history.csv.
+TEST(SqueezeFilm, LedgerFilesCarryTheFilmTermOnlyWithAFilm) {
+    const std::string vacuum = test::kBaseCase + "[damping]\nratios = [0.005, 0.005]\nmodes = [1, 2]\n"
+                                                 "[initial]\nkind = \"displacement\"\ndisplacement = \"0.5 um\"\n"
+                                                 "[solver]\nmethod = \"cvode\"\nhorizon = \"2 us\"\n";
+    const std::string air = vacuum + "[air]\n[[films]]\nfrom = 0.0\nto = 1.0\ngap = \"2 um\"\n";
+    for (const bool with_film : {false, true}) {
+        const Case c = read_case_text(with_film ? air : vacuum, "ledger.toml");
+        const SimulationRun run = run_simulation(c);
+        const OutputFiles files = transient_files(c, run.built, run.result, run.summary);
+        const nlohmann::json j = nlohmann::json::parse(files.at("summary.json"));
+        EXPECT_EQ(j["energy"]["final"].contains("film_dissipated_j"), with_film);
+        const std::string header = files.at("history.csv").substr(0, files.at("history.csv").find('\n'));
+        EXPECT_EQ(header.find("film_dissipated_j") != std::string::npos, with_film) << header;
+        if (with_film) {
+            EXPECT_GT(j["energy"]["final"]["film_dissipated_j"].get<double>(), 0.0);
+        }
+    }
 }
 
 }  // namespace

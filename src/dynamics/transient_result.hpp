@@ -19,8 +19,10 @@ struct ContactEpisode {
     bool closed_at_end = false;   // still in contact when the horizon ended
 };
 
-// Energy terms [J]; with no damping, kinetic + strain + contact_spring + electrical - external_work is
-// conserved (external_work includes the electrodes' source work, docs/electrostatics.md §2).
+// Energy terms [J], each named by the kind of element it comes from; with no damping, kinetic + strain
+// + contact_spring + electrical - external_work is conserved (external_work includes the electrodes'
+// source work, docs/electrostatics.md §2), and with damping the three dissipated terms make up the
+// difference.
 struct EnergyLedger {
     double kinetic = 0.0;             // 1/2 v^T M v
     double strain = 0.0;              // 1/2 q^T K q
@@ -28,6 +30,7 @@ struct EnergyLedger {
     double electrical = 0.0;          // the electrodes' stored energy, -C V^2 / 2 (co-energy's negative)
     double rayleigh_dissipated = 0.0; // integral of v^T C v dt
     double contact_dissipated = 0.0;  // integral of Cc (dd/dt)^2 dt over closed contacts
+    double film_dissipated = 0.0;     // integral of the squeeze films' dissipated power dt
     double external_work = 0.0;       // integral of Q(t)^T v dt, contact surfaces' static part excluded
 };
 

@@ -36,6 +36,10 @@ struct ContactReading {
 // electrical co-energy of an electrode (-C V^2/2), or strain energy (mid-plane stretching).
 enum class StoredEnergyKind { contact_spring, electrical, strain };
 
+// Which term of the energy ledger an element's dissipated power belongs to: a contact's damper (and
+// what a contact loses when it switches), or a squeeze film's viscous flow.
+enum class DissipationKind { contact, film };
+
 // A force element. Forces are generalised nodal forces on dofs() [N, N m], positive along the DOF.
 //
 // Modes: an element may be hybrid (a contact is open or closed). Mode 0 is the first; modes() says
@@ -68,6 +72,8 @@ public:
     [[nodiscard]] virtual StoredEnergyKind stored_energy_kind() const { return StoredEnergyKind::contact_spring; }
     // Power it dissipates [W], >= 0 (a contact damper's Cc (dd/dt)^2).
     [[nodiscard]] virtual double dissipated_power(const ElementState& s, int mode) const = 0;
+    // The ledger term dissipated_power goes to.
+    [[nodiscard]] virtual DissipationKind dissipation_kind() const { return DissipationKind::contact; }
     // add_force and dissipated_power in one call, returning the power: a solver's right-hand side
     // needs both at every evaluation, and an element whose power shares costly work with its force
     // (a squeeze film's gap law at every quadrature point) overrides it to do that work once.

@@ -73,6 +73,7 @@ public:
     [[nodiscard]] double stored_energy(const ElementState&, int) const override { return 0.0; }
     [[nodiscard]] double dissipated_power(const ElementState& s, int mode) const override;
     double add_force_and_power(const ElementState& s, int mode, double* f) const override;
+    [[nodiscard]] DissipationKind dissipation_kind() const override { return DissipationKind::film; }
     [[nodiscard]] double input_power(const ElementState&, int) const override { return 0.0; }
     [[nodiscard]] double position() const override { return 0.5 * (geometry_.from + geometry_.to); }
     // Constant, linear and quadratic line loads over the span (the film's force follows the velocity).

@@ -15,14 +15,23 @@ nlohmann::json scaled(const std::optional<double>& v, double k) {
     return v ? nlohmann::json(*v * k) : nlohmann::json(nullptr);
 }
 
-nlohmann::json energy_json(const EnergyLedger& e) {
-    return {{"kinetic_j", e.kinetic},
-            {"strain_j", e.strain},
-            {"contact_spring_j", e.contact_spring},
-            {"electrical_j", e.electrical},
-            {"rayleigh_dissipated_j", e.rayleigh_dissipated},
-            {"contact_dissipated_j", e.contact_dissipated},
-            {"external_work_j", e.external_work}};
+// Whether some element of the model books its dissipation as a squeeze film's.
+bool has_films(const BuiltProblem& b) {
+    return std::any_of(b.model.forces.begin(), b.model.forces.end(),
+                       [](const ForceElementPtr& e) { return e->dissipation_kind() == DissipationKind::film; });
+}
+
+// The ledger's terms; a model with squeeze films has their term too.
+nlohmann::json energy_json(const EnergyLedger& e, bool films) {
+    nlohmann::json j = {{"kinetic_j", e.kinetic},
+                        {"strain_j", e.strain},
+                        {"contact_spring_j", e.contact_spring},
+                        {"electrical_j", e.electrical},
+                        {"rayleigh_dissipated_j", e.rayleigh_dissipated},
+                        {"contact_dissipated_j", e.contact_dissipated},
+                        {"external_work_j", e.external_work}};
+    if (films) j["film_dissipated_j"] = e.film_dissipated;
+    return j;
 }
 
 template <class Row>
@@ -199,7 +208,8 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
     j["z_max"] = opt(s.z_max);
     j["y_max_contact_m"] = opt(s.y_max_contact);
     j["tip_min_m"] = opt(s.watched_min);
-    j["energy"] = {{"initial", energy_json(r.initial_energy)}, {"final", energy_json(r.final_energy)}};
+    const bool films = has_films(b);
+    j["energy"] = {{"initial", energy_json(r.initial_energy, films)}, {"final", energy_json(r.final_energy, films)}};
     j["solver"] = {{"method", r.stats.method},
                    {"decompositions", r.stats.decompositions},
                    {"events", r.stats.events},
@@ -220,7 +230,7 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
     return j;
 }
 
-CsvTable history_csv(const TransientResult& r, const std::string& watched) {
+CsvTable history_csv(const TransientResult& r, const std::string& watched, bool films) {
     const TimeHistory& h = r.history;
     CsvTable t;
     t.header = {"t_s", watched + "_m", watched + "_velocity_m_s"};
@@ -232,6 +242,7 @@ CsvTable history_csv(const TransientResult& r, const std::string& watched) {
     if (energy) {
         t.header.insert(t.header.end(), {"kinetic_j", "strain_j", "contact_spring_j", "electrical_j",
                                          "rayleigh_dissipated_j", "contact_dissipated_j", "external_work_j"});
+        if (films) t.header.push_back("film_dissipated_j");
     }
     for (std::size_t i = 0; i < h.t.size(); ++i) {
         std::vector<double> row{h.t[i], h.watched_v[i], h.watched_velocity[i]};
@@ -242,6 +253,7 @@ CsvTable history_csv(const TransientResult& r, const std::string& watched) {
             const EnergyLedger& e = h.energy[i];
             row.insert(row.end(), {e.kinetic, e.strain, e.contact_spring, e.electrical, e.rayleigh_dissipated,
                                    e.contact_dissipated, e.external_work});
+            if (films) row.push_back(e.film_dissipated);
         }
         t.add_row(std::move(row));
     }
@@ -267,7 +279,7 @@ CsvTable events_csv(const TransientResult& r, const ImpactSummary& s) {
 
 OutputFiles transient_files(const Case& c, const BuiltProblem& b, const TransientResult& r, const ImpactSummary& s,
                             const SwitchingLedger* switching) {
-    return {{"history.csv", history_csv(r, b.model.watched.name).str()},
+    return {{"history.csv", history_csv(r, b.model.watched.name, has_films(b)).str()},
             {"events.csv", events_csv(r, s).str()},
             {"summary.json", transient_summary_json(c, b, r, s, switching).dump(2) + "\n"}};
 }

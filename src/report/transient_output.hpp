@@ -28,8 +28,9 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
                                       const ImpactSummary& s, const SwitchingLedger* switching = nullptr);
 
 // t_s, <watched>_m, <watched>_velocity_m_s (watched: "tip", "midspan" or "point", BuiltProblem),
-// per support k: contact<k>_m, contact<k>_velocity_m_s, contact<k>_force_n, then the energy terms in J.
-CsvTable history_csv(const TransientResult& r, const std::string& watched = "tip");
+// per contact k: contact<k>_m, contact<k>_velocity_m_s, contact<k>_force_n, then the energy terms in J
+// (film_dissipated_j only where the model has squeeze films).
+CsvTable history_csv(const TransientResult& r, const std::string& watched = "tip", bool films = false);
 
 // One row per contact episode with the index of the impact it belongs to (the missing marker for an
 // episode in no impact).

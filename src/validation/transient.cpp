@@ -44,7 +44,9 @@ Attempt attempt(Solve solve) {
 }
 
 double conserved(const EnergyLedger& e) { return e.kinetic + e.strain + e.contact_spring + e.electrical - e.external_work; }
-double with_losses(const EnergyLedger& e) { return conserved(e) + e.rayleigh_dissipated + e.contact_dissipated; }
+double with_losses(const EnergyLedger& e) {
+    return conserved(e) + e.rayleigh_dissipated + e.contact_dissipated + e.film_dissipated;
+}
 
 // Worst relative departure of f(E(t)) from f(E(0)) over the samples and at the end.
 struct Drift {
@@ -145,7 +147,7 @@ std::string section_energy(const ValidationOptions& o) {
         std::string quantity = damped ? "ledger error" : "energy drift";
         if (damped) {
             const double e0 = with_losses(r.initial_energy);
-            quantity += "; dissipated " + fixed(100.0 * (r.final_energy.rayleigh_dissipated + r.final_energy.contact_dissipated) / e0, 1) +
+            quantity += "; dissipated " + fixed(100.0 * (r.final_energy.rayleigh_dissipated + r.final_energy.contact_dissipated + r.final_energy.film_dissipated) / e0, 1) +
                         " % of E(0)";
         }
         t.add({run, count, quantity, err(d.worst), "0", tol});

@@ -26,6 +26,7 @@ ModalSystem::ModalSystem(const TransientProblem& p, ModalBasis basis)
     w2_ = basis_.omega.cwiseAbs2();
     d_ = (p.alpha + p.beta * w2_.array()).matrix();
     for (const ForceElementPtr& e : p.forces) rows_.push_back(rows_of(basis_.phi, e->dofs()));
+    for (const ForceElementPtr& e : p.forces) films_ = films_ || e->dissipation_kind() == DissipationKind::film;
     std::vector<int> all;
     for (const ForceElementPtr& e : p.forces) all.insert(all.end(), e->dofs().begin(), e->dofs().end());
     std::sort(all.begin(), all.end());
@@ -88,14 +89,19 @@ const ElementState& ModalSystem::own_state(int e, double t, const double* y) con
 }
 
 double ModalSystem::add_element_forces(double te, const double* y, Eigen::Map<Eigen::VectorXd>& acc,
-                                       double* work) const {
+                                       double* work, double* film) const {
     double dissipated = 0.0;
     gather_union(y, nullptr);
     uf_.setZero();
     for (int e = 0; e < elements(); ++e) {
         const ElementState& s = union_state(e, te, false);
         const int mode = modes_[static_cast<std::size_t>(e)];
-        dissipated += assembler_.force_and_power(mode);
+        const double power = assembler_.force_and_power(mode);
+        if (element(e).dissipation_kind() != DissipationKind::film) {
+            dissipated += power;
+        } else if (film) {
+            *film += power;
+        }
         assembler_.scatter_force(1.0, uf_.data());
         if (work) *work += element(e).input_power(s, mode);
     }
@@ -109,11 +115,12 @@ void ModalSystem::rhs(double t, const double* y, double* ydot) const {
     Eigen::Map<Eigen::VectorXd> acc(ydot + r_, r_);
     acc = -w2_.cwiseProduct(eta) - d_.cwiseProduct(vel);
     const double te = element_time(t);
-    double work = 0.0;
-    const double dissipated = add_element_forces(te, y, acc, &work);
+    double work = 0.0, film = 0.0;
+    const double dissipated = add_element_forces(te, y, acc, &work, &film);
     ydot[rayleigh_index()] = vel.dot(d_.cwiseProduct(vel));
     ydot[dissipation_index()] = dissipated;
     ydot[work_index()] = work;
+    if (films_) ydot[film_dissipation_index()] = film;
     for (std::size_t j = 0; j < contacts_.size(); ++j) {
         const int e = contacts_[j];
         const ForceElement& el = element(e);
@@ -127,7 +134,7 @@ void ModalSystem::acceleration(double t, const double* y, Eigen::VectorXd& acc) 
     acc.resize(r_);
     acc = -w2_.cwiseProduct(ConstVec(y, r_)) - d_.cwiseProduct(ConstVec(y + r_, r_));
     Eigen::Map<Eigen::VectorXd> out(acc.data(), r_);
-    static_cast<void>(add_element_forces(element_time(t), y, out, nullptr));
+    static_cast<void>(add_element_forces(element_time(t), y, out, nullptr, nullptr));
 }
 
 bool ModalSystem::watches_need_acceleration() const {
@@ -229,6 +236,7 @@ EnergyLedger ModalSystem::energy(double t, const double* y, double jump) const {
     }
     e.rayleigh_dissipated = y[rayleigh_index()];
     e.contact_dissipated = y[dissipation_index()] + jump;
+    if (films_) e.film_dissipated = y[film_dissipation_index()];
     e.external_work = y[work_index()];
     return e;
 }
@@ -323,6 +331,7 @@ Eigen::VectorXd ModalSystem::absolute_tolerances(double atol_scale) const {
     scale[rayleigh_index()] = energy;
     scale[dissipation_index()] = energy;
     scale[work_index()] = energy;
+    if (films_) scale[film_dissipation_index()] = energy;
     for (std::size_t j = 0; j < contacts_.size(); ++j) {
         const int e = contacts_[j];
         const ForceElement& el = element(e);

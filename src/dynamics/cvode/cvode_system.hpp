@@ -13,13 +13,17 @@
 
 namespace vi::cvode_detail {
 
-// Layout of the CVODE state y, N = 2r + 3 + nc (r basis vectors, nc contact elements):
+// Layout of the CVODE state y, N = 2r + 3 + nc (+ 1 with squeeze films) (r basis vectors, nc contact
+// elements):
 //   [0, r)       eta                                   modal displacements [m sqrt(kg)]
 //   [r, 2r)      eta' = d eta / dt
 //   2r           integral of eta'^T D eta' dt          Rayleigh dissipation [J], D = diag(alpha + beta w^2)
-//   2r + 1       integral of the elements' dissipated power [J]
+//   2r + 1       integral of the elements' dissipated power but the films' [J]
 //   2r + 2       integral of the elements' input power (external work) [J]
 //   2r + 3 + j   integral of F_j dt while contact j is closed: its impulse [N s]
+//   2r + 3 + nc  integral of the squeeze films' dissipated power [J], only where the model has a film
+//                (so that a model without one integrates the same state as before the films had a
+//                ledger term of their own)
 // eta'' = -w^2 eta - D eta' + sum_e P_e^T f_e(P_e eta, P_e eta', t), P_e the basis rows of element
 // e's DOFs. The quadratures feed nothing back.
 //
@@ -31,7 +35,7 @@ public:
     ModalSystem(const TransientProblem& p, ModalBasis basis);
 
     [[nodiscard]] int basis_size() const { return r_; }
-    [[nodiscard]] int size() const { return 2 * r_ + 3 + static_cast<int>(contacts_.size()); }
+    [[nodiscard]] int size() const { return 2 * r_ + 3 + static_cast<int>(contacts_.size()) + (films_ ? 1 : 0); }
     [[nodiscard]] int elements() const { return static_cast<int>(p_.forces.size()); }
     [[nodiscard]] const ForceElement& element(int e) const { return *p_.forces[static_cast<std::size_t>(e)]; }
     [[nodiscard]] const std::vector<int>& contacts() const { return contacts_; }  // element index per contact
@@ -47,6 +51,7 @@ public:
     [[nodiscard]] int dissipation_index() const { return 2 * r_ + 1; }
     [[nodiscard]] int work_index() const { return 2 * r_ + 2; }
     [[nodiscard]] int impulse_index(int j) const { return 2 * r_ + 3 + j; }
+    [[nodiscard]] int film_dissipation_index() const { return 2 * r_ + 3 + static_cast<int>(contacts_.size()); }
 
     [[nodiscard]] int roots() const { return roots_; }
     [[nodiscard]] int switch_root(int e) const { return switch_root_[static_cast<std::size_t>(e)]; }  // -1: none
@@ -82,8 +87,9 @@ public:
     }
     [[nodiscard]] double contact_displacement(int j, const double* y) const;
 
-    // kinetic, strain, the elements' stored energy and the three integrals from y; `jump` is added to
-    // the dissipated energy (what a massless element loses when it switches; cvode_solver.cpp).
+    // kinetic, strain, the elements' stored energy and the dissipation and work integrals from y;
+    // `jump` is added to the contacts' dissipated energy (what a massless element loses when it
+    // switches; cvode_solver.cpp).
     [[nodiscard]] EnergyLedger energy(double t, const double* y, double jump) const;
 
     // y at t = 0: eta = phi^T M q0, eta' = phi^T M v0.
@@ -105,9 +111,11 @@ private:
     [[nodiscard]] double element_time(double t) const;
     // The modal accelerations at y without the ledger's integrals.
     void acceleration(double t, const double* y, Eigen::VectorXd& acc) const;
-    // Adds the elements' generalised forces at y to acc and returns the power they dissipate (and
-    // adds the power they take in to *work unless null); leaves q and v on the union at y.
-    double add_element_forces(double te, const double* y, Eigen::Map<Eigen::VectorXd>& acc, double* work) const;
+    // Adds the elements' generalised forces at y to acc and returns the power they dissipate but the
+    // films' (and adds the films' dissipated power to *film and the power the elements take in to
+    // *work, unless null); leaves q and v on the union at y.
+    double add_element_forces(double te, const double* y, Eigen::Map<Eigen::VectorXd>& acc, double* work,
+                              double* film) const;
     // Whether a watch function needs the accelerations in the elements' current modes.
     [[nodiscard]] bool watches_need_acceleration() const;
 
@@ -120,6 +128,7 @@ private:
     std::vector<std::vector<int>> local_;    // per element: positions of its DOFs in the union
     Eigen::RowVectorXd watched_row_;
     std::vector<int> contacts_;
+    bool films_ = false;  // some element books its dissipation as a film's (DissipationKind::film)
     std::vector<int> modes_;
     std::vector<int> switch_root_, watch_root_;
     int roots_ = 0;
