@@ -2,7 +2,9 @@
 // ElementFamily: one kind of force element a case describes (the supports' contacts, the point
 // loads, the electrodes' pads, ...), as a small object that makes its elements from the Case. The
 // model builder (problem/beam_model.cpp) loops over the registered families
-// (problem/element_families.cpp) and adds what each makes, in the registry's order.
+// (problem/element_families.cpp) and adds what each makes, in the registry's order. The keys a
+// family reads are described once in the case schema (model/case_schema.hpp: a built-in section, or
+// keys the family registers from its own file with register_section / register_keys).
 
 #include <Eigen/Dense>
 #include <cstddef>
@@ -14,8 +16,6 @@
 #include "model/case.hpp"
 
 namespace vi {
-
-struct SectionSpec;  // the case schema's description of a table and its keys (model/)
 
 // What a family reads to make its elements.
 struct ElementSource {
@@ -47,10 +47,6 @@ public:
     // "electrodes[1].dielectric"). Throws InputError naming the key a case gives that the model
     // cannot have (a support on a node an end condition holds).
     [[nodiscard]] virtual std::vector<FamilyElement> elements(const ElementSource& source) const = 0;
-    // The hook for the family's parameter description: the case keys its elements are made from
-    // (paths, units, defaults, ranges, meaning), for the reader, the checks and the sweepable paths.
-    // None yet: io/case_reader.cpp reads every key and model/case_checks.cpp checks them.
-    [[nodiscard]] virtual const SectionSpec* case_keys() const { return nullptr; }
 };
 
 }  // namespace vi
