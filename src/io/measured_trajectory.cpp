@@ -6,6 +6,7 @@
 #include "io/csv_reader.hpp"
 #include "io/text_file.hpp"
 #include "model/input_error.hpp"
+#include "model/run_estimate.hpp"
 
 namespace vi {
 
@@ -45,11 +46,16 @@ MeasuredTrajectory read_measured_trajectory(const std::string& path, const std::
                 throw fail(std::string(name) + ": a missing value ('" + s + "'); every sample needs a finite number (leave the row out)");
             }
             if (!v || !std::isfinite(*v)) throw fail(std::string(name) + ": '" + s + "' is not a finite number");
+            if (*v != 0.0 && !(std::abs(*v) >= 1.0 / kMagnitudeLimit && std::abs(*v) <= kMagnitudeLimit)) {
+                throw fail(std::string(name) + ": " + s + " is outside the magnitudes the fit computes with (1e-100 to 1e100 " +
+                           "in SI units; docs/case-files.md, Limits): check the column's unit");
+            }
             return *v;
         };
         const double t = number(it, "t_s");
         if (!m.t.empty() && !(t > m.t.back())) throw fail("t_s: times must increase strictly down the table");
         m.t.push_back(t);
+        m.line.push_back(line_no);
         m.value.push_back(number(iv, column.c_str()));
         if (is >= 0) {
             const double s = number(is, "sigma");
