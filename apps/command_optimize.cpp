@@ -6,6 +6,7 @@
 #include <csignal>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -192,6 +193,7 @@ int run_optimize(const OptimizeCommandOptions& opt) {
 
     OptimizeResult r;
     nlohmann::json j;
+    std::optional<std::string> figure_failed;
     const auto t0 = std::chrono::steady_clock::now();
     try {
         r = optimize_design(p, o);
@@ -201,7 +203,7 @@ int run_optimize(const OptimizeCommandOptions& opt) {
         OutputFiles files;
         files["optimize.json"] = j.dump(2) + "\n";
         files["evaluations.csv"] = evaluations_csv(p, r);
-        write_with_figures(opt.out, std::move(files), {convergence_figure(p, r)}, gnuplot);
+        figure_failed = write_with_figures(opt.out, std::move(files), {convergence_figure(p, r)}, gnuplot);
         journal.remove();
         if (opt.json) {
             std::printf("%s\n", j.dump(2).c_str());
@@ -214,6 +216,11 @@ int run_optimize(const OptimizeCommandOptions& opt) {
                      "--resume to go on\n",
                      journal.size(), journal.path().c_str());
         return kExitStoppedBase + (s.signal() > 0 ? s.signal() : SIGINT);
+    }
+    if (figure_failed) {
+        std::fprintf(stderr, "vibroimpact: optimize: the convergence figure was not drawn (%s); optimize.json and "
+                             "evaluations.csv are written in %s\n", figure_failed->c_str(), opt.out.c_str());
+        return kExitFailure;
     }
     if (!r.best) {
         std::fprintf(stderr, "vibroimpact: optimize: no design met the constraints and ran to the end in %zu evaluations "

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "io/text_file.hpp"
 #include "model/run_control.hpp"
 #include "stop_signals.hpp"
 
@@ -16,12 +17,20 @@ std::string require_gnuplot(const std::string& requested, const std::string& wha
     return *found;
 }
 
-void write_with_figures(const std::string& dir, OutputFiles files, const std::vector<FigureSpec>& figures,
-                        const std::string& gnuplot) {
-    for (auto& [name, text] : figure_files(figures, render_figures(gnuplot, figures, 1))) files[name] = std::move(text);
+std::optional<std::string> write_with_figures(const std::string& dir, OutputFiles files, const std::vector<FigureSpec>& figures,
+                                              const std::string& gnuplot) {
+    std::optional<std::string> failure;
+    try {
+        for (auto& [name, text] : figure_files(figures, render_figures(gnuplot, figures, 1))) files[name] = std::move(text);
+    } catch (const std::runtime_error& e) {
+        // The numbers were computed at a cost a picture must not throw away: they are written
+        // without the figure, and the caller says what failed.
+        failure = one_line(e.what());
+    }
     check_run();
     const CommitSection commit;
     write_output_files(dir, files);
+    return failure;
 }
 
 }  // namespace vi::cli
