@@ -167,7 +167,15 @@ DesignProblem read_problem(const OptimizeCommandOptions& o, const std::string& c
     p.base = read_case_text(case_text, o.case_path);
     p.columns = sweep_result_columns(SweepAnalysis::simulate, 0);
     p.settings.point_timeout = o.point_timeout;
-    for (const std::string& v : o.vary) p.variables.push_back(parse_design_variable(v, p.base));
+    for (const std::string& v : o.vary) {
+        DesignVariable variable = parse_design_variable(v, p.base);
+        for (const DesignVariable& earlier : p.variables) {
+            if (earlier.path.text() == variable.path.text()) {
+                throw InputError("--vary " + v + ": " + variable.path.text() + " is already varied by --vary " + earlier.setting);
+            }
+        }
+        p.variables.push_back(std::move(variable));
+    }
     p.maximize = !o.maximize.empty();
     p.objective = quantity_column(p.maximize ? o.maximize : o.minimize, p.columns, p.maximize ? "--maximize" : "--minimize");
     for (const std::string& c : o.constraints) p.constraints.push_back(parse_design_constraint(c, p.columns));
@@ -178,6 +186,10 @@ DesignProblem read_problem(const OptimizeCommandOptions& o, const std::string& c
 // to go on.
 int run_optimize(const OptimizeCommandOptions& opt) {
     if (opt.minimize.empty() == opt.maximize.empty()) throw InputError("optimize: give one of --minimize or --maximize");
+    if (opt.global_evals >= opt.max_evals) {
+        throw InputError("--global-evals " + std::to_string(opt.global_evals) + ": must be below --max-evals " +
+                         std::to_string(opt.max_evals) + " (it is the global stage's share of them; the local stage needs one at least)");
+    }
     const std::string gnuplot = require_gnuplot(opt.gnuplot, "the convergence figure");
     std::string reason;
     const auto case_text = file_text(opt.case_path, reason);
@@ -210,6 +222,10 @@ int run_optimize(const OptimizeCommandOptions& opt) {
         } else {
             print_result(opt, p, r, wall_s);
         }
+    } catch (const InputError&) {
+        // A refusal leaves nothing behind: a journal this run started goes with it.
+        if (journal.started_here()) journal.remove();
+        throw;
     } catch (const StopRequested& s) {
         std::fprintf(stderr,
                      "vibroimpact: optimize interrupted: %zu designs computed, kept in %s; run the same command with "

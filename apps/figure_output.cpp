@@ -24,8 +24,13 @@ std::optional<std::string> write_with_figures(const std::string& dir, OutputFile
         for (auto& [name, text] : figure_files(figures, render_figures(gnuplot, figures, 1))) files[name] = std::move(text);
     } catch (const std::runtime_error& e) {
         // The numbers were computed at a cost a picture must not throw away: they are written
-        // without the figure, and the caller says what failed.
+        // without the images, with each figure's data and script (gnuplot NAME.gp in the folder
+        // draws it), and the caller says what failed.
         failure = one_line(e.what());
+        for (const FigureSpec& f : figures) {
+            for (const auto& [name, text] : f.data) files[name] = text;
+            files[f.name + ".gp"] = gnuplot_script(f);
+        }
     }
     check_run();
     const CommitSection commit;
