@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "dynamics/pullin.hpp"
+#include "statics/pullin.hpp"
 #include "impacts/dynamic_pullin.hpp"
 #include "io/case_reader.hpp"
 #include "io/output_files.hpp"

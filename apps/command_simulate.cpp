@@ -93,7 +93,7 @@ CommandBody add_simulate_command(CLI::App& app) {
         } catch (const InputError& e) {
             throw locate_in_case(c, e);
         }
-        warn_film_range(opt->case_path, run.built.films);
+        warn_film_range(opt->case_path, run.built.model.films);
         // A contact narrower than the smallest search step could have gone unseen this deep (a
         // fraction of the watched signal's size); at roundoff level (1e-14 typically) it is noise.
         if (run.result.stats.unproven_excess > 1e-9) {

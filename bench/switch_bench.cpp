@@ -11,7 +11,7 @@
 #include <cstdio>
 #include <string>
 
-#include "dynamics/pullin.hpp"
+#include "statics/pullin.hpp"
 #include "impacts/simulation.hpp"
 #include "io/case_reader.hpp"
 

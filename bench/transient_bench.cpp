@@ -12,8 +12,8 @@
 #include <string>
 
 #include "impacts/simulation.hpp"
-#include "dynamics/cvode_solver.hpp"
-#include "dynamics/exact_solver.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
+#include "dynamics/exact/exact_solver.hpp"
 #include "io/case_reader.hpp"
 
 namespace {

@@ -1,7 +1,10 @@
 # Checks the layer order of src/ (docs/architecture.md): a file may include its own layer and the
-# layers below it, never one above. Run: cmake -DSRC=<path to src> -P check_layers.cmake
+# layers below it, never one above. Within dynamics/, the two solver rooms exact/ and cvode/ sit on
+# its shared files (the transient problem, start and result) and never include each other.
+# Run: cmake -DSRC=<path to src> -P check_layers.cmake
 # Prints every offending #include and fails when there is one.
-set(layers model io fem forces modal dynamics impacts report sweep design calibration plot validation study)
+set(layers model io fem forces modal problem statics dynamics impacts report sweep design calibration plot validation study)
+set(rooms dynamics/exact dynamics/cvode)
 if(NOT SRC)
   message(FATAL_ERROR "check_layers: pass -DSRC=<path to src>")
 endif()
@@ -26,6 +29,17 @@ foreach(f IN LISTS files)
       message(SEND_ERROR "${f}: ${line} reaches up from layer '${own}' to '${target}'")
       math(EXPR bad "${bad} + 1")
     endif()
+    # Rooms: a file outside a room may not include it from the same layer (the room is above the
+    # layer's shared files), and a room may not include another room.
+    foreach(room IN LISTS rooms)
+      if(line MATCHES "^#include \"${room}/" AND NOT f MATCHES "^${room}/")
+        string(REGEX MATCH "^[a-z_]+" room_layer ${room})
+        if(own STREQUAL room_layer)
+          message(SEND_ERROR "${f}: ${line} reaches into the room ${room} from outside it")
+          math(EXPR bad "${bad} + 1")
+        endif()
+      endif()
+    endforeach()
   endforeach()
 endforeach()
 list(LENGTH files nfiles)

@@ -16,8 +16,8 @@
 #include <unistd.h>
 
 #include "case_text_fixture.hpp"
-#include "dynamics/cvode_solver.hpp"
-#include "dynamics/static_solution.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
+#include "statics/static_solution.hpp"
 #include "dynamics/transient_problem.hpp"
 #include "forces/adhesive_contact.hpp"
 #include "forces/point_load_element.hpp"

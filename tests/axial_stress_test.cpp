@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/cvode_solver.hpp"
-#include "dynamics/problem_builder.hpp"
-#include "dynamics/pullin.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
+#include "dynamics/transient_start.hpp"
+#include "statics/pullin.hpp"
 #include "fem/system.hpp"
 #include "forces/midplane_stretching.hpp"
 #include "io/case_reader.hpp"

@@ -9,7 +9,7 @@
 #include <numbers>
 #include <vector>
 
-#include "dynamics/bordered_solver.hpp"
+#include "statics/bordered_solver.hpp"
 
 namespace vi {
 namespace {

@@ -8,7 +8,7 @@
 #include <numbers>
 #include <utility>
 
-#include "dynamics/cvode_solver.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
 #include "fem/system.hpp"
 #include "paper_cases.hpp"
 

@@ -13,10 +13,10 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/cvode_solver.hpp"
-#include "dynamics/layer_hold.hpp"
-#include "dynamics/problem_builder.hpp"
-#include "dynamics/static_minimum.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
+#include "statics/layer_hold.hpp"
+#include "dynamics/transient_start.hpp"
+#include "statics/static_minimum.hpp"
 #include "forces/adhesive_layer_law.hpp"
 #include "forces/dielectric_contact.hpp"
 #include "io/case_reader.hpp"
@@ -184,10 +184,10 @@ method = "cvode"
 double settled_detached_length(const Case& c, double start) {
     const BuiltProblem b = build_transient_problem(c);
     const double h = c.electrodes[0].gap - c.electrodes[0].dielectric_thickness;
-    const Eigen::VectorXd q0 = held_flat(b.system, b.problem.K, start, c.beam.length, -h);
+    const Eigen::VectorXd q0 = held_flat(b.model.system, b.problem.K, start, c.beam.length, -h);
     const StaticState s =
         minimize_static_energy(b.problem.K, b.problem.forces, Eigen::VectorXd::Zero(q0.size()), q0, 500);
-    const auto contact = layer_contact(c, 0, b.system, s.q);
+    const auto contact = layer_contact(c, 0, b.model.system, s.q);
     return contact ? contact->first : -1.0;
 }
 

@@ -9,9 +9,9 @@
 #include <random>
 #include <vector>
 
-#include "dynamics/cvode_solver.hpp"
-#include "dynamics/problem_builder.hpp"
-#include "dynamics/pullin.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
+#include "dynamics/transient_start.hpp"
+#include "statics/pullin.hpp"
 #include "forces/dielectric_contact.hpp"
 #include "io/case_reader.hpp"
 #include "model/input_error.hpp"

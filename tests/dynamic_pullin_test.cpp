@@ -15,7 +15,7 @@
 #include <vector>
 #include <string>
 
-#include "dynamics/cvode_solver.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
 #include "fem/gauss_legendre.hpp"
 #include "forces/electrostatic_pad.hpp"
 #include "forces/kelvin_voigt_contact.hpp"

@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/cvode_solver.hpp"
-#include "dynamics/problem_builder.hpp"
-#include "dynamics/pullin.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
+#include "dynamics/transient_start.hpp"
+#include "statics/pullin.hpp"
 #include "forces/electrostatic_pad.hpp"
 #include "forces/kelvin_voigt_contact.hpp"
 #include "io/case_reader.hpp"

@@ -9,8 +9,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "dynamics/exact_solver.hpp"
-#include "dynamics/state_modes.hpp"
+#include "dynamics/exact/exact_solver.hpp"
+#include "dynamics/exact/state_modes.hpp"
 #include "transient_fixtures.hpp"
 
 namespace vi {

@@ -12,8 +12,8 @@
 #include <string>
 
 #include "validation/loaded_oscillator.hpp"
-#include "dynamics/cvode_solver.hpp"
-#include "dynamics/exact_solver.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
+#include "dynamics/exact/exact_solver.hpp"
 
 namespace vi {
 namespace {

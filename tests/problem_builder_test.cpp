@@ -8,7 +8,7 @@
 #include <string>
 
 #include "dynamics/piecewise_linear_form.hpp"
-#include "dynamics/problem_builder.hpp"
+#include "dynamics/transient_start.hpp"
 #include "io/case_reader.hpp"
 #include "model/input_error.hpp"
 #include "modal/modal_analysis.hpp"
@@ -65,9 +65,9 @@ TEST(ProblemBuilder, TipLiftedAboveAZeroGapSupport) {
     EXPECT_EQ(p.q0.size(), 100);
     ASSERT_EQ(p.tip_dof, 98);  // v of the last node
     EXPECT_NEAR(p.q0[p.tip_dof], 1e-6, 1e-18);
-    EXPECT_NEAR(b.static_force_n, tip_stiffness(c) * 1e-6, 1e-9 * tip_stiffness(c) * 1e-6);
-    EXPECT_NEAR(b.y0_m, 1e-6, 1e-18);
-    EXPECT_EQ(b.q_equilibrium.norm(), 0.0);
+    EXPECT_NEAR(b.start.static_force_n, tip_stiffness(c) * 1e-6, 1e-9 * tip_stiffness(c) * 1e-6);
+    EXPECT_NEAR(b.start.y0_m, 1e-6, 1e-18);
+    EXPECT_EQ(b.start.q_equilibrium.norm(), 0.0);
     ASSERT_EQ(p.contacts.size(), 1u);
     EXPECT_EQ(p.contacts[0].dof, p.tip_dof);
     EXPECT_EQ(p.contacts[0].sign, 1.0);
@@ -88,22 +88,22 @@ TEST(ProblemBuilder, PrestressedTipRestsOnItsSupport) {
     Case c = lifted_cantilever(0.0, s);
     c.initial.kind = vi::InitialState::Kind::rest;
     BuiltProblem b = vi::build_transient_problem(c);
-    EXPECT_NEAR(b.q_equilibrium[b.problem.tip_dof], v_eq, 1e-9 * v_eq);
+    EXPECT_NEAR(b.start.q_equilibrium[b.problem.tip_dof], v_eq, 1e-9 * v_eq);
     EXPECT_EQ(pl(b).active0, std::vector<bool>{true});
-    EXPECT_EQ(b.problem.q0, b.q_equilibrium);
-    EXPECT_EQ(b.static_force_n, 0.0);
+    EXPECT_EQ(b.problem.q0, b.start.q_equilibrium);
+    EXPECT_EQ(b.start.static_force_n, 0.0);
 
     // A lift past the surface opens the contact: only the beam resists the force.
     b = vi::build_transient_problem(lifted_cantilever(1e-6, s));
-    const double v_eq_fe = b.q_equilibrium[b.problem.tip_dof];
+    const double v_eq_fe = b.start.q_equilibrium[b.problem.tip_dof];
     EXPECT_NEAR(b.problem.q0[b.problem.tip_dof], v_eq_fe + 1e-6, 1e-12 * (v_eq_fe + 1e-6));
-    EXPECT_NEAR(b.static_force_n, kb * (v_eq + 1e-6), 1e-9 * kb * (v_eq + 1e-6));
+    EXPECT_NEAR(b.start.static_force_n, kb * (v_eq + 1e-6), 1e-9 * kb * (v_eq + 1e-6));
     EXPECT_EQ(pl(b).active0, std::vector<bool>{false});
-    EXPECT_NEAR(b.y0_m, 1e-6, 1e-15);
+    EXPECT_NEAR(b.start.y0_m, 1e-6, 1e-15);
 
     // A small lift keeps it closed: beam and spring in parallel.
     b = vi::build_transient_problem(lifted_cantilever(1e-8, s));
-    EXPECT_NEAR(b.static_force_n, (kb + kc) * 1e-8, 1e-9 * (kb + kc) * 1e-8);
+    EXPECT_NEAR(b.start.static_force_n, (kb + kc) * 1e-8, 1e-9 * (kb + kc) * 1e-8);
     EXPECT_EQ(pl(b).active0, std::vector<bool>{true});
 }
 
@@ -115,7 +115,7 @@ TEST(ProblemBuilder, PrestressedSupportAboveAndClampedClampedBeam) {
     BuiltProblem b = vi::build_transient_problem(c);
     EXPECT_EQ(pl(b).contacts[0].sign, -1.0);
     EXPECT_EQ(pl(b).contacts[0].surface, -0.5e-6);
-    EXPECT_NEAR(b.q_equilibrium[b.problem.tip_dof], -50.0 * 0.5e-6 / (50.0 + kb), 1e-15);
+    EXPECT_NEAR(b.start.q_equilibrium[b.problem.tip_dof], -50.0 * 0.5e-6 / (50.0 + kb), 1e-15);
 
     Case cc = vi::test::clamped_clamped(50);
     cc.initial.kind = vi::InitialState::Kind::rest;
@@ -123,7 +123,7 @@ TEST(ProblemBuilder, PrestressedSupportAboveAndClampedClampedBeam) {
     const double k_mid = 192.0 * cc.material.youngs_modulus * cc.beam.second_moment() / std::pow(cc.beam.length, 3);
     b = vi::build_transient_problem(cc);
     ASSERT_EQ(b.problem.tip_dof, pl(b).contacts[0].dof);  // no free end: watch mid-span
-    EXPECT_NEAR(b.q_equilibrium[b.problem.tip_dof], 50.0 * 0.5e-6 / (50.0 + k_mid), 1e-9 * 0.5e-6);
+    EXPECT_NEAR(b.start.q_equilibrium[b.problem.tip_dof], 50.0 * 0.5e-6 / (50.0 + k_mid), 1e-9 * 0.5e-6);
 }
 
 TEST(ProblemBuilder, LiftIntoASupportAboveIsAnInputError) {
@@ -150,8 +150,8 @@ TEST(ProblemBuilder, ForceStep) {
     const BuiltProblem b = vi::build_transient_problem(c);
     const double y = 2e-6 / tip_stiffness(c);
     EXPECT_NEAR(b.problem.q0[b.problem.tip_dof], y, 1e-9 * y);
-    EXPECT_NEAR(b.y0_m, y, 1e-9 * y);
-    EXPECT_EQ(b.static_force_n, 2e-6);
+    EXPECT_NEAR(b.start.y0_m, y, 1e-9 * y);
+    EXPECT_EQ(b.start.static_force_n, 2e-6);
 }
 
 TEST(ProblemBuilder, ContactDampingFromARatio) {
@@ -160,9 +160,9 @@ TEST(ProblemBuilder, ContactDampingFromARatio) {
     const BuiltProblem b = vi::build_transient_problem(c);
     const double rho_a_l = c.material.density * c.beam.area() * c.beam.length;
     const double expected = 2.0 * 0.1 * std::sqrt(50.0 * rho_a_l / 4.0);  // phi1(l)^2 = 4 / (rho A l)
-    EXPECT_NEAR(b.contact_damping[0], expected, 1e-6 * expected);
-    EXPECT_EQ(pl(b).contacts[0].damping, b.contact_damping[0]);
-    EXPECT_EQ(b.contact_stiffness, std::vector<double>{50.0});
+    EXPECT_NEAR(b.model.contact_damping[0], expected, 1e-6 * expected);
+    EXPECT_EQ(pl(b).contacts[0].damping, b.model.contact_damping[0]);
+    EXPECT_EQ(b.model.contact_stiffness, std::vector<double>{50.0});
 }
 
 TEST(ProblemBuilder, RayleighFromRatiosAtTheChosenModes) {
@@ -174,11 +174,11 @@ TEST(ProblemBuilder, RayleighFromRatiosAtTheChosenModes) {
     c.damping.mode2 = 3;
     const BuiltProblem b = vi::build_transient_problem(c);
     const vi::ModalResult modes = vi::analyse_modes(vi::build_system(c), 3);
-    EXPECT_NEAR(b.omega1, modes.bending[0].omega, 1e-9 * b.omega1);
-    EXPECT_NEAR(vi::rayleigh_ratio(b.rayleigh, modes.bending[0].omega), 0.01, 1e-9);
-    EXPECT_NEAR(vi::rayleigh_ratio(b.rayleigh, modes.bending[2].omega), 0.03, 1e-9);
-    EXPECT_EQ(b.problem.alpha, b.rayleigh.alpha);
-    EXPECT_EQ(b.problem.beta, b.rayleigh.beta);
+    EXPECT_NEAR(b.model.omega1, modes.bending[0].omega, 1e-9 * b.model.omega1);
+    EXPECT_NEAR(vi::rayleigh_ratio(b.model.rayleigh, modes.bending[0].omega), 0.01, 1e-9);
+    EXPECT_NEAR(vi::rayleigh_ratio(b.model.rayleigh, modes.bending[2].omega), 0.03, 1e-9);
+    EXPECT_EQ(b.problem.alpha, b.model.rayleigh.alpha);
+    EXPECT_EQ(b.problem.beta, b.model.rayleigh.beta);
 
     c.damping = {};
     c.damping.alpha = 100.0;
@@ -204,7 +204,7 @@ TEST(ProblemBuilder, InitialVelocities) {
     const Eigen::VectorXd mv = b.problem.M * b.problem.v0;
     const double w2 = kv.dot(b.problem.v0) / mv.dot(b.problem.v0);
     EXPECT_LT((kv - w2 * mv).norm(), 1e-8 * kv.norm());
-    EXPECT_GT(w2, 2.0 * b.omega1 * b.omega1);
+    EXPECT_GT(w2, 2.0 * b.model.omega1 * b.model.omega1);
 
     c.initial.velocity_mode = 500;
     EXPECT_EQ(build_error(c).rfind("initial.velocity_mode: mode 500 does not exist", 0), 0u) << build_error(c);
@@ -241,7 +241,7 @@ TEST(ProblemBuilder, ThePaperExampleFile) {
     EXPECT_EQ(pl(b).active0, std::vector<bool>{false});
     EXPECT_DOUBLE_EQ(b.problem.t_end, 150e-6);
     EXPECT_DOUBLE_EQ(b.problem.output_step, 10e-9);
-    EXPECT_GT(b.omega1, 0.0);
+    EXPECT_GT(b.model.omega1, 0.0);
 }
 
 TEST(ProblemBuilder, BadCasesAreInputErrors) {

@@ -9,8 +9,8 @@
 #include <numbers>
 #include <random>
 
-#include "dynamics/event_search.hpp"
-#include "dynamics/signal_scan.hpp"
+#include "dynamics/exact/event_search.hpp"
+#include "dynamics/exact/signal_scan.hpp"
 
 namespace vi {
 namespace {

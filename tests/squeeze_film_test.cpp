@@ -13,8 +13,8 @@
 #include <string>
 
 #include "case_text_fixture.hpp"
-#include "dynamics/cvode_solver.hpp"
-#include "dynamics/problem_builder.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
+#include "dynamics/transient_start.hpp"
 #include "forces/squeeze_film.hpp"
 #include "io/case_reader.hpp"
 #include "study/air/air_q.hpp"
@@ -40,7 +40,7 @@ const SqueezeFilm& film_of(const BuiltProblem& b) {
 
 // Whether element DOF i is a transverse displacement (not a rotation).
 bool is_v(const BuiltProblem& b, int dof) {
-    return b.system.free_dofs[static_cast<std::size_t>(b.system.bending[static_cast<std::size_t>(dof)])] % 3 == 1;
+    return b.model.system.free_dofs[static_cast<std::size_t>(b.model.system.bending[static_cast<std::size_t>(dof)])] % 3 == 1;
 }
 
 // A rigid strip of width w and length L at gap g moving at dg/dt has c = mu_eff w^3 L / g^3 in the
@@ -161,7 +161,7 @@ TEST(SqueezeFilm, QualityFactorOfThePaperCantileverFromARingDown) {
     const Case base = read_case_file(test::source_path("examples/paper/cantilever.toml"));
     const Case c = air_q_case(base, 1e-6);
     const double rhoA = 8902.0 * 30e-6 * 2e-6, w = 30e-6, g = 1e-6;
-    const double w1 = build_transient_problem(c).omega1;
+    const double w1 = build_beam_model(c).omega1;
     for (const double p : {101325.0, 1e4, 1e3, 100.0}) {
         const AirQPoint x = air_q_point(c, p);
         const double kn = 68e-9 * 101325.0 / p / g;

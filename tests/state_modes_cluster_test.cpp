@@ -9,8 +9,8 @@
 
 #include "impacts/simulation.hpp"
 #include "dynamics/piecewise_linear_form.hpp"
-#include "dynamics/problem_builder.hpp"
-#include "dynamics/state_modes.hpp"
+#include "dynamics/transient_start.hpp"
+#include "dynamics/exact/state_modes.hpp"
 #include "io/case_reader.hpp"
 #include "support/run_command.hpp"
 

@@ -7,8 +7,8 @@
 #include <cmath>
 
 #include "validation/reference_problems.hpp"
-#include "dynamics/secular.hpp"
-#include "dynamics/state_modes.hpp"
+#include "dynamics/exact/secular.hpp"
+#include "dynamics/exact/state_modes.hpp"
 #include "fem/system.hpp"
 #include "transient_fixtures.hpp"
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "bindings.hpp"
-#include "dynamics/pullin.hpp"
+#include "statics/pullin.hpp"
 #include "impacts/simulation.hpp"
 #include "io/case_reader.hpp"
 #include "modal/modal_analysis.hpp"

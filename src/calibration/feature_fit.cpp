@@ -5,8 +5,8 @@
 #include <optional>
 #include <variant>
 
-#include "dynamics/problem_builder.hpp"
-#include "dynamics/pullin.hpp"
+#include "dynamics/transient_start.hpp"
+#include "statics/pullin.hpp"
 #include "fem/rayleigh.hpp"
 #include "impacts/simulation.hpp"
 #include "model/case_checks.hpp"
@@ -23,7 +23,7 @@ bool from_transient(const std::string& name) {
 }
 
 // f1 [Hz] and Q1 of a built model.
-double modal_feature(const std::string& name, const BuiltProblem& b) {
+double modal_feature(const std::string& name, const BeamModel& b) {
     if (name == "f1_hz") return b.omega1 / (2.0 * std::numbers::pi);
     const double zeta = rayleigh_ratio(b.rayleigh, b.omega1);
     if (!(zeta > 0.0)) throw FeatureMissing("q1: the design's first mode is undamped (zeta_1 = 0: Q infinite)");
@@ -63,7 +63,7 @@ std::vector<double> model_features(const Case& base, const std::vector<FitParame
         pullin = pullin || f.name == "V_PI_V";
     }
     std::optional<SimulationRun> run;
-    std::optional<BuiltProblem> built;
+    std::optional<BeamModel> built;
     std::vector<SweepCell> cells;
     std::vector<SweepColumn> columns;
     if (transient) {
@@ -75,7 +75,7 @@ std::vector<double> model_features(const Case& base, const std::vector<FitParame
         cells = simulate_cells(*run);
         columns = sweep_result_columns(SweepAnalysis::simulate, 0);
     } else if (modal) {
-        built = build_transient_problem(c);
+        built = build_beam_model(c);
     }
     std::optional<double> v_pi;
     if (pullin) {
@@ -90,7 +90,7 @@ std::vector<double> model_features(const Case& base, const std::vector<FitParame
         if (f.name == "V_PI_V") {
             out.push_back(*v_pi);
         } else if (!from_transient(f.name)) {
-            out.push_back(modal_feature(f.name, run ? run->built : *built));
+            out.push_back(modal_feature(f.name, run ? run->built.model : *built));
         } else {
             std::optional<double> v;
             for (std::size_t k = 0; k < columns.size(); ++k) {

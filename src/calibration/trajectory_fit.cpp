@@ -4,7 +4,7 @@
 #include <cmath>
 #include <stdexcept>
 
-#include "dynamics/problem_builder.hpp"
+#include "dynamics/transient_start.hpp"
 #include "impacts/simulation.hpp"
 #include "model/case_checks.hpp"
 #include "io/text_file.hpp"
@@ -135,7 +135,7 @@ void check_start(const Case& base, const std::vector<FitParameter>& params, cons
 
 }  // namespace
 
-std::string watched_point_name(const Case& c) { return build_transient_problem(c).watched_name; }
+std::string watched_point_name(const Case& c) { return watched_point_of(c).name; }
 
 void check_trajectory_column(const Case& c, const std::string& column) {
     const std::string name = watched_point_name(c);

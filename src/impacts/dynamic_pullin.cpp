@@ -5,8 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "dynamics/cvode_solver.hpp"
-#include "dynamics/problem_builder.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
+#include "dynamics/transient_start.hpp"
 #include "model/input_error.hpp"
 #include "model/run_control.hpp"
 #include "model/run_estimate.hpp"
@@ -113,8 +113,8 @@ DynamicPullinResult dynamic_pullin(const Case& c, double static_voltage, const D
         // swings is held (its largest travel comes in the first swing, the damping only lowers the later).
         // omega1 does not depend on the horizon; any positive one builds.
         const double probe = c.solver.output_step > 0.0 ? c.solver.output_step : 1e-9;
-        const BuiltProblem b = build_transient_problem(stepped(c, static_voltage, probe, o.criterion));
-        out.horizon = 10.0 * 2.0 * std::numbers::pi / b.omega1;
+        const BeamModel m = build_beam_model(stepped(c, static_voltage, probe, o.criterion));
+        out.horizon = 10.0 * 2.0 * std::numbers::pi / m.omega1;
     }
     const auto trial = [&](double v) { return case_step_trial(c, v, out.horizon, o.criterion); };
     const StepBisection b = bisect_step_voltage(trial, o.lower_fraction * static_voltage, static_voltage, o.bisection);

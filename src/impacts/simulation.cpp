@@ -5,8 +5,8 @@
 #include <stdexcept>
 #include <string>
 
-#include "dynamics/cvode_solver.hpp"
-#include "dynamics/exact_give_up.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
+#include "dynamics/exact/exact_give_up.hpp"
 #include "model/input_error.hpp"
 #include "model/run_estimate.hpp"
 
@@ -72,9 +72,9 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
     }
     // Released at rest from its own static equilibrium with nothing acting after t = 0: nothing ever
     // moves, and that is the answer, not a horizon too short (shared/cases/rest_on_support.toml).
-    const double q_scale = std::max(run.built.q_equilibrium.lpNorm<Eigen::Infinity>(), p.q0.lpNorm<Eigen::Infinity>());
+    const double q_scale = std::max(run.built.start.q_equilibrium.lpNorm<Eigen::Infinity>(), p.q0.lpNorm<Eigen::Infinity>());
     const bool at_rest = !loaded && p.v0.isZero(0.0) &&
-                         (p.q0 - run.built.q_equilibrium).lpNorm<Eigen::Infinity>() <=
+                         (p.q0 - run.built.start.q_equilibrium).lpNorm<Eigen::Infinity>() <=
                              64.0 * std::numeric_limits<double>::epsilon() * q_scale;
     // Under voltage, a switch that never closes is an answer of its own (the switching ledger says so).
     const bool actuated = !c.electrodes.empty();
@@ -83,16 +83,16 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
                          std::to_string(p.t_end * 1e6) + " us)");
     }
     ImpactSettings s;
-    s.omega1 = run.built.omega1;
+    s.omega1 = run.built.model.omega1;
     s.group_gap = c.solver.group_gap;
     s.settle_tolerance = c.solver.settle_tolerance;
     s.group = c.solver.grouping == SolverSettings::Grouping::flights;
     s.settle_by_velocity = c.solver.settle_rule == SolverSettings::SettleRule::velocity;
     s.settle_velocity = c.solver.settle_velocity;
     s.length = c.beam.length;
-    if (p.tip_dof >= 0) s.tip_equilibrium = run.built.q_equilibrium[p.tip_dof];
+    if (p.tip_dof >= 0) s.tip_equilibrium = run.built.start.q_equilibrium[p.tip_dof];
     if (!contacts.empty()) {
-        s.contact_equilibrium = run.built.q_equilibrium[p.forces[static_cast<std::size_t>(contacts.front())]->dofs().front()];
+        s.contact_equilibrium = run.built.start.q_equilibrium[p.forces[static_cast<std::size_t>(contacts.front())]->dofs().front()];
     }
     run.summary = summarize_impacts(run.result, s);
     if (at_rest && run.summary.impacts.empty()) {
@@ -103,7 +103,7 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
         // The supports' contacts come first among the contacts, in case order.
         std::vector<std::optional<ContactHold>> holds(c.supports.size());
         for (std::size_t k = 0; k < c.supports.size(); ++k) {
-            if (c.supports[k].adhesion != Adhesion::none) holds[k] = contact_hold(run.built.system, c, k);
+            if (c.supports[k].adhesion != Adhesion::none) holds[k] = contact_hold(run.built.model.system, c, k);
         }
         // The electrodes' layers follow, in electrode order (dynamics/electrode_elements.hpp).
         std::vector<std::optional<LayerHold>> layers(c.supports.size());
@@ -112,7 +112,7 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
             layers.emplace_back();
             if (c.electrodes[k].work_of_adhesion) layers.back() = layer_hold(c, k);
         }
-        run.switching = switching_ledger(run.result, c.electrodes, run.built.omega1, holds, layers);
+        run.switching = switching_ledger(run.result, c.electrodes, run.built.model.omega1, holds, layers);
     }
     return run;
 }

@@ -6,8 +6,8 @@
 
 #include "impacts/impact_summary.hpp"
 #include "impacts/switching_ledger.hpp"
-#include "dynamics/exact_solver.hpp"
-#include "dynamics/problem_builder.hpp"
+#include "dynamics/exact/exact_solver.hpp"
+#include "dynamics/transient_start.hpp"
 #include "dynamics/transient_result.hpp"
 #include "model/case.hpp"
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/contact_hold.hpp"
-#include "dynamics/layer_hold.hpp"
+#include "statics/contact_hold.hpp"
+#include "statics/layer_hold.hpp"
 #include "dynamics/transient_result.hpp"
 #include "model/case.hpp"
 

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "dynamics/pullin.hpp"
+#include "statics/pullin.hpp"
 #include "impacts/dynamic_pullin.hpp"
 #include "io/output_files.hpp"
 

@@ -49,7 +49,7 @@ nlohmann::json resolved_case_json(const Case& c, const BuiltProblem& b, const Im
     j["beam"] = {{"length_m", c.beam.length},       {"width_m", c.beam.width},
                  {"thickness_m", c.beam.thickness}, {"elements", c.beam.elements},
                  {"left", end_name(c.beam.left)},   {"right", end_name(c.beam.right)},
-                 {"nodes", b.system.mesh.node_count()}, {"bending_dofs", b.problem.size()}};
+                 {"nodes", b.model.system.mesh.node_count()}, {"bending_dofs", b.problem.size()}};
     j["material"] = {{"youngs_modulus_pa", c.material.youngs_modulus},
                      {"density_kg_m3", c.material.density},
                      {"poisson_ratio", c.material.poisson_ratio},
@@ -61,20 +61,20 @@ nlohmann::json resolved_case_json(const Case& c, const BuiltProblem& b, const Im
         sup.push_back({{"position", p.position},
                        {"side", p.side == Side::below ? "below" : "above"},
                        {"surface_m", p.surface},
-                       {"stiffness_n_m", b.contact_stiffness.at(k)},
-                       {"damping_n_s_m", b.contact_damping.at(k)},
+                       {"stiffness_n_m", b.model.contact_stiffness.at(k)},
+                       {"damping_n_s_m", b.model.contact_damping.at(k)},
                        {"damping_ratio", p.damping_ratio ? nlohmann::json(*p.damping_ratio) : nlohmann::json(nullptr)}});
     }
     j["supports"] = sup;
-    j["damping"] = {{"alpha_1_s", b.rayleigh.alpha}, {"beta_s", b.rayleigh.beta},
+    j["damping"] = {{"alpha_1_s", b.model.rayleigh.alpha}, {"beta_s", b.model.rayleigh.beta},
                     {"from_ratios", c.damping.from_ratios}, {"ratios", {c.damping.ratio1, c.damping.ratio2}},
                     {"modes", {c.damping.mode1, c.damping.mode2}}};
     const char* kinds[] = {"rest", "displacement", "force"};
     const char* vkinds[] = {"none", "uniform", "mode"};
     j["initial"] = {{"kind", kinds[static_cast<int>(c.initial.kind)]},
                     {"position", c.initial.position},
-                    {"y0_m", b.y0_m},
-                    {"static_force_n", b.static_force_n},
+                    {"y0_m", b.start.y0_m},
+                    {"static_force_n", b.start.static_force_n},
                     {"velocity_shape", vkinds[static_cast<int>(c.initial.velocity_kind)]},
                     {"velocity_m_s", c.initial.velocity},
                     {"velocity_mode", c.initial.velocity_mode}};
@@ -93,10 +93,10 @@ nlohmann::json resolved_case_json(const Case& c, const BuiltProblem& b, const Im
                    {"min_search_step", c.solver.min_search_step},
                    {"max_events", c.solver.max_events},
                    {"max_steps", c.solver.max_steps}};
-    j["omega1_rad_s"] = b.omega1;
+    j["omega1_rad_s"] = b.model.omega1;
     if (c.air) {
         nlohmann::json films = nlohmann::json::array();
-        for (const FilmRegime& f : b.films) {
+        for (const FilmRegime& f : b.model.films) {
             films.push_back({{"name", f.name}, {"gap_m", f.gap}, {"knudsen", f.knudsen},
                              {"viscosity_ratio", f.viscosity_ratio}, {"squeeze_number", f.squeeze_number}});
         }
@@ -151,7 +151,7 @@ nlohmann::json switching_json(const SwitchingLedger& l) {
 
 nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, const TransientResult& r,
                                       const ImpactSummary& s, const SwitchingLedger* switching) {
-    const double w1 = b.omega1;
+    const double w1 = b.model.omega1;
     nlohmann::json j;
     j["omega1_rad_s"] = w1;
     nlohmann::json impacts = nlohmann::json::array();
@@ -175,7 +175,7 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
     j["tau_p"] = scaled(s.Tp, w1);
     j["cycles"] = {{"support", s.cycle_support}, {"T_s", s.T}, {"T1_s", s.T1}, {"T2_s", s.T2}};
     // y_max, z_max and tip_min are of this point (the free end, or mid-span of a bridge).
-    j["watched_point"] = {{"name", b.watched_name}, {"x_over_l", b.watched_x_over_l}};
+    j["watched_point"] = {{"name", b.model.watched.name}, {"x_over_l", b.model.watched.x_over_l}};
     j["y_max_m"] = opt(s.y_max);
     j["z_max"] = opt(s.z_max);
     j["y_max_contact_m"] = opt(s.y_max_contact);
@@ -248,7 +248,7 @@ CsvTable events_csv(const TransientResult& r, const ImpactSummary& s) {
 
 OutputFiles transient_files(const Case& c, const BuiltProblem& b, const TransientResult& r, const ImpactSummary& s,
                             const SwitchingLedger* switching) {
-    return {{"history.csv", history_csv(r, b.watched_name).str()},
+    return {{"history.csv", history_csv(r, b.model.watched.name).str()},
             {"events.csv", events_csv(r, s).str()},
             {"summary.json", transient_summary_json(c, b, r, s, switching).dump(2) + "\n"}};
 }

@@ -6,7 +6,7 @@
 
 #include "impacts/impact_summary.hpp"
 #include "impacts/switching_ledger.hpp"
-#include "dynamics/problem_builder.hpp"
+#include "dynamics/transient_start.hpp"
 #include "dynamics/transient_result.hpp"
 #include "io/csv_writer.hpp"
 #include "io/output_files.hpp"

@@ -13,9 +13,9 @@ std::optional<double> numeric_cell(const SweepCell& cell) {
 }
 namespace {
 
-SweepCell opt(const std::optional<double>& v) { return v ? SweepCell(*v) : SweepCell(); }
+SweepCell opt_cell(const std::optional<double>& v) { return v ? SweepCell(*v) : SweepCell(); }
 
-SweepCell scaled(const std::optional<double>& v, double k) { return v ? SweepCell(*v * k) : SweepCell(); }
+SweepCell scaled_cell(const std::optional<double>& v, double k) { return v ? SweepCell(*v * k) : SweepCell(); }
 
 std::string impact_prefix(int k) { return "impact" + std::to_string(k) + "_"; }
 
@@ -66,24 +66,24 @@ std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes)
 
 std::vector<SweepCell> simulate_cells(const SimulationRun& run) {
     const ImpactSummary& s = run.summary;
-    const double w1 = run.built.omega1;
+    const double w1 = run.built.model.omega1;
     std::vector<SweepCell> cells = {
         w1,
         static_cast<std::int64_t>(s.impacts.size()),
         static_cast<std::int64_t>(run.result.episodes.size()),
-        opt(s.T_first),
-        opt(s.T1_first),
-        opt(s.T2_first),
-        opt(s.Tp),
+        opt_cell(s.T_first),
+        opt_cell(s.T1_first),
+        opt_cell(s.T2_first),
+        opt_cell(s.Tp),
         s.Tp_reason,
-        scaled(s.T_first, w1),
-        scaled(s.T1_first, w1),
-        scaled(s.T2_first, w1),
-        scaled(s.Tp, w1),
-        opt(s.y_max),
-        opt(s.z_max),
-        opt(s.y_max_contact),
-        opt(s.tip_min),
+        scaled_cell(s.T_first, w1),
+        scaled_cell(s.T1_first, w1),
+        scaled_cell(s.T2_first, w1),
+        scaled_cell(s.Tp, w1),
+        opt_cell(s.y_max),
+        opt_cell(s.z_max),
+        opt_cell(s.y_max_contact),
+        opt_cell(s.tip_min),
         // Only the exact solver proves its event searches (CVODE's root finding may step over a
         // sign change unseen): empty for CVODE.
         run.result.stats.method == "exact" ? SweepCell(run.result.stats.unproven_excess) : SweepCell(),
@@ -92,10 +92,10 @@ std::vector<SweepCell> simulate_cells(const SimulationRun& run) {
     };
     // The switching ledger's headline; empty without electrodes (and where it has no such time).
     if (const auto& l = run.switching) {
-        cells.push_back(opt(l->closing_time));
+        cells.push_back(opt_cell(l->closing_time));
         cells.push_back(static_cast<std::int64_t>(l->bounces));
-        cells.push_back(opt(l->stable_contact));
-        cells.push_back(opt(l->release_time));
+        cells.push_back(opt_cell(l->stable_contact));
+        cells.push_back(opt_cell(l->release_time));
     } else {
         cells.insert(cells.end(), 4, SweepCell());
     }

@@ -3,7 +3,7 @@
 
 #include <memory>
 
-#include "dynamics/pullin.hpp"
+#include "statics/pullin.hpp"
 
 namespace vi {
 

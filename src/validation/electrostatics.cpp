@@ -5,7 +5,7 @@
 #include <sstream>
 #include <string>
 
-#include "dynamics/pullin.hpp"
+#include "statics/pullin.hpp"
 #include "io/case_reader.hpp"
 #include "validation/electrostatic_references.hpp"
 #include "validation/report.hpp"

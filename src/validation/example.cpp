@@ -35,7 +35,7 @@ std::optional<double> sampled_y_max(const SimulationRun& run) {
         if (!best || h.tip_v[i] > *best) best = h.tip_v[i];
     }
     if (!best) return std::nullopt;
-    return *best - run.built.q_equilibrium[run.built.problem.tip_dof];
+    return *best - run.built.start.q_equilibrium[run.built.problem.tip_dof];
 }
 
 }  // namespace

@@ -8,8 +8,8 @@
 
 #include "validation/loaded_oscillator.hpp"
 #include "validation/report.hpp"
-#include "dynamics/cvode_solver.hpp"
-#include "dynamics/exact_solver.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
+#include "dynamics/exact/exact_solver.hpp"
 
 namespace vi::validation_detail {
 

@@ -56,9 +56,9 @@ std::string paper_parameters_report(const ValidationOptions& o) {
     const SimulationRun base = run_fast(c);
     report_progress(o, "paper parameters: example run (" + fixed(seconds_since(t0), 1) + " s)");
     const ModalResult modes = analyse_modes(build_system(c), 5);
-    const double w1 = base.built.omega1;
+    const double w1 = base.built.model.omega1;
     const double period1 = 2.0 * std::numbers::pi / w1;
-    const double Cc = base.built.contact_damping.empty() ? sup.damping : base.built.contact_damping.front();
+    const double Cc = base.built.model.contact_damping.empty() ? sup.damping : base.built.model.contact_damping.front();
     const ImpactSummary& sm = base.summary;
 
     Table t{{"parameter", "value in the example", "why"}, {}};
@@ -81,7 +81,7 @@ std::string paper_parameters_report(const ValidationOptions& o) {
         t.add({"contact damper Cc (`supports[0].damping`)", num(Cc, 3) + " N s/m", "given directly in the case"});
     }
     if (c.damping.from_ratios) {
-        const RayleighCoefficients rc = base.built.rayleigh;
+        const RayleighCoefficients rc = base.built.model.rayleigh;
         std::string zetas;
         for (std::size_t i = 2; i < modes.bending.size(); ++i) {
             zetas += (i > 2 ? ", " : "") + std::string("zeta_") + std::to_string(i + 1) + " = " +
@@ -96,7 +96,7 @@ std::string paper_parameters_report(const ValidationOptions& o) {
                    zetas + "."});
     }
     t.add({"lift y0 (`initial.displacement`)", us(c.initial.displacement, 3) + " um (force " +
-                                                   num(base.built.static_force_n * 1e6, 4) + " uN at x/l = " +
+                                                   num(base.built.start.static_force_n * 1e6, 4) + " uN at x/l = " +
                                                    num(c.initial.position, 3) + ")",
            "With zero gap the model is positively homogeneous: scaling y0 scales every displacement and force "
            "and leaves every time (T, T1, T2, T_p) unchanged."});

@@ -12,8 +12,8 @@
 #include "model/run_control.hpp"
 #include "impacts/impact_summary.hpp"
 #include "validation/report.hpp"
-#include "dynamics/cvode_solver.hpp"
-#include "dynamics/exact_solver.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
+#include "dynamics/exact/exact_solver.hpp"
 
 namespace vi::validation_detail {
 namespace {

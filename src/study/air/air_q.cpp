@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "dynamics/cvode_solver.hpp"
-#include "dynamics/problem_builder.hpp"
+#include "dynamics/cvode/cvode_solver.hpp"
+#include "dynamics/transient_start.hpp"
 #include "modal/eigen_solver.hpp"
 #include "io/csv_writer.hpp"
 
@@ -63,11 +63,11 @@ AirQPoint air_q_point(const Case& base, double pressure, const AirQOptions& o) {
     // A mean free path the case states holds at its own pressure; kinetic theory scales it as 1/p.
     if (c.air->mean_free_path) c.air->mean_free_path = *c.air->mean_free_path * c.air->pressure / pressure;
     c.air->pressure = pressure;
-    BuiltProblem b = build_transient_problem(c);
-    TransientProblem& p = b.problem;
-    const double w1 = b.omega1;
-    const ModeSet modes = lowest_modes(p.K, p.M, 1);
-    Eigen::VectorXd phi = modes.shapes.col(0);
+    const BeamModel model = build_beam_model(c);
+    TransientProblem p = transient_problem(model, transient_start(c, model));
+    const double w1 = model.omega1;
+    // The model's first mode: lowest_modes of the same matrices, as the model computed it.
+    Eigen::VectorXd phi = model.modes.shapes.col(0);
     const double m1 = phi.dot(p.M * phi);
     double c1 = 0.0;
     for (const ForceElementPtr& e : p.forces) {
@@ -80,15 +80,15 @@ AirQPoint air_q_point(const Case& base, double pressure, const AirQOptions& o) {
     }
     AirQPoint out;
     out.pressure = pressure;
-    if (!b.films.empty()) {
-        out.knudsen = b.films.front().knudsen;
-        out.viscosity_ratio = b.films.front().viscosity_ratio;
-        out.squeeze_number = b.films.front().squeeze_number;
+    if (!model.films.empty()) {
+        out.knudsen = model.films.front().knudsen;
+        out.viscosity_ratio = model.films.front().viscosity_ratio;
+        out.squeeze_number = model.films.front().squeeze_number;
     }
     out.q_modal = w1 * m1 / c1;
 
     // Ring-down: the first mode alone, its tip moving at amplitude x gap x omega1.
-    const double gap = b.films.empty() ? 1e-6 : b.films.front().gap;
+    const double gap = model.films.empty() ? 1e-6 : model.films.front().gap;
     phi *= o.amplitude * gap * w1 / std::abs(phi[p.tip_dof]);
     p.v0 = phi;
     const double period = 2.0 * std::numbers::pi / w1;

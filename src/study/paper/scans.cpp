@@ -35,8 +35,8 @@ TransientPoint run_transient_point(const Case& c, double x) {
         const SimulationRun run = run_simulation(c, o);
         const ImpactSummary& s = run.summary;
         const double l = c.beam.length;
-        const double w1 = run.built.omega1;
-        const double eq = run.built.problem.tip_dof >= 0 ? run.built.q_equilibrium[run.built.problem.tip_dof] : 0.0;
+        const double w1 = run.built.model.omega1;
+        const double eq = run.built.problem.tip_dof >= 0 ? run.built.start.q_equilibrium[run.built.problem.tip_dof] : 0.0;
         pt.z_max = s.z_max;
         if (s.tip_min) pt.z_min = (*s.tip_min - eq) / l;
         pt.z_equilibrium = eq / l;
@@ -94,12 +94,12 @@ TypicalTransient run_typical_transient(const Case& c) {
     t.t = run.result.history.t;
     t.tip = run.result.history.tip_v;
     t.summary = run.summary;
-    t.omega1 = run.built.omega1;
-    t.tip_equilibrium = run.built.problem.tip_dof >= 0 ? run.built.q_equilibrium[run.built.problem.tip_dof] : 0.0;
-    t.y0 = run.built.y0_m;
-    t.support_damping = run.built.contact_damping.empty() ? 0.0 : run.built.contact_damping.front();
-    t.rayleigh_alpha = run.built.rayleigh.alpha;
-    t.rayleigh_beta = run.built.rayleigh.beta;
+    t.omega1 = run.built.model.omega1;
+    t.tip_equilibrium = run.built.problem.tip_dof >= 0 ? run.built.start.q_equilibrium[run.built.problem.tip_dof] : 0.0;
+    t.y0 = run.built.start.y0_m;
+    t.support_damping = run.built.model.contact_damping.empty() ? 0.0 : run.built.model.contact_damping.front();
+    t.rayleigh_alpha = run.built.model.rayleigh.alpha;
+    t.rayleigh_beta = run.built.model.rayleigh.beta;
     t.output_step = run.built.problem.output_step;
     return t;
 }
@@ -128,7 +128,7 @@ ImpactForce run_impact_force(const Case& c, double x0) {
         ImpactForce f;
         f.x0 = x0;
         f.impact = impacts.front();
-        f.omega1 = run.built.omega1;
+        f.omega1 = run.built.model.omega1;
         const TimeHistory& h = run.result.history;
         const double margin = 0.05 * (f.impact.t_off - f.impact.t_on);
         for (std::size_t i = 0; i < h.t.size(); ++i) {

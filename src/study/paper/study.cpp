@@ -15,7 +15,7 @@
 #include "model/parallel_for.hpp"
 #include "model/run_control.hpp"
 #include "study/paper/scans.hpp"
-#include "dynamics/problem_builder.hpp"
+#include "problem/beam_model.hpp"
 #include "fem/system.hpp"
 #include "model/input_error.hpp"
 
@@ -86,7 +86,7 @@ PaperStudy run_paper_study(const PaperStudyOptions& options) {
     st.free_modes = run_free_modes(cases.cantilever, options.free_modes);
     std::vector<double> free_omega;
     for (const Mode& m : st.free_modes.result.bending) free_omega.push_back(m.omega);
-    st.support_damping = build_transient_problem(cases.free_impact).contact_damping.at(0);
+    st.support_damping = build_beam_model(cases.free_impact).contact_damping.at(0);
     Case moving = cases.free_impact;
     moving.supports.front().damping = st.support_damping;
     moving.supports.front().damping_ratio.reset();

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "dynamics/problem_builder.hpp"
-#include "dynamics/static_minimum.hpp"
+#include "problem/beam_model.hpp"
+#include "statics/static_minimum.hpp"
 #include "forces/adhesive_layer_law.hpp"
 #include "study/stiction/stiction.hpp"
 
@@ -14,7 +14,7 @@ std::vector<LayerStiction> layer_stiction(const Case& c) {
     bool any = false;
     for (const Electrode& e : c.electrodes) any = any || (e.work_of_adhesion && e.dielectric_thickness > 0.0);
     if (!any) return out;
-    const BuiltProblem b = build_transient_problem(c);
+    const BeamModel b = build_beam_model(c);
     const bool cantilever = (c.beam.left == EndCondition::free) != (c.beam.right == EndCondition::free);
     const double EI = b.system.props.E * b.system.props.I;
     for (std::size_t k = 0; k < c.electrodes.size(); ++k) {
@@ -27,9 +27,9 @@ std::vector<LayerStiction> layer_stiction(const Case& c) {
         const AdhesiveLayerLaw law(stiffness, s.hold.adhesion_energy, e.adhesion_range);
         // Laid at the law's rest on the face, toward the electrode.
         const double sign = e.side == Side::above ? 1.0 : -1.0;
-        const Eigen::VectorXd start = held_flat(b.system, b.problem.K, s.hold.span_from, s.hold.span_to,
+        const Eigen::VectorXd start = held_flat(b.system, b.K, s.hold.span_from, s.hold.span_to,
                                                 sign * (s.hold.air_gap + law.rest_penetration()));
-        const StaticState settled = minimize_static_energy(b.problem.K, b.problem.forces,
+        const StaticState settled = minimize_static_energy(b.K, b.forces,
                                                            Eigen::VectorXd::Zero(start.size()), start,
                                                            c.solver.max_static_iterations);
         if (const auto touch = layer_contact(c, k, b.system, settled.q)) {

@@ -5,7 +5,7 @@
 #include <optional>
 #include <vector>
 
-#include "dynamics/layer_hold.hpp"
+#include "statics/layer_hold.hpp"
 #include "model/case.hpp"
 
 namespace vi {

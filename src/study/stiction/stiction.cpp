@@ -5,8 +5,8 @@
 #include <numbers>
 #include <stdexcept>
 
-#include "dynamics/contact_hold.hpp"
-#include "dynamics/layer_hold.hpp"
+#include "statics/contact_hold.hpp"
+#include "statics/layer_hold.hpp"
 #include "fem/system.hpp"
 #include "model/case_checks.hpp"
 #include "model/input_error.hpp"

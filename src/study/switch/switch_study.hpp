@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "dynamics/pullin.hpp"
+#include "statics/pullin.hpp"
 #include "impacts/simulation.hpp"
 #include "io/output_files.hpp"
 #include "model/case.hpp"

@@ -1,0 +1,508 @@
+#include "dynamics/cvode/cvode_solver.hpp"
+
+#include <cvode/cvode.h>
+#include <nvector/nvector_serial.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "dynamics/cvode/cvode_episodes.hpp"
+#include "dynamics/cvode/cvode_linear_solver.hpp"
+#include "dynamics/cvode/cvode_system.hpp"
+#include "dynamics/cvode/fast_nvector.hpp"
+#include "dynamics/piecewise_linear_form.hpp"
+#include "model/number_format.hpp"
+#include "model/run_control.hpp"
+
+namespace vi {
+namespace {
+
+using cvode_detail::ModalSystem;
+using Clock = std::chrono::steady_clock;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
+
+
+// True when a and b are the same instant up to a few ulps.
+bool same_time(double a, double b) { return std::abs(a - b) <= 8.0 * kEps * std::max({std::abs(a), std::abs(b), 1e-300}); }
+
+ModalBasis make_basis(const TransientProblem& p, const CvodeOptions& o) {
+    if (o.reduced_modes <= 0 || o.reduced_modes >= p.size()) return full_basis(p.K, p.M);
+    std::vector<Eigen::VectorXd> loads;
+    for (const ForceElementPtr& e : p.forces) {
+        for (const std::vector<double>& pattern : e->load_patterns()) {
+            Eigen::VectorXd f = Eigen::VectorXd::Zero(p.size());
+            for (std::size_t i = 0; i < pattern.size(); ++i) f[e->dofs()[i]] += pattern[i];
+            loads.push_back(std::move(f));
+        }
+    }
+    return reduced_basis(p.K, p.M, o.reduced_modes, loads, {p.q0, p.v0});
+}
+
+// SUNDIALS objects, freed in reverse order of creation.
+struct Sundials {
+    SUNContext ctx = nullptr;
+    N_Vector y = nullptr, tmp = nullptr, atol = nullptr;
+    SUNMatrix A = nullptr;
+    SUNLinearSolver LS = nullptr;
+    void* mem = nullptr;
+    Sundials() = default;
+    Sundials(const Sundials&) = delete;
+    Sundials& operator=(const Sundials&) = delete;
+    ~Sundials() {
+        if (mem) CVodeFree(&mem);
+        if (LS) SUNLinSolFree(LS);
+        if (A) SUNMatDestroy(A);
+        if (atol) N_VDestroy(atol);
+        if (tmp) N_VDestroy(tmp);
+        if (y) N_VDestroy(y);
+        if (ctx) SUNContext_Free(&ctx);
+    }
+};
+
+// Nothing below the command line prints: CVODE's messages are kept for the exception text.
+void error_fn(int code, const char* module, const char* function, char* msg, void* ud) {
+    if (code < 0) *static_cast<std::string*>(ud) = std::string(module) + "/" + function + ": " + msg;
+}
+
+// An element's refusal of a state (std::domain_error: the beam reaches an electrode) met inside a
+// callback on this thread; Driver::check throws it instead of CVODE's bare failure code, so the
+// caller learns what happened and can tell it from a numerical failure (dynamic pull-in does).
+thread_local std::string element_refusal;
+
+// CVODE callbacks; user_data is the ModalSystem. They never let an exception into the C library:
+// one becomes an unrecoverable error (-1) and CVODE fails.
+int rhs_fn(realtype t, N_Vector y, N_Vector ydot, void* ud) {
+    try {
+        static_cast<const ModalSystem*>(ud)->rhs(t, N_VGetArrayPointer(y), N_VGetArrayPointer(ydot));
+        return 0;
+    } catch (const std::domain_error& e) {
+        element_refusal = e.what();
+        return -1;
+    } catch (...) {
+        return -1;
+    }
+}
+
+int jac_fn(realtype t, N_Vector y, N_Vector, SUNMatrix J, void* ud, N_Vector, N_Vector, N_Vector) {
+    try {
+        cvode_detail::StructuredJacobian& j = cvode_detail::structured_content(J);
+        auto tangents = std::make_shared<cvode_detail::ElementTangents>();
+        static_cast<const ModalSystem*>(ud)->tangents(t, N_VGetArrayPointer(y), tangents->dfdq, tangents->dfdv);
+        j.tangents = std::move(tangents);
+        j.a = 1.0;
+        j.b = 0.0;
+        return 0;
+    } catch (const std::domain_error& e) {
+        element_refusal = e.what();
+        return -1;
+    } catch (...) {
+        return -1;
+    }
+}
+
+int root_fn(realtype t, N_Vector y, realtype* g, void* ud) {
+    try {
+        static_cast<const ModalSystem*>(ud)->root_functions(t, N_VGetArrayPointer(y), g);
+        return 0;
+    } catch (const std::domain_error& e) {
+        element_refusal = e.what();
+        return -1;
+    } catch (...) {
+        return -1;
+    }
+}
+
+class Driver {
+public:
+    Driver(const TransientProblem& p, const CvodeOptions& o) : p_(p), o_(o), sys_(p, make_basis(p, o)) {}
+    TransientResult run();
+
+private:
+    void check(int flag, const char* what) const;
+    void setup();
+    [[nodiscard]] double sample_time(std::size_t k) const;
+    void sample_until(double t_lim, bool interpolate);
+    void record(double t, const double* y);
+    double handle_roots(double tret);
+    [[nodiscard]] bool contact_closed() const;  // some contact element is in its contact mode
+    double locate_missed_switch(int e, double tret);
+    void toggle(double t, const std::vector<int>& which);
+    void restart(double t);
+    void add_counters();
+    // What a time limit reached during the integration reports (model/run_control.hpp).
+    [[nodiscard]] std::string progress() const;
+
+    const TransientProblem& p_;
+    CvodeOptions o_;
+    ModalSystem sys_;
+    Sundials s_;
+    std::string cvode_message_;
+    double t_final_ = p_.t_end;          // the horizon, or the first contact with stop_at_first_contact
+    int close_root_restarts_ = 0;  // restarts after CVODE's "root found at and very near t"
+    TransientResult r_;
+    std::vector<double> stops_;          // element breakpoints in (0, t_end), then t_end
+    std::size_t samples_ = 0, next_sample_ = 0;
+    std::vector<int> modes_;             // each element's mode
+    cvode_detail::EpisodeRecorder episodes_{sys_, r_};
+    // Energy that appears or vanishes in an element at a switch: a Kelvin-Voigt contact opening with
+    // d > 0 (the damped case: F = 0 before d = 0) drops 1/2 Kc d^2 from its stored energy. A massless
+    // element left alone relaxes through its damper, which dissipates exactly that, so it is booked
+    // as dissipated; a switch that stores energy (a contact closing with d > 0) takes it back.
+    double jump_ = 0.0;
+    long steps_done_ = 0, setups_done_ = 0;
+    double t_restart_ = 0.0, last_event_t_ = -1.0;
+    double t_done_ = 0.0;                // time of the last return of CVODE (all before is recorded)
+    int burst_ = 0;
+    int stalled_roots_ = 0;              // root returns in a row at one instant that switched nothing
+};
+
+void Driver::check(int flag, const char* what) const {
+    if (flag >= 0) return;
+    char* name = CVodeGetReturnFlagName(flag);
+    std::string msg = std::string("solve_cvode: ") + what + " failed (" + (name ? name : "?") + ")";
+    std::free(name);
+    if (!cvode_message_.empty()) msg += ": " + cvode_message_;
+    if (!element_refusal.empty()) {
+        std::string refusal;
+        refusal.swap(element_refusal);
+        throw std::domain_error(msg + "; " + refusal);
+    }
+    throw std::runtime_error(msg);
+}
+
+void Driver::setup() {
+    const int N = sys_.size();
+    if (SUNContext_Create(nullptr, &s_.ctx) != 0) throw std::runtime_error("solve_cvode: SUNContext_Create failed");
+    s_.y = cvode_detail::new_fast_vector(N, s_.ctx);
+    s_.tmp = cvode_detail::new_fast_vector(N, s_.ctx);
+    s_.atol = cvode_detail::new_fast_vector(N, s_.ctx);
+    if (!s_.y || !s_.tmp || !s_.atol) throw std::runtime_error("solve_cvode: out of memory");
+    s_.A = cvode_detail::structured_matrix(sys_, s_.ctx);
+    s_.LS = cvode_detail::structured_solver(sys_, s_.ctx);
+    s_.mem = CVodeCreate(CV_BDF, s_.ctx);
+    if (!s_.mem) throw std::runtime_error("solve_cvode: CVODE setup failed");
+    check(CVodeSetErrHandlerFn(s_.mem, error_fn, &cvode_message_), "CVodeSetErrHandlerFn");
+
+    Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(s_.y), N) = sys_.initial_state();
+    Eigen::Map<Eigen::VectorXd>(N_VGetArrayPointer(s_.atol), N) = sys_.absolute_tolerances(o_.rtol * o_.atol_ratio);
+    check(CVodeInit(s_.mem, rhs_fn, 0.0, s_.y), "CVodeInit");
+    check(CVodeSVtolerances(s_.mem, o_.rtol, s_.atol), "CVodeSVtolerances");
+    check(CVodeSetUserData(s_.mem, &sys_), "CVodeSetUserData");
+    check(CVodeSetLinearSolver(s_.mem, s_.LS, s_.A), "CVodeSetLinearSolver");
+    check(CVodeSetJacFn(s_.mem, jac_fn), "CVodeSetJacFn");
+    check(CVodeSetMaxNumSteps(s_.mem, std::min<long>(o_.max_steps, std::numeric_limits<int>::max())), "CVodeSetMaxNumSteps");
+    check(CVodeSetMaxHnilWarns(s_.mem, -1), "CVodeSetMaxHnilWarns");
+    check(CVodeRootInit(s_.mem, sys_.roots(), root_fn), "CVodeRootInit");
+    check(CVodeSetNoInactiveRootWarn(s_.mem), "CVodeSetNoInactiveRootWarn");
+    restart(0.0);  // sets the root directions; a reinit at t0 with y0 is a no-op otherwise
+}
+
+double Driver::sample_time(std::size_t k) const {
+    if (samples_ == 2 && !(p_.output_step > 0.0)) return k == 0 ? 0.0 : p_.t_end;
+    return std::min(static_cast<double>(k) * p_.output_step, p_.t_end);
+}
+
+// Records every sample time <= t_lim: at t_lim from the current y, before it from CVODE's
+// interpolating polynomial of the last step (dense output; the step sequence is not touched).
+void Driver::sample_until(double t_lim, bool interpolate) {
+    for (; next_sample_ < samples_ && sample_time(next_sample_) <= t_lim; ++next_sample_) {
+        const double ts = sample_time(next_sample_);
+        if (!interpolate || same_time(ts, t_lim)) {
+            record(ts, N_VGetArrayPointer(s_.y));
+        } else {
+            check(CVodeGetDky(s_.mem, ts, 0, s_.tmp), "CVodeGetDky");
+            record(ts, N_VGetArrayPointer(s_.tmp));
+        }
+    }
+}
+
+void Driver::record(double t, const double* y) {
+    TimeHistory& h = r_.history;
+    h.t.push_back(t);
+    h.tip_v.push_back(sys_.tip(y));
+    h.tip_velocity.push_back(sys_.tip_velocity(y));
+    for (std::size_t j = 0; j < sys_.contacts().size(); ++j) {
+        const int e = sys_.contacts()[j];
+        const ContactReading c = sys_.reading(e, t, y);
+        h.contact_v[j].push_back(sys_.contact_displacement(static_cast<int>(j), y));
+        h.contact_velocity[j].push_back(c.point_velocity);
+        h.contact_force[j].push_back(modes_[static_cast<std::size_t>(e)] == sys_.element(e).contact_mode() ? c.force : 0.0);
+    }
+    if (o_.energy_history) h.energy.push_back(sys_.energy(t, y, jump_));
+}
+
+double Driver::handle_roots(double tret) {
+    std::vector<int> info(static_cast<std::size_t>(sys_.roots()), 0);
+    check(CVodeGetRootInfo(s_.mem, info.data()), "CVodeGetRootInfo");
+    const double* y = N_VGetArrayPointer(s_.y);
+    double t_ev = tret;
+    std::vector<int> which;
+    // Guard: an element whose watch function has a root (for a contact: a maximum of d) and whose
+    // switching function is positive there switched earlier in this step without CVODE seeing the
+    // switching function change sign at the step ends (d up through 0 and back within one step).
+    for (int e = 0; e < sys_.elements(); ++e) {
+        const ForceElement& el = sys_.element(e);
+        if (sys_.switch_root(e) < 0 || el.watch_count() == 0) continue;
+        if (info[static_cast<std::size_t>(sys_.switch_root(e))] != 0) continue;
+        bool watched = false;
+        for (int k = 0; k < el.watch_count(); ++k) watched = watched || info[static_cast<std::size_t>(sys_.watch_root(e) + k)] != 0;
+        if (!watched || sys_.switching_function(e, modes_[static_cast<std::size_t>(e)], tret, y) <= 0.0) continue;
+        const double tc = locate_missed_switch(e, tret);
+        if (which.empty() || tc < t_ev) {
+            which = {e};
+            t_ev = tc;
+        } else if (same_time(tc, t_ev)) {
+            which.push_back(e);
+        }
+    }
+    if (!which.empty()) {
+        check(CVodeGetDky(s_.mem, t_ev, 0, s_.y), "CVodeGetDky");
+    } else {
+        for (int e = 0; e < sys_.elements(); ++e) {
+            if (sys_.switch_root(e) >= 0 && info[static_cast<std::size_t>(sys_.switch_root(e))] != 0) which.push_back(e);
+        }
+    }
+    sample_until(t_ev, true);
+    episodes_.update_peaks(t_ev, N_VGetArrayPointer(s_.y));
+    episodes_.update_extremes(t_ev, N_VGetArrayPointer(s_.y), modes_);
+    if (!which.empty()) toggle(t_ev, which);
+    episodes_.update_extremes(t_ev, N_VGetArrayPointer(s_.y), modes_);
+    return t_ev;
+}
+
+// Bisection on the dense output of the last step for the instant element e's switching function
+// turned positive (negative at the step start, positive at tret). Returns the first point found on
+// the positive side, to a few ulps.
+double Driver::locate_missed_switch(int e, double tret) {
+    double tcur = 0.0, hlast = 0.0;
+    check(CVodeGetCurrentTime(s_.mem, &tcur), "CVodeGetCurrentTime");
+    check(CVodeGetLastStep(s_.mem, &hlast), "CVodeGetLastStep");
+    // Not before the previous return either: what lies before it is already recorded.
+    double lo = std::max({tcur - hlast, t_restart_, t_done_}), hi = tret;
+    const int mode = modes_[static_cast<std::size_t>(e)];
+    check(CVodeGetDky(s_.mem, lo, 0, s_.tmp), "CVodeGetDky");
+    if (sys_.switching_function(e, mode, lo, N_VGetArrayPointer(s_.tmp)) > 0.0) return lo;
+    for (int it = 0; it < 200 && !same_time(lo, hi); ++it) {
+        const double mid = 0.5 * (lo + hi);
+        check(CVodeGetDky(s_.mem, mid, 0, s_.tmp), "CVodeGetDky");
+        (sys_.switching_function(e, mode, mid, N_VGetArrayPointer(s_.tmp)) > 0.0 ? hi : lo) = mid;
+    }
+    return hi;
+}
+
+void Driver::toggle(double t, const std::vector<int>& which) {
+    const double* y = N_VGetArrayPointer(s_.y);
+    for (int e : which) {
+        const std::size_t ue = static_cast<std::size_t>(e);
+        const ForceElement& el = sys_.element(e);
+        const int from = modes_[ue];
+        const int to = el.mode_after_switch(from);
+        jump_ -= sys_.stored_energy(e, to, t, y) - sys_.stored_energy(e, from, t, y);
+        episodes_.on_switch(e, from, to, t, y);
+        modes_[ue] = to;
+        ++r_.stats.events;
+    }
+    if (r_.stats.events > o_.max_events) {
+        throw WorkLimitReached("solve_cvode: more than solver.max_events = " + std::to_string(o_.max_events) +
+                               " contact switches before the horizon (at t = " + std::to_string(t * 1e6) +
+                               " us; raise solver.max_events or shorten solver.horizon)");
+    }
+    // A run of switches that makes no progress in time (Zeno chatter) would never end.
+    burst_ = same_time(t, last_event_t_) ? burst_ + 1 : 0;
+    last_event_t_ = t;
+    if (burst_ > 1000) {
+        throw std::runtime_error("solve_cvode: " + sys_.element(which.front()).name() +
+                                 " switches without progress in time (Zeno) at t = " + std::to_string(t * 1e6) + " us");
+    }
+    sys_.set_modes(modes_);
+    restart(t);
+}
+
+bool Driver::contact_closed() const {
+    for (int e : sys_.contacts()) {
+        if (modes_[static_cast<std::size_t>(e)] == sys_.element(e).contact_mode()) return true;
+    }
+    return false;
+}
+
+void Driver::add_counters() {
+    long nst = 0, nsetups = 0;
+    check(CVodeGetNumSteps(s_.mem, &nst), "CVodeGetNumSteps");
+    check(CVodeGetNumLinSolvSetups(s_.mem, &nsetups), "CVodeGetNumLinSolvSetups");
+    steps_done_ += nst;
+    setups_done_ += nsetups;
+}
+
+// CVodeReInit resets the step counters, so they are collected first; it also forces a new Jacobian
+// (the elements' tangents change with their modes). A root function exactly 0 at the restart
+// instant is held inactive by CVODE until it moves away from 0; one that is a rounding error on the
+// wrong side moves the wrong way and is filtered by its direction.
+void Driver::restart(double t) {
+    add_counters();
+    check(CVodeReInit(s_.mem, t, s_.y), "CVodeReInit");
+    std::vector<int> dir = sys_.root_directions();
+    check(CVodeSetRootDirection(s_.mem, dir.data()), "CVodeSetRootDirection");
+    t_restart_ = t;
+}
+
+// The time reached, CVODE's steps so far and its last step, and the closest contact gap at that
+// time (negative: a penetration): computed only when a time limit is reached.
+std::string Driver::progress() const {
+    std::string out = "CVODE had reached t = " + significant(t_done_, 6) + " s of " + significant(p_.t_end, 6) + " s";
+    long steps = 0;
+    double h = 0.0;
+    if (s_.mem != nullptr && CVodeGetNumSteps(s_.mem, &steps) == CV_SUCCESS) {
+        out += " in " + std::to_string(steps_done_ + steps) + " steps";
+    }
+    if (s_.mem != nullptr && CVodeGetLastStep(s_.mem, &h) == CV_SUCCESS && h > 0.0) out += "; last step " + significant(h, 3) + " s";
+    double gap = std::numeric_limits<double>::infinity();
+    for (const int e : sys_.contacts()) gap = std::min(gap, -sys_.reading(e, t_done_, N_VGetArrayPointer(s_.y)).penetration);
+    if (std::isfinite(gap)) out += "; closest contact gap " + significant(gap, 3) + " m (negative: penetration)";
+    return out;
+}
+
+TransientResult Driver::run() {
+    const auto t_setup = Clock::now();
+    const std::size_t nc = sys_.contacts().size();
+    stops_ = breakpoints(p_.forces, 0.0, p_.t_end);
+    stops_.push_back(p_.t_end);
+    samples_ = p_.output_step > 0.0 ? static_cast<std::size_t>(std::floor(p_.t_end / p_.output_step * (1.0 + 1e-12))) + 1
+                                    : 2;
+    r_.history.contact_v.resize(nc);
+    r_.history.contact_velocity.resize(nc);
+    r_.history.contact_force.resize(nc);
+    const Eigen::VectorXd y0 = sys_.initial_state();
+    const std::vector<int> start = sys_.initial_modes(y0.data());
+    modes_.assign(start.size(), 0);
+    sys_.set_modes(modes_);
+    sys_.set_segment_end(stops_.front());
+    setup();
+    r_.stats.decomposition_s = seconds_since(t_setup);  // basis, tolerance scales, CVODE setup
+
+    // Wall time: the whole integration, steps, root finding (inside CVODE's step, not separable),
+    // restarts and sampling, is propagation_s; event_location_s stays 0.
+    const auto t_run = Clock::now();
+    std::vector<int> switched;
+    for (std::size_t e = 0; e < start.size(); ++e) {
+        if (start[e] != 0) switched.push_back(static_cast<int>(e));
+    }
+    // Elements in another mode at t = 0 are the initial state: they switch at once, counted as no
+    // event and with no energy jump.
+    if (!switched.empty()) {
+        for (int e : switched) {
+            // mode_after_switch toggles two-mode elements; an element with more modes is set directly.
+            if (sys_.element(e).modes() > 2) modes_[static_cast<std::size_t>(e)] = start[static_cast<std::size_t>(e)];
+        }
+        std::vector<int> toggled;
+        for (int e : switched) {
+            if (sys_.element(e).modes() <= 2) toggled.push_back(e);
+        }
+        if (!toggled.empty()) toggle(0.0, toggled);
+        sys_.set_modes(modes_);
+    }
+    r_.stats.events = 0;
+    burst_ = 0;
+    jump_ = 0.0;
+    r_.initial_energy = sys_.energy(0.0, y0.data(), jump_);
+    sample_until(0.0, false);
+
+    double t = 0.0;
+    std::size_t seg = 0;
+    const ProgressNote note([this] { return progress(); });
+    for (;;) {
+        const double t_stop = stops_[seg];
+        if (t >= t_stop || same_time(t, t_stop)) {  // reached a stop: the end, or a breakpoint
+            sample_until(t_stop, false);
+            if (seg + 1 == stops_.size()) break;
+            sys_.set_segment_end(stops_[++seg]);
+            restart(t);
+            continue;
+        }
+        check(CVodeSetStopTime(s_.mem, t_stop), "CVodeSetStopTime");
+        double tret = t;
+        const int flag = CVode(s_.mem, t_stop, s_.y, &tret, CV_ONE_STEP);
+        // A root function that stays exactly 0 just after a root it returned (a velocity at the
+        // noise level of a stiff start, e.g. a distributed force switched on at t = 0) makes CVODE
+        // refuse to go on; a restart there holds that function inactive until it moves away from 0.
+        if (flag == CV_ILL_INPUT && cvode_message_.find("very near") != std::string::npos && close_root_restarts_ < 1000) {
+            ++close_root_restarts_;
+            cvode_message_.clear();
+            restart(t);
+            continue;
+        }
+        check(flag, "CVode");
+        long nst = 0;
+        check(CVodeGetNumSteps(s_.mem, &nst), "CVodeGetNumSteps");
+        if (steps_done_ + nst > o_.max_steps) {
+            throw WorkLimitReached("solve_cvode: more than solver.max_steps = " + std::to_string(o_.max_steps) +
+                                   " steps before the horizon (at t = " + std::to_string(tret * 1e6) +
+                                   " us; raise solver.max_steps, or loosen solver.rtol)");
+        }
+        check_run();
+        if (flag == CV_ROOT_RETURN) {
+            const int events_before = r_.stats.events;
+            t = handle_roots(tret);
+            // Watch functions at the rounding level (a velocity of 1e-23 m/s just after a start at
+            // rest) can make CVODE return the same root again and again without stepping. A restart
+            // there forgets the step history and holds a function that is exactly 0 inactive.
+            if (r_.stats.events == events_before && same_time(t, t_done_)) {
+                if (++stalled_roots_ > 100) {
+                    throw std::runtime_error("solve_cvode: root finding makes no progress in time at t = " +
+                                             std::to_string(t * 1e6) +
+                                             " us (a watch function stays at the rounding level; tighten solver.rtol)");
+                }
+                restart(t);
+            } else {
+                stalled_roots_ = 0;
+            }
+            if (o_.stop_at_first_contact && contact_closed()) {
+                sample_until(t, false);
+                t_final_ = t;
+                break;
+            }
+        } else {
+            sample_until(tret, true);
+            episodes_.update_peaks(tret, N_VGetArrayPointer(s_.y));
+            episodes_.update_extremes(tret, N_VGetArrayPointer(s_.y), modes_);
+            t = flag == CV_TSTOP_RETURN ? t_stop : tret;
+        }
+        t_done_ = t;
+    }
+    add_counters();
+
+    const double* y = N_VGetArrayPointer(s_.y);
+    episodes_.close_at_end(t_final_, y);
+    r_.final_energy = sys_.energy(t_final_, y, jump_);
+    r_.t_end = t_final_;
+    r_.stats.method = "cvode";
+    r_.stats.basis_vectors = sys_.basis_size();
+    r_.stats.basis_modes = sys_.basis().modes;
+    r_.stats.initial_projection_error = sys_.initial_projection_error();
+    r_.stats.steps = static_cast<int>(std::min<long>(steps_done_, std::numeric_limits<int>::max()));
+    // For CVODE, "decompositions" counts the factorisations of the Newton matrix (linear solver setups).
+    r_.stats.decompositions = static_cast<int>(std::min<long>(setups_done_, std::numeric_limits<int>::max()));
+    r_.stats.propagation_s = seconds_since(t_run);
+    return std::move(r_);
+}
+
+}  // namespace
+
+TransientResult solve_cvode(const TransientProblem& p, const CvodeOptions& o) {
+    cvode_detail::validate(p);
+    element_refusal.clear();
+    Driver driver(p, o);
+    return driver.run();
+}
+
+TransientResult solve_cvode(const PiecewiseLinearProblem& p, const CvodeOptions& o) {
+    return solve_cvode(transient_problem_of(p), o);
+}
+
+}  // namespace vi

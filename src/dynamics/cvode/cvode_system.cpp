@@ -1,0 +1,393 @@
+#include "dynamics/cvode/cvode_system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace vi::cvode_detail {
+
+namespace {
+
+using ConstVec = Eigen::Map<const Eigen::VectorXd>;
+
+// The basis rows of the given DOFs.
+Eigen::MatrixXd rows_of(const Eigen::MatrixXd& phi, const std::vector<int>& dofs) {
+    Eigen::MatrixXd out(static_cast<Eigen::Index>(dofs.size()), phi.cols());
+    for (std::size_t k = 0; k < dofs.size(); ++k) out.row(static_cast<Eigen::Index>(k)) = phi.row(dofs[k]);
+    return out;
+}
+
+}  // namespace
+
+ModalSystem::ModalSystem(const TransientProblem& p, ModalBasis basis)
+    : p_(p), basis_(std::move(basis)), r_(basis_.size()), contacts_(contact_indices(p.forces)), t_limit_(p.t_end) {
+    w2_ = basis_.omega.cwiseAbs2();
+    d_ = (p.alpha + p.beta * w2_.array()).matrix();
+    for (const ForceElementPtr& e : p.forces) rows_.push_back(rows_of(basis_.phi, e->dofs()));
+    std::vector<int> all;
+    for (const ForceElementPtr& e : p.forces) all.insert(all.end(), e->dofs().begin(), e->dofs().end());
+    std::sort(all.begin(), all.end());
+    all.erase(std::unique(all.begin(), all.end()), all.end());
+    union_rows_ = rows_of(basis_.phi, all);
+    for (const ForceElementPtr& e : p.forces) {
+        std::vector<int> at;
+        for (int d : e->dofs()) at.push_back(static_cast<int>(std::lower_bound(all.begin(), all.end(), d) - all.begin()));
+        local_.push_back(std::move(at));
+    }
+    uf_.resize(union_rows_.rows());
+    tip_row_ = basis_.phi.row(p.tip_dof);
+    int root = 0;
+    for (const ForceElementPtr& e : p.forces) {
+        switch_root_.push_back(e->modes() > 1 ? root++ : -1);
+        watch_root_.push_back(root);
+        root += e->watch_count();
+    }
+    roots_ = root + 2;
+    modes_.assign(p.forces.size(), 0);
+    acc_.resize(r_);
+}
+
+std::vector<int> ModalSystem::root_directions() const {
+    std::vector<int> dir(static_cast<std::size_t>(roots_), 0);
+    for (std::size_t e = 0; e < p_.forces.size(); ++e) {
+        if (switch_root_[e] >= 0) dir[static_cast<std::size_t>(switch_root_[e])] = 1;
+        const std::vector<int> wd = p_.forces[e]->watch_directions();
+        for (std::size_t k = 0; k < wd.size(); ++k) dir[static_cast<std::size_t>(watch_root_[e]) + k] = wd[k];
+    }
+    return dir;
+}
+
+double ModalSystem::element_time(double t) const {
+    return t < t_limit_ ? t : std::nextafter(t_limit_, -std::numeric_limits<double>::infinity());
+}
+
+void ModalSystem::gather(int e, const double* y, const double* acc, Gathered& g) const {
+    const Eigen::MatrixXd& P = rows_[static_cast<std::size_t>(e)];
+    const Eigen::Index m = P.rows();
+    g.q.resize(static_cast<std::size_t>(m));
+    g.v.resize(static_cast<std::size_t>(m));
+    Eigen::Map<Eigen::VectorXd>(g.q.data(), m).noalias() = P * ConstVec(y, r_);
+    Eigen::Map<Eigen::VectorXd>(g.v.data(), m).noalias() = P * ConstVec(y + r_, r_);
+    if (acc) {
+        g.a.resize(static_cast<std::size_t>(m));
+        Eigen::Map<Eigen::VectorXd>(g.a.data(), m).noalias() = P * ConstVec(acc, r_);
+    }
+}
+
+void ModalSystem::gather_union(const double* y, const double* acc) const {
+    uq_.noalias() = union_rows_ * ConstVec(y, r_);
+    uv_.noalias() = union_rows_ * ConstVec(y + r_, r_);
+    if (acc) ua_.noalias() = union_rows_ * ConstVec(acc, r_);
+}
+
+void ModalSystem::pick(int e, bool acc, Gathered& g) const {
+    const std::vector<int>& at = local_[static_cast<std::size_t>(e)];
+    g.q.resize(at.size());
+    g.v.resize(at.size());
+    for (std::size_t k = 0; k < at.size(); ++k) {
+        g.q[k] = uq_[at[k]];
+        g.v[k] = uv_[at[k]];
+    }
+    if (acc) {
+        g.a.resize(at.size());
+        for (std::size_t k = 0; k < at.size(); ++k) g.a[k] = ua_[at[k]];
+    }
+}
+
+double ModalSystem::add_element_forces(double te, const double* y, Eigen::Map<Eigen::VectorXd>& acc,
+                                       double* work) const {
+    double dissipated = 0.0;
+    gather_union(y, nullptr);
+    uf_.setZero();
+    for (int e = 0; e < elements(); ++e) {
+        const ForceElement& el = element(e);
+        pick(e, false, scratch_);
+        const ElementState s{te, scratch_.q.data(), scratch_.v.data(), nullptr};
+        const int mode = modes_[static_cast<std::size_t>(e)];
+        force_.assign(scratch_.q.size(), 0.0);
+        dissipated += el.add_force_and_power(s, mode, force_.data());
+        const std::vector<int>& at = local_[static_cast<std::size_t>(e)];
+        for (std::size_t k = 0; k < at.size(); ++k) uf_[at[k]] += force_[k];
+        if (work) *work += el.input_power(s, mode);
+    }
+    acc.noalias() += union_rows_.transpose() * uf_;
+    return dissipated;
+}
+
+void ModalSystem::rhs(double t, const double* y, double* ydot) const {
+    const ConstVec eta(y, r_), vel(y + r_, r_);
+    Eigen::Map<Eigen::VectorXd>(ydot, r_) = vel;
+    Eigen::Map<Eigen::VectorXd> acc(ydot + r_, r_);
+    acc = -w2_.cwiseProduct(eta) - d_.cwiseProduct(vel);
+    const double te = element_time(t);
+    double work = 0.0;
+    const double dissipated = add_element_forces(te, y, acc, &work);
+    ydot[rayleigh_index()] = vel.dot(d_.cwiseProduct(vel));
+    ydot[dissipation_index()] = dissipated;
+    ydot[work_index()] = work;
+    for (std::size_t j = 0; j < contacts_.size(); ++j) {
+        const int e = contacts_[j];
+        const ForceElement& el = element(e);
+        double rate = 0.0;
+        if (modes_[static_cast<std::size_t>(e)] == el.contact_mode()) {
+            pick(e, false, scratch_);
+            rate = el.contact_reading(ElementState{te, scratch_.q.data(), scratch_.v.data(), nullptr}).force;
+        }
+        ydot[impulse_index(static_cast<int>(j))] = rate;
+    }
+}
+
+void ModalSystem::acceleration(double t, const double* y, Eigen::VectorXd& acc) const {
+    acc.resize(r_);
+    acc = -w2_.cwiseProduct(ConstVec(y, r_)) - d_.cwiseProduct(ConstVec(y + r_, r_));
+    Eigen::Map<Eigen::VectorXd> out(acc.data(), r_);
+    static_cast<void>(add_element_forces(element_time(t), y, out, nullptr));
+}
+
+bool ModalSystem::watches_need_acceleration() const {
+    for (int e = 0; e < elements(); ++e) {
+        const ForceElement& el = element(e);
+        if (el.watch_count() > 0 && el.watch_needs_acceleration(modes_[static_cast<std::size_t>(e)])) return true;
+    }
+    return false;
+}
+
+void ModalSystem::root_functions(double t, const double* y, double* g) const {
+    const double te = element_time(t);
+    // acceleration() leaves q and v on the union at y; only a is still to project.
+    const bool need = watches_need_acceleration();
+    if (need) {
+        acceleration(t, y, acc_);
+        ua_.noalias() = union_rows_ * acc_;
+    } else {
+        gather_union(y, nullptr);
+    }
+    for (int e = 0; e < elements(); ++e) {
+        const ForceElement& el = element(e);
+        const std::size_t ue = static_cast<std::size_t>(e);
+        if (switch_root_[ue] < 0 && el.watch_count() == 0) continue;
+        pick(e, need, scratch_);
+        const ElementState s{te, scratch_.q.data(), scratch_.v.data(), need ? scratch_.a.data() : nullptr};
+        if (switch_root_[ue] >= 0) g[switch_root_[ue]] = el.switching_function(s, modes_[ue]);
+        if (el.watch_count() > 0) el.watch_functions(s, modes_[ue], g + watch_root_[ue]);
+    }
+    g[extreme_root()] = tip_velocity(y);
+    if (contacts_.empty()) {
+        g[extreme_root() + 1] = 1.0;
+    } else {
+        pick(contacts_.front(), false, scratch_);
+        g[extreme_root() + 1] =
+            element(contacts_.front()).contact_reading(ElementState{te, scratch_.q.data(), scratch_.v.data(), nullptr}).point_velocity;
+    }
+}
+
+void ModalSystem::tangents(double t, const double* y, std::vector<Eigen::MatrixXd>& dfdq,
+                           std::vector<Eigen::MatrixXd>& dfdv) const {
+    const double te = element_time(t);
+    dfdq.resize(p_.forces.size());
+    dfdv.resize(p_.forces.size());
+    gather_union(y, nullptr);
+    for (int e = 0; e < elements(); ++e) {
+        const std::size_t ue = static_cast<std::size_t>(e);
+        pick(e, false, scratch_);
+        const Eigen::Index m = static_cast<Eigen::Index>(scratch_.q.size());
+        // Row-major blocks as the elements write them; Eigen's default is column-major.
+        Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> q = Eigen::MatrixXd::Zero(m, m);
+        Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> v = Eigen::MatrixXd::Zero(m, m);
+        element(e).add_tangent(ElementState{te, scratch_.q.data(), scratch_.v.data(), nullptr}, modes_[ue], q.data(),
+                               v.data());
+        dfdq[ue] = q;
+        dfdv[ue] = v;
+    }
+}
+
+double ModalSystem::switching_function(int e, int mode, double t, const double* y) const {
+    gather(e, y, nullptr, scratch_);
+    return element(e).switching_function(ElementState{element_time(t), scratch_.q.data(), scratch_.v.data(), nullptr},
+                                         mode);
+}
+
+ContactReading ModalSystem::reading(int e, double t, const double* y) const {
+    gather(e, y, nullptr, scratch_);
+    return element(e).contact_reading(ElementState{element_time(t), scratch_.q.data(), scratch_.v.data(), nullptr});
+}
+
+double ModalSystem::stored_energy(int e, int mode, double t, const double* y) const {
+    gather(e, y, nullptr, scratch_);
+    return element(e).stored_energy(ElementState{element_time(t), scratch_.q.data(), scratch_.v.data(), nullptr},
+                                    mode);
+}
+
+double ModalSystem::contact_displacement(int j, const double* y) const {
+    const Eigen::MatrixXd& P = rows_[static_cast<std::size_t>(contacts_[static_cast<std::size_t>(j)])];
+    return P.row(0).dot(ConstVec(y, r_));
+}
+
+std::vector<int> ModalSystem::initial_modes(const double* y) const {
+    std::vector<int> modes(p_.forces.size(), 0);
+    for (int e = 0; e < elements(); ++e) {
+        const ForceElement& el = element(e);
+        const std::size_t ue = static_cast<std::size_t>(e);
+        gather(e, y, nullptr, scratch_);
+        const ElementState s{0.0, scratch_.q.data(), scratch_.v.data(), nullptr};
+        const int start = el.initial_mode(s);
+        modes[ue] = p_.modes0.size() == p_.forces.size() ? p_.modes0[ue] : start;
+        // A contact touching at t = 0 (d = 0 to roundoff) and moving in closes at once, as the exact
+        // solver's event search closes it: CVODE holds a root function that is zero at the start
+        // inactive, and would let the beam pass into the support (shared/cases/starts_in_contact.toml).
+        if (el.is_contact() && start == el.contact_mode()) modes[ue] = start;
+    }
+    return modes;
+}
+
+EnergyLedger ModalSystem::energy(double t, const double* y, double jump) const {
+    const ConstVec eta(y, r_), vel(y + r_, r_);
+    EnergyLedger e;
+    e.kinetic = 0.5 * vel.squaredNorm();
+    e.strain = 0.5 * eta.dot(w2_.cwiseProduct(eta));
+    for (int k = 0; k < elements(); ++k) {
+        const double stored = stored_energy(k, modes_[static_cast<std::size_t>(k)], t, y);
+        switch (element(k).stored_energy_kind()) {
+            case StoredEnergyKind::contact_spring: e.contact_spring += stored; break;
+            case StoredEnergyKind::electrical: e.electrical += stored; break;
+            case StoredEnergyKind::strain: e.strain += stored; break;
+        }
+    }
+    e.rayleigh_dissipated = y[rayleigh_index()];
+    e.contact_dissipated = y[dissipation_index()] + jump;
+    e.external_work = y[work_index()];
+    return e;
+}
+
+Eigen::VectorXd ModalSystem::initial_state() const {
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(size());
+    y.head(r_) = basis_.phi.transpose() * (p_.M * p_.q0);
+    y.segment(r_, r_) = basis_.phi.transpose() * (p_.M * p_.v0);
+    return y;
+}
+
+double ModalSystem::initial_projection_error() const {
+    if (basis_.full) return 0.0;
+    const double size = p_.q0.norm();
+    if (!(size > 0.0)) return 0.0;
+    const Eigen::VectorXd eta = basis_.phi.transpose() * (p_.M * p_.q0);
+    return (p_.q0 - basis_.phi * eta).norm() / size;
+}
+
+// Characteristic magnitudes (absolute tolerance = atol_scale times these):
+//  - w1: the lowest basis frequency;
+//  - length L: the largest of max|q0|, max|v0| / w1, each contact's penetration at q = 0 (its gap
+//    or prestress) and the static deflection under each prescribed force (force_scale times the
+//    flexibility sum_k phi_dk^2 / w_k^2 at its DOFs);
+//  - modal displacement: L / phi_ref, phi_ref the largest |phi| of the first five vectors at the
+//    watched point and the elements' DOFs (a unit of eta moves those points by about phi_ref), or
+//    |eta0_k| where larger;
+//  - modal velocity: w1 times that, or |eta0'_k| where larger (one scale for every vector: weighting
+//    the fast ones by their own w_k, an energy norm, saves a third of the steps at equal accuracy
+//    on the paper's transient, not enough to give up the simpler rule);
+//  - energies: the larger of the initial mechanical energy and 1/2 (w1 L / phi_ref)^2;
+//  - impulse of contact j: its force scale (|df/dq| L + |df/dv| w1 L, from its tangent in the
+//    contact mode) over w1.
+Eigen::VectorXd ModalSystem::absolute_tolerances(double atol_scale) const {
+    const Eigen::VectorXd y0 = initial_state();
+    // The lowest nonzero basis frequency; a body held only by its contacts has none, and then the
+    // contact's own frequency is the scale (its stiffness over the modal mass at its DOF).
+    double w1 = 0.0;
+    for (int k = 0; k < r_; ++k) {
+        if (basis_.omega[k] > 0.0) {
+            w1 = basis_.omega[k];
+            break;
+        }
+    }
+    if (!(w1 > 0.0)) {
+        std::vector<double> z;
+        for (int e : contacts_) {
+            const ForceElement& el = element(e);
+            const std::size_t m = el.dofs().size();
+            z.assign(m, 0.0);
+            std::vector<double> dq(m * m, 0.0), dv(m * m, 0.0);
+            el.add_tangent(ElementState{0.0, z.data(), z.data(), nullptr}, el.contact_mode(), dq.data(), dv.data());
+            const double flex = rows_[static_cast<std::size_t>(e)].row(0).squaredNorm();
+            w1 = std::max(w1, std::sqrt(std::abs(dq[0]) * flex));
+        }
+        if (!(w1 > 0.0)) w1 = 1.0;
+    }
+    double L = std::max(p_.q0.cwiseAbs().maxCoeff(), p_.v0.cwiseAbs().maxCoeff() / w1);
+    double phi_ref = std::abs(tip_row_.head(std::min(r_, 5)).cwiseAbs().maxCoeff());
+    std::vector<double> zero;
+    for (int e = 0; e < elements(); ++e) {
+        const ForceElement& el = element(e);
+        const Eigen::MatrixXd& P = rows_[static_cast<std::size_t>(e)];
+        phi_ref = std::max(phi_ref, P.leftCols(std::min(r_, 5)).cwiseAbs().maxCoeff());
+        zero.assign(el.dofs().size(), 0.0);
+        const ElementState s0{0.0, zero.data(), zero.data(), nullptr};
+        if (el.is_contact()) L = std::max(L, std::abs(el.contact_reading(s0).penetration));
+        if (el.force_scale() > 0.0) {
+            double flex = 0.0;  // rigid-body vectors (w = 0) have no static deflection to add
+            for (Eigen::Index i = 0; i < P.rows(); ++i) {
+                double sum = 0.0;
+                for (int k = 0; k < r_; ++k) {
+                    if (w2_[k] > 0.0) sum += P(i, k) * P(i, k) / w2_[k];
+                }
+                flex = std::max(flex, sum);
+            }
+            L = std::max(L, el.force_scale() * flex);
+        }
+    }
+    if (!(L > 0.0)) L = 1e-9;  // nothing moves; any small scale will do
+    if (!(phi_ref > 0.0)) phi_ref = 1.0;
+    const double eta_L = L / phi_ref;
+
+    Eigen::VectorXd scale(size());
+    // Each vector's tolerance is the one its error would meet in the physical DOFs: the RMS over the
+    // DOFs of phi_ik / s_i, s_i = max(|q0_i|, L) (rotations too: a fast vector bends the element
+    // ends, and it is their rotation that keeps its error small).
+    Eigen::VectorXd s_phys = p_.q0.cwiseAbs().cwiseMax(L);
+    const double n = static_cast<double>(p_.size());
+    for (int k = 0; k < r_; ++k) {
+        const double rms = std::sqrt(basis_.phi.col(k).cwiseQuotient(s_phys).squaredNorm() / n);
+        const double eta_k = rms > 0.0 ? 1.0 / rms : eta_L;
+        scale[k] = std::max(std::abs(y0[k]), eta_k);
+        scale[r_ + k] = std::max(std::abs(y0[r_ + k]), w1 * eta_k);
+    }
+    const double e0 = 0.5 * y0.segment(r_, r_).squaredNorm() + 0.5 * y0.head(r_).dot(w2_.cwiseProduct(y0.head(r_)));
+    const double energy = std::max(e0, 0.5 * (w1 * eta_L) * (w1 * eta_L));
+    scale[rayleigh_index()] = energy;
+    scale[dissipation_index()] = energy;
+    scale[work_index()] = energy;
+    for (std::size_t j = 0; j < contacts_.size(); ++j) {
+        const int e = contacts_[j];
+        const ForceElement& el = element(e);
+        const std::size_t m = el.dofs().size();
+        zero.assign(m, 0.0);
+        std::vector<double> dq(m * m, 0.0), dv(m * m, 0.0);
+        el.add_tangent(ElementState{0.0, zero.data(), zero.data(), nullptr}, el.contact_mode(), dq.data(), dv.data());
+        double kq = 0.0, kv = 0.0;
+        for (double x : dq) kq = std::max(kq, std::abs(x));
+        for (double x : dv) kv = std::max(kv, std::abs(x));
+        const double f = kq * L + kv * w1 * L;
+        scale[impulse_index(static_cast<int>(j))] = f > 0.0 ? f / w1 : energy / (w1 * L);
+    }
+    return atol_scale * scale;
+}
+
+void validate(const TransientProblem& p) {
+    const int n = p.size();
+    auto bad = [](const std::string& what) { throw std::invalid_argument("solve_cvode: " + what); };
+    if (n <= 0 || p.M.cols() != n || p.K.rows() != n || p.K.cols() != n) bad("M and K must be n x n, n > 0");
+    if (p.q0.size() != n || p.v0.size() != n) bad("q0 and v0 must have one entry per DOF");
+    if (!p.q0.allFinite() || !p.v0.allFinite()) bad("non-finite initial state");
+    if (!p.modes0.empty() && p.modes0.size() != p.forces.size()) bad("modes0 must have one entry per force element");
+    for (const ForceElementPtr& e : p.forces) {
+        for (int d : e->dofs()) {
+            if (d < 0 || d >= n) bad(e->name() + ": DOF out of range");
+        }
+    }
+    if (p.tip_dof < 0 || p.tip_dof >= n) bad("tip_dof out of range");
+    if (!(p.t_end > 0.0) || !std::isfinite(p.t_end)) bad("t_end must be positive");
+    if (!std::isfinite(p.output_step)) bad("output_step must be finite");
+}
+
+}  // namespace vi::cvode_detail

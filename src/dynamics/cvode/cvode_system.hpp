@@ -1,0 +1,135 @@
+#pragma once
+// ModalSystem: the first-order form CVODE integrates, in the coordinates of a ModalBasis (right-hand
+// side, the pieces of the Jacobian, root functions, element readings, energy). Internal to the CVODE
+// solver (dynamics/cvode_solver.*).
+
+#include <Eigen/Dense>
+#include <vector>
+
+#include "dynamics/cvode/modal_basis.hpp"
+#include "dynamics/transient_problem.hpp"
+#include "dynamics/transient_result.hpp"
+
+namespace vi::cvode_detail {
+
+// Layout of the CVODE state y, N = 2r + 3 + nc (r basis vectors, nc contact elements):
+//   [0, r)       eta                                   modal displacements [m sqrt(kg)]
+//   [r, 2r)      eta' = d eta / dt
+//   2r           integral of eta'^T D eta' dt          Rayleigh dissipation [J], D = diag(alpha + beta w^2)
+//   2r + 1       integral of the elements' dissipated power [J]
+//   2r + 2       integral of the elements' input power (external work) [J]
+//   2r + 3 + j   integral of F_j dt while contact j is closed: its impulse [N s]
+// eta'' = -w^2 eta - D eta' + sum_e P_e^T f_e(P_e eta, P_e eta', t), P_e the basis rows of element
+// e's DOFs. The quadratures feed nothing back.
+//
+// Root functions: per hybrid element its switching function (direction +1); per element its watch
+// functions (their own directions); then the velocities of the watched point and of the first
+// contact's point (direction 0: their zeros are the extremes of the displacements).
+class ModalSystem {
+public:
+    ModalSystem(const TransientProblem& p, ModalBasis basis);
+
+    [[nodiscard]] int basis_size() const { return r_; }
+    [[nodiscard]] int size() const { return 2 * r_ + 3 + static_cast<int>(contacts_.size()); }
+    [[nodiscard]] int elements() const { return static_cast<int>(p_.forces.size()); }
+    [[nodiscard]] const ForceElement& element(int e) const { return *p_.forces[static_cast<std::size_t>(e)]; }
+    [[nodiscard]] const std::vector<int>& contacts() const { return contacts_; }  // element index per contact
+    [[nodiscard]] const ModalBasis& basis() const { return basis_; }
+    [[nodiscard]] const Eigen::VectorXd& rayleigh() const { return d_; }  // alpha + beta w^2 per vector
+    [[nodiscard]] const Eigen::MatrixXd& rows(int e) const { return rows_[static_cast<std::size_t>(e)]; }
+    // The union of the elements' DOFs (elements overlap: a pad and its film share every DOF): its
+    // basis rows (|U| x r), and the position in it of each of element e's DOFs.
+    [[nodiscard]] const Eigen::MatrixXd& union_rows() const { return union_rows_; }
+    [[nodiscard]] const std::vector<int>& union_positions(int e) const { return local_[static_cast<std::size_t>(e)]; }
+
+    [[nodiscard]] int rayleigh_index() const { return 2 * r_; }
+    [[nodiscard]] int dissipation_index() const { return 2 * r_ + 1; }
+    [[nodiscard]] int work_index() const { return 2 * r_ + 2; }
+    [[nodiscard]] int impulse_index(int j) const { return 2 * r_ + 3 + j; }
+
+    [[nodiscard]] int roots() const { return roots_; }
+    [[nodiscard]] int switch_root(int e) const { return switch_root_[static_cast<std::size_t>(e)]; }  // -1: none
+    [[nodiscard]] int watch_root(int e) const { return watch_root_[static_cast<std::size_t>(e)]; }    // first one
+    [[nodiscard]] int extreme_root() const { return roots_ - 2; }
+    [[nodiscard]] std::vector<int> root_directions() const;
+
+    // The elements' modes of the current piece.
+    void set_modes(const std::vector<int>& modes) { modes_ = modes; }
+    [[nodiscard]] const std::vector<int>& modes() const { return modes_; }
+    // Element forces are evaluated at min(t, the left limit of t_stop): a jump at a stop belongs to
+    // the next segment, which starts after a reinit there.
+    void set_segment_end(double t_stop) { t_limit_ = t_stop; }
+
+    // CVODE callbacks on raw arrays of length size().
+    void rhs(double t, const double* y, double* ydot) const;
+    void root_functions(double t, const double* y, double* g) const;
+    // d f_e / d q_e and d f_e / d v_e of every element at y (row-major |D_e| x |D_e| each).
+    void tangents(double t, const double* y, std::vector<Eigen::MatrixXd>& dfdq, std::vector<Eigen::MatrixXd>& dfdv) const;
+
+    // Element e at y in mode `mode`: switching function, contact reading, stored energy.
+    [[nodiscard]] double switching_function(int e, int mode, double t, const double* y) const;
+    [[nodiscard]] ContactReading reading(int e, double t, const double* y) const;
+    [[nodiscard]] double stored_energy(int e, int mode, double t, const double* y) const;
+    // The mode each element starts in at y: the problem's modes0, turned to the contact mode where a
+    // contact's initial_mode says it touches and moves in.
+    [[nodiscard]] std::vector<int> initial_modes(const double* y) const;
+
+    // Displacement and velocity of the watched point and of a contact's point [m], [m/s].
+    [[nodiscard]] double tip(const double* y) const { return tip_row_.dot(Eigen::Map<const Eigen::VectorXd>(y, r_)); }
+    [[nodiscard]] double tip_velocity(const double* y) const {
+        return tip_row_.dot(Eigen::Map<const Eigen::VectorXd>(y + r_, r_));
+    }
+    [[nodiscard]] double contact_displacement(int j, const double* y) const;
+
+    // kinetic, strain, the elements' stored energy and the three integrals from y; `jump` is added to
+    // the dissipated energy (what a massless element loses when it switches; cvode_solver.cpp).
+    [[nodiscard]] EnergyLedger energy(double t, const double* y, double jump) const;
+
+    // y at t = 0: eta = phi^T M q0, eta' = phi^T M v0.
+    [[nodiscard]] Eigen::VectorXd initial_state() const;
+    // How far the basis is from the initial displacement: |q0 - phi eta0| / |q0| (0 for a full basis).
+    [[nodiscard]] double initial_projection_error() const;
+    // Absolute tolerance of each component: atol_scale times a characteristic magnitude.
+    [[nodiscard]] Eigen::VectorXd absolute_tolerances(double atol_scale) const;
+
+private:
+    struct Gathered {
+        std::vector<double> q, v, a;
+    };
+    void gather(int e, const double* y, const double* acc, Gathered& g) const;
+    // q, v (and a) at every DOF of the union once, then element e's share of them: each shared DOF
+    // is projected once per call instead of once per element.
+    void gather_union(const double* y, const double* acc) const;
+    void pick(int e, bool acc, Gathered& g) const;
+    [[nodiscard]] double element_time(double t) const;
+    // The modal accelerations at y without the ledger's integrals.
+    void acceleration(double t, const double* y, Eigen::VectorXd& acc) const;
+    // Adds the elements' generalised forces at y to acc and returns the power they dissipate (and
+    // adds the power they take in to *work unless null); leaves q and v on the union at y.
+    double add_element_forces(double te, const double* y, Eigen::Map<Eigen::VectorXd>& acc, double* work) const;
+    // Whether a watch function needs the accelerations in the elements' current modes.
+    [[nodiscard]] bool watches_need_acceleration() const;
+
+    const TransientProblem& p_;
+    ModalBasis basis_;
+    int r_ = 0;
+    Eigen::VectorXd w2_, d_;                 // omega^2, alpha + beta omega^2
+    std::vector<Eigen::MatrixXd> rows_;      // per element: basis rows of its DOFs (|D_e| x r)
+    Eigen::MatrixXd union_rows_;             // basis rows of the union of the elements' DOFs (|U| x r)
+    std::vector<std::vector<int>> local_;    // per element: positions of its DOFs in the union
+    Eigen::RowVectorXd tip_row_;
+    std::vector<int> contacts_;
+    std::vector<int> modes_;
+    std::vector<int> switch_root_, watch_root_;
+    int roots_ = 0;
+    double t_limit_ = 0.0;
+    mutable Gathered scratch_;
+    mutable Eigen::VectorXd uq_, uv_, ua_, uf_;  // on the union: q, v, a, summed element forces
+    mutable Eigen::VectorXd acc_;
+    mutable std::vector<double> force_;          // one element's force, in the order of its DOFs
+};
+
+// Throws std::invalid_argument when p is inconsistent (sizes, DOF indices, horizon).
+void validate(const TransientProblem& p);
+
+}  // namespace vi::cvode_detail

@@ -1,0 +1,271 @@
+#include "dynamics/exact/signal_scan.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <numeric>
+
+namespace vi {
+namespace {
+
+// Per point, one record per prefix of its live modes (index J = number of slow modes, 0..live):
+// f0 (upper bound of the slow modes' value), f1 (of their slope), mag (sum |v_k|), b2
+// (sum |v_k| |lambda_k|^2), and the |lambda| of live mode J (for the split by |lambda| h <= 2).
+constexpr int kF0 = 0, kF1 = 1, kMag = 2, kB2 = 3, kLambda = 4;
+
+// A mode is not evaluated once |v_k| falls below this fraction of the signal's size: its exact
+// magnitude still bounds it, so nothing is lost but a contribution far below roundoff of the sum.
+constexpr double kSkipFraction = 1e-18;
+
+// Largest s >= 0 with c0 + c1 s + c2 s^2 / 2 < 0 on [0, s), given c0 < 0 and c2 >= 0 (inf if none).
+double quadratic_reach(double c0, double c1, double c2) {
+    const double disc = c1 * c1 - 2.0 * c2 * c0;  // > c1^2 since c0 < 0
+    const double root = std::sqrt(disc);
+    if (c1 <= 0.0) return c2 > 0.0 ? (root - c1) / c2 : std::numeric_limits<double>::infinity();
+    return -2.0 * c0 / (c1 + root);  // the same root without cancellation
+}
+
+double magnitude(cd z) { return std::sqrt(std::norm(z)); }  // no hypot: nothing here nears overflow
+
+// The spare buffer of this thread: a scan takes it and gives it back when done.
+struct SpareStore {
+    std::unique_ptr<double[]> data;
+    std::size_t capacity = 0;
+};
+thread_local SpareStore spare;
+
+}  // namespace
+
+SignalScan::~SignalScan() {
+    if (capacity_ > spare.capacity) {
+        spare.data = std::move(store_);
+        spare.capacity = capacity_;
+    }
+}
+
+SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
+    store_ = std::move(spare.data);
+    capacity_ = spare.capacity;
+    spare.capacity = 0;
+    m_ = static_cast<int>(f.A.size());
+    const Eigen::VectorXcd& lam = *f.lambda;
+    // Decompositions come sorted; signals built by hand may not be.
+    bool sorted = true;
+    for (int k = 1; k < m_; ++k) sorted = sorted && std::norm(lam[k - 1]) <= std::norm(lam[k]);
+    std::vector<int> order;
+    if (!sorted) {
+        order.resize(static_cast<std::size_t>(m_));
+        std::iota(order.begin(), order.end(), 0);
+        std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return std::norm(lam[a]) < std::norm(lam[b]); });
+    }
+    modes_.resize(static_cast<std::size_t>(m_));
+    for (int j = 0; j < m_; ++j) {
+        const int k = sorted ? j : order[static_cast<std::size_t>(j)];
+        const cd l = lam[k];
+        Mode& md = modes_[static_cast<std::size_t>(j)];
+        md.A = sign * f.A[k];
+        md.re = l.real();
+        md.im = l.imag();
+        md.mag2 = std::norm(l);
+        md.mag = std::sqrt(md.mag2);
+        md.amp = magnitude(f.A[k]);
+        gamma_ = std::max(gamma_, md.re);
+        size_ += md.amp;
+    }
+    for (const ExpTerm& t : f.terms) {
+        terms_.push_back({sign * t.coef, t.s, t.power});
+        size_ += magnitude(t.coef);
+    }
+    if (!terms_.empty()) {
+        ExpSignal part;
+        part.lambda = f.lambda;
+        part.terms = f.terms;
+        terms_b2_ = part.bound(0.0, t_end, 2);
+    }
+    skip_ = kSkipFraction * size_;
+    // amp e^(re t) <= skip once t >= ln(amp / skip) / -re; ln x <= e ln 2 for x = mant 2^e, mant < 1,
+    // so the exponent of frexp gives a time that is never early.
+    for (Mode& md : modes_) {
+        if (md.re > 0.0) {
+            md.dead = std::numeric_limits<double>::infinity();  // roundoff of an undamped mode: may grow
+        } else if (md.amp <= skip_) {
+            md.dead = 0.0;
+        } else if (md.re < 0.0) {
+            int e = 0;
+            std::frexp(md.amp / skip_, &e);
+            md.dead = e * std::numbers::ln2 / -md.re;
+        } else {
+            md.dead = std::numeric_limits<double>::infinity();
+        }
+    }
+}
+
+ScanPoint SignalScan::evaluate(double t) {
+    ScanPoint p;
+    p.t = t;
+    const std::size_t need = static_cast<std::size_t>(kRecord * (m_ + 1));
+    if (used_ + need > capacity_) {
+        const std::size_t cap = std::max(2 * capacity_, used_ + 64 * need);
+        std::unique_ptr<double[]> bigger(new double[cap]);
+        std::copy(store_.get(), store_.get() + used_, bigger.get());
+        store_ = std::move(bigger);
+        capacity_ = cap;
+    }
+    p.offset = used_;
+    double* rec = store_.get() + p.offset;
+    rec[kF0] = rec[kF1] = rec[kMag] = rec[kB2] = 0.0;
+    double value = 0.0, slope = 0.0, abs1 = 0.0;
+    int live = 0, dead = 0;
+    for (const Mode& md : modes_) {
+        if (t >= md.dead) {
+            // Below skip_ for good: bounded by it, always among the fast modes, never evaluated.
+            ++dead;
+            abs1 += skip_ * md.mag;
+            continue;
+        }
+        double vre = 0.0, lre = 0.0, unc = 0.0;
+        // |v_k| exactly (or, below exp(-707), an upper bound) before deciding whether to evaluate it.
+        const double x = md.re * t;
+        const double e = x < -707.0 ? 1e-307 : std::exp(x);
+        const double mk = md.amp * e;
+        if (mk <= skip_) {
+            unc = mk;  // Re v and Re(lambda v) lie within +-|v| and +-|lambda||v|
+        } else if (md.im == 0.0) {
+            vre = md.A.real() * e;
+            lre = md.re * vre;
+        } else {
+            const double ph = md.im * t;
+            const cd v = md.A * cd(e * std::cos(ph), e * std::sin(ph));
+            vre = v.real();
+            lre = md.re * v.real() - md.im * v.imag();
+        }
+        value += vre;
+        slope += lre;
+        abs1 += mk * md.mag;
+        rec[kLambda] = md.mag;
+        double* next = rec + kRecord;
+        next[kF0] = rec[kF0] + vre + unc;
+        next[kF1] = rec[kF1] + lre + unc * md.mag;
+        next[kMag] = rec[kMag] + mk;
+        next[kB2] = rec[kB2] + mk * md.mag2;
+        rec = next;
+        ++live;
+    }
+    rec[kLambda] = std::numeric_limits<double>::infinity();
+    used_ += static_cast<std::size_t>(kRecord * (live + 1));
+    p.live = live;
+    p.dead_mag = dead * skip_;
+    p.abs0 = rec[kMag] + p.dead_mag;
+    for (const ExpTerm& term : terms_) {
+        const cd v0 = term_derivative(term, t, 0), v1 = term_derivative(term, t, 1);
+        p.p0 += v0.real();
+        p.p1 += v1.real();
+        p.abs0 += magnitude(v0);
+        abs1 += magnitude(v1);
+    }
+    p.value = value + p.p0;
+    p.slope = slope + p.p1;
+    p.abs1 = abs1;
+    return p;
+}
+
+double SignalScan::value(double t) const {
+    double v = 0.0;
+    for (const Mode& md : modes_) {
+        const double x = md.re * t;
+        if (t >= md.dead || x < -707.0) continue;
+        const double e = std::exp(x);
+        if (md.amp * e <= skip_) continue;
+        if (md.im == 0.0) {
+            v += md.A.real() * e;
+            continue;
+        }
+        const double ph = md.im * t;
+        v += (md.A * cd(e * std::cos(ph), e * std::sin(ph))).real();
+    }
+    for (const ExpTerm& term : terms_) v += term_derivative(term, t, 0).real();
+    return v;
+}
+
+double SignalScan::growth(double h) const { return gamma_ > 0.0 ? std::exp(gamma_ * h) : 1.0; }
+
+int SignalScan::slow_count(const ScanPoint& p, double h) const {
+    // Modes with |lambda| h <= 2 change little over h: Taylor bounds them well; faster ones do better
+    // by their amplitude alone. Live modes are in ascending |lambda|: bisect their records.
+    if (!(h > 0.0)) return p.live;
+    const double* rec = record(p, 0);
+    const double limit = 2.0 / h;
+    int lo = 0, hi = p.live;  // the first J with |lambda_J| > limit lies in [lo, hi]
+    while (lo < hi) {
+        const int mid = (lo + hi) / 2;
+        if (rec[kRecord * mid + kLambda] <= limit) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    return lo;
+}
+
+void SignalScan::keep_only(ScanPoint& p) {
+    const std::size_t n = static_cast<std::size_t>(kRecord * (p.live + 1));
+    // The destination starts before the source: a forward copy is safe where they overlap.
+    if (p.offset > 0) std::copy(store_.get() + p.offset, store_.get() + p.offset + n, store_.get());
+    p.offset = 0;
+    used_ = n;
+}
+
+double SignalScan::roundoff(const ScanPoint& p) {
+    return (p.live + 16) * std::numeric_limits<double>::epsilon() * p.abs0;
+}
+
+double SignalScan::certified_step(const ScanPoint& p, double H, double value_used) const {
+    // For slow modes k < J: f_slow(t + s) <= f0 + f1 s + G b2 s^2 / 2 (Taylor, |v_k| not growing by more
+    // than G = exp(gamma H)); for fast ones, dead ones included, |f_fast| <= G sum |v_k|. Any J gives a
+    // valid bound; the step is the longest any of them proves.
+    const double G = growth(H);
+    const double* rec = record(p, 0);
+    const double mag_all = rec[kRecord * p.live + kMag] + p.dead_mag;
+    const double shift = value_used - p.value;
+    // The computed sums may be off by their rounding error: bounds are raised by it.
+    const double err0 = roundoff(p);
+    const double err1 = (p.live + 16) * std::numeric_limits<double>::epsilon() * p.abs1;
+    double best = 0.0;
+    for (int J = p.live; J >= 0; --J) {
+        const double* r = rec + kRecord * J;
+        const double c0 = p.p0 + r[kF0] + G * (mag_all - r[kMag]) + shift + err0;
+        if (!(c0 < 0.0)) continue;
+        const double c1 = p.p1 + r[kF1] + err1;
+        const double c2 = terms_b2_ + G * r[kB2];
+        best = std::max(best, quadratic_reach(c0, c1, c2));
+        if (best >= H) return H;
+    }
+    return std::min(best, H);
+}
+
+double SignalScan::upper_bound(const ScanPoint& a, const ScanPoint& b) const {
+    // Live at b means live at a (b is later and magnitudes only fall below skip_ for good), so the
+    // slow set at a (live, |lambda| h <= 2) is the slow set at b plus ja - jb modes dead at b.
+    const double h = b.t - a.t;
+    const int ja = slow_count(a, h), jb = slow_count(b, h);
+    const double G = growth(h);
+    const double* ra = record(a, ja);
+    const double* rb = record(b, jb);
+    const double mag_all = record(a, a.live)[kMag] + a.dead_mag;
+    // Fast modes: at most their size at a (decaying) times G. Slow ones: |f''| <= B over [a, b].
+    const double fast = G * (mag_all - ra[kMag]);
+    const double B = terms_b2_ + G * ra[kB2];
+    const double ya = a.p0 + ra[kF0];
+    const double yb = b.p0 + rb[kF0] + (ja - jb) * skip_;
+    const double taylor = ya + std::max(0.0, (a.p1 + ra[kF1]) * h + 0.5 * B * h * h);
+    double interp = std::max(ya, yb);
+    if (B > 0.0 && h > 0.0) {
+        // max over s in [0, h] of ya + (yb - ya) s / h + B s (h - s) / 2
+        const double s = std::clamp(0.5 * h + (yb - ya) / (B * h), 0.0, h);
+        interp = ya + (yb - ya) * (s / h) + 0.5 * B * s * (h - s);
+    }
+    return std::min(taylor, interp) + fast;
+}
+
+}  // namespace vi

@@ -1,0 +1,69 @@
+#include "problem/film_elements.hpp"
+
+#include "problem/electrode_elements.hpp"
+
+namespace vi {
+namespace {
+
+// A film as the builder sees it before the mesh: its name, span (x/l), side and air gap.
+struct FilmSpan {
+    std::string name;
+    double from = 0.0, to = 0.0;
+    Side side = Side::below;
+    double gap = 0.0;
+};
+
+std::vector<FilmSpan> film_spans(const Case& c) {
+    std::vector<FilmSpan> out;
+    if (!c.air || !c.air->film) return out;
+    for (std::size_t k = 0; k < c.electrodes.size(); ++k) {
+        const Electrode& e = c.electrodes[k];
+        std::string name = "electrodes[" + std::to_string(k) + "]";
+        name += ".film";
+        // The gas fills the air gap only: a dielectric layer on the electrode is solid.
+        out.push_back({std::move(name), e.from, e.to, e.side, e.gap - e.dielectric_thickness});
+    }
+    for (std::size_t k = 0; k < c.films.size(); ++k) {
+        const Film& m = c.films[k];
+        out.push_back({"films[" + std::to_string(k) + "]", m.from, m.to, m.side, m.gap});
+    }
+    return out;
+}
+
+FilmGas gas_of(const Air& a) { return {a.viscosity, a.lambda()}; }
+
+}  // namespace
+
+std::vector<std::shared_ptr<const SqueezeFilm>> film_elements(const Case& c, const System& s,
+                                                              const std::vector<int>& bending_position) {
+    std::vector<std::shared_ptr<const SqueezeFilm>> out;
+    for (const FilmSpan& f : film_spans(c)) {
+        FilmGeometry g;
+        g.sign = f.side == Side::above ? 1.0 : -1.0;
+        g.gap = f.gap;
+        g.width = c.beam.width;
+        g.from = f.from * s.length;
+        g.to = f.to * s.length;
+        SpanQuadrature q = span_quadrature(s, bending_position, g.from, g.to, kFilmGaussPoints);
+        if (q.dofs.empty()) continue;
+        out.push_back(std::make_shared<const SqueezeFilm>(f.name, std::move(q.dofs), std::move(q.points), g, gas_of(*c.air)));
+    }
+    return out;
+}
+
+std::vector<FilmRegime> film_regimes(const Case& c, double omega) {
+    std::vector<FilmRegime> out;
+    for (const FilmSpan& f : film_spans(c)) {
+        const FilmGas gas = gas_of(*c.air);
+        FilmRegime r;
+        r.name = f.name;
+        r.gap = f.gap;
+        r.knudsen = gas.mean_free_path / f.gap;
+        r.viscosity_ratio = 1.0 / veijola_factor(r.knudsen);
+        r.squeeze_number = squeeze_number(gas, c.beam.width, f.gap, omega, c.air->pressure);
+        out.push_back(std::move(r));
+    }
+    return out;
+}
+
+}  // namespace vi
