@@ -6,6 +6,9 @@
 
 #include <gtest/gtest.h>
 
+#include <signal.h>
+
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -209,6 +212,24 @@ TEST(FitNumerics, TheLeastSquaresLibraryWritesNothingOnStderr) {
     EXPECT_EQ(stderr_line_count(bad.err), 1u) << bad.err;
     EXPECT_EQ(bad.err.rfind("vibroimpact: fit: did not converge", 0), 0u) << bad.err;
     EXPECT_EQ(bad.err.find("InitGoogleLogging"), std::string::npos) << bad.err;
+    fs::remove_all(dir);
+}
+
+TEST(FitNumerics, AFitStoppedBySigintSaysOnlyThat) {
+    const std::string dir = test::make_temp_dir();
+    const std::string data = data_file(dir, "tip.csv", ten_microseconds());
+    // Forty starts on two threads: seconds of work, stopped half a second in (the residuals then
+    // refuse to run, which Ceres logged as "Terminating: Residual and Jacobian evaluation failed").
+    test::ChildProcess child({test::vibroimpact_path(), "fit", example_case(), "--data", data, "--fit",
+                              "supports[0].stiffness=100:10000", "--fit", "supports[0].damping_ratio=0.05:0.5", "--starts",
+                              "40", "--threads", "2", "--out", dir + "/out"});
+    test::wait_until([&] { return child.seconds() > 0.5; }, 10.0);
+    ASSERT_TRUE(child.running()) << "the fit ended before the signal";
+    child.signal(SIGINT);
+    const auto r = child.wait();
+    EXPECT_EQ(r.exit_code, 130) << r.err;
+    EXPECT_EQ(r.err, "vibroimpact: stopped by SIGINT; nothing written\n");
+    EXPECT_FALSE(fs::exists(dir + "/out"));
     fs::remove_all(dir);
 }
 
