@@ -188,7 +188,8 @@ int run_optimize(const OptimizeCommandOptions& opt) {
     if (opt.minimize.empty() == opt.maximize.empty()) throw InputError("optimize: give one of --minimize or --maximize");
     if (opt.global_evals >= opt.max_evals) {
         throw InputError("--global-evals " + std::to_string(opt.global_evals) + ": must be below --max-evals " +
-                         std::to_string(opt.max_evals) + " (it is the global stage's share of them; the local stage needs one at least)");
+                         std::to_string(opt.max_evals) +
+                         " (it is the global stage's share of them; the local stage needs one at least)");
     }
     const std::string gnuplot = require_gnuplot(opt.gnuplot, "the convergence figure");
     std::string reason;

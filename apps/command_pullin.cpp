@@ -25,7 +25,8 @@ namespace {
 InputError blame_horizon(const Case& c, const InputError& e, const std::string& horizon_option) {
     const std::string what = e.what();
     const std::string horizon = "solver.horizon: ", step = "solver.output_step: ";
-    const std::string option = horizon_option.empty() ? "--horizon (default: ten periods of mode 1)" : "--horizon " + horizon_option;
+    const std::string option =
+        horizon_option.empty() ? "--horizon (default: ten periods of mode 1)" : "--horizon " + horizon_option;
     if (what.rfind(horizon, 0) == 0) return InputError(option + ": " + what.substr(horizon.size()));
     // The case's output step against the command's horizon: both named, the option first.
     if (what.rfind(step, 0) == 0 && what.find("horizon") != std::string::npos) {
@@ -66,7 +67,9 @@ CommandBody add_pullin_command(CLI::App& app) {
     return [opt, dynamic_only]() {
         // Bad options are refused before any work, and so are options that would do nothing.
         for (const CLI::Option* o : dynamic_only) {
-            if (o->count() > 0 && !opt->dynamic) throw InputError(o->get_name() + ": applies to --dynamic (the step pull-in), which is not asked for");
+            if (o->count() > 0 && !opt->dynamic) {
+                throw InputError(o->get_name() + ": applies to --dynamic (the step pull-in), which is not asked for");
+            }
         }
         double horizon = 0.0;
         if (!opt->horizon.empty()) {

@@ -94,6 +94,8 @@ TEST(RefusedCombinations, OptionsThatWouldDoNothingAreRefused) {
     expect_refused({"sweep", free_impact(), "--set", "supports[0].position=0.5,1", "--support-model", "spring", "--out", out},
                    "--support-model: applies to --analysis modes", out);
     expect_refused({"air-q", switch_case(), "--gap", "2 um", "--out", out}, "--gap 2 um: the case's [[electrodes]]", out);
+    expect_refused({"air-q", test::source_path("examples/paper/cantilever.toml"), "--gap", "1e-120 m", "--out", out},
+                   "--gap 1e-120 m: outside the magnitudes", out);
     fs::remove_all(dir);
 }
 
@@ -104,6 +106,9 @@ TEST(RefusedCombinations, ADerivedHorizonIsBlamedOnItsOptionNotOnTheCaseFile) {
     EXPECT_EQ(longer.exit_code, 2) << longer.err;
     EXPECT_EQ(longer.err.rfind("vibroimpact: error: --horizon 1e6 s: 1e+06 s is ", 0), 0u) << longer.err;
     EXPECT_EQ(longer.err.find(".toml:"), std::string::npos) << longer.err;
+    // stiction --elements: the element count is the option's.
+    expect_refused({"stiction", test::source_path("examples/switch/cantilever_stiction.toml"), "--elements", "5000"},
+                   "--elements 5000: must be at most 2000");
     const auto shorter = test::run_vibroimpact({"pullin", switch_case(), "--dynamic", "--horizon", "1 ns"});
     EXPECT_EQ(shorter.exit_code, 2) << shorter.err;
     EXPECT_EQ(shorter.err.rfind("vibroimpact: error: --horizon 1 ns: the case's " + switch_case() + ":", 0), 0u) << shorter.err;

@@ -361,7 +361,9 @@ std::string Driver::progress() const {
     if (s_.mem != nullptr && CVodeGetNumSteps(s_.mem, &steps) == CV_SUCCESS) {
         out += " in " + std::to_string(steps_done_ + steps) + " steps";
     }
-    if (s_.mem != nullptr && CVodeGetLastStep(s_.mem, &h) == CV_SUCCESS && h > 0.0) out += "; last step " + significant(h, 3) + " s";
+    if (s_.mem != nullptr && CVodeGetLastStep(s_.mem, &h) == CV_SUCCESS && h > 0.0) {
+        out += "; last step " + significant(h, 3) + " s";
+    }
     double gap = std::numeric_limits<double>::infinity();
     for (const int e : sys_.contacts()) gap = std::min(gap, -sys_.reading(e, t_done_, N_VGetArrayPointer(s_.y)).penetration);
     if (std::isfinite(gap)) out += "; closest contact gap " + significant(gap, 3) + " m (negative: penetration)";

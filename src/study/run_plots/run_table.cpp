@@ -71,7 +71,9 @@ private:
     void set_header(const CsvRow& row) {
         std::set<std::string> seen;
         for (const std::string& name : row.cells) {
-            if (name.empty()) throw InputError(t_.file + ":" + std::to_string(row.line) + ": a column without a name in the header");
+            if (name.empty()) {
+                throw InputError(t_.file + ":" + std::to_string(row.line) + ": a column without a name in the header");
+            }
             if (!seen.insert(name).second) {
                 throw InputError(t_.file + ":" + std::to_string(row.line) + ": column " + name + " appears twice in the header");
             }
@@ -134,7 +136,8 @@ RunTable read_run_table(const std::string& path, bool numbers_only) {
     std::ifstream in(path, std::ios::binary);
     if (!in) {
         const int err = errno;
-        throw InputError(path + ": cannot read: " + (err != 0 ? std::generic_category().message(err) : std::string("cannot open")));
+        const std::string why = err != 0 ? std::generic_category().message(err) : std::string("cannot open");
+        throw InputError(path + ": cannot read: " + why);
     }
     RunTable t;
     t.file = path;
