@@ -1,6 +1,7 @@
 #include "sweep/folder_lock.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/file.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -26,14 +27,20 @@ namespace fs = std::filesystem;
 constexpr int kLockAttempts = 100;
 constexpr int kPidReads = 20;
 
-// The pid the holder wrote into the lock file, or "" when it has not written it yet.
+// The pid the holder wrote into the lock file, or "" when it cannot be told: the holder writes it
+// just after it locks, so the file may for a moment be empty or still name the killed run whose
+// lock it took over (a process that no longer exists).
 std::string holder_pid(int fd) {
     for (int tries = 0; tries < kPidReads; ++tries) {
         char buf[32] = {};
         const ssize_t n = pread(fd, buf, sizeof buf - 1, 0);
         std::string text = n > 0 ? std::string(buf, static_cast<std::size_t>(n)) : std::string();
         while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-        if (!text.empty() && text.find_first_not_of("0123456789") == std::string::npos) return text;
+        const bool digits = !text.empty() && text.size() < 12 && text.find_first_not_of("0123456789") == std::string::npos;
+        if (digits) {
+            const pid_t pid = static_cast<pid_t>(std::stol(text));
+            if (pid > 0 && (kill(pid, 0) == 0 || errno == EPERM)) return text;
+        }
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }
     return "";
