@@ -175,8 +175,8 @@ TEST(LargeOutput, PlotDrawsASimulateFolderLargerThanTheWholeFileReadersTake) {
 }
 
 // A sweep folder written by hand (plot reads files, not how they were made): a one-axis sweep of
-// 50 000 points and a 600 x 600 grid.
-void write_sweep_folder(const std::string& dir, const std::vector<std::vector<double>>& axes) {
+// 50 000 points and a 600 x 600 grid; sweep.json may list `failures` failed points.
+void write_sweep_folder(const std::string& dir, const std::vector<std::vector<double>>& axes, std::size_t failures = 0) {
     fs::create_directories(dir);
     std::string json = "{\"axes\": [";
     const char* names[] = {"supports[0].position", "supports[0].stiffness"};
@@ -191,7 +191,13 @@ void write_sweep_folder(const std::string& dir, const std::vector<std::vector<do
         }
         json += "]}";
     }
-    json += "], \"columns\": [{\"name\": \"z_max\", \"unit\": \"\"}]}\n";
+    json += "], \"columns\": [{\"name\": \"z_max\", \"unit\": \"\"}], \"failures\": [";
+    // A long list of failed points, as a large sweep's sweep.json holds (plot does not draw them).
+    for (std::size_t i = 0; i < failures; ++i) {
+        json += std::string(i ? "," : "") + "{\"index\": " + std::to_string(i) +
+                ", \"status\": \"error: supports[0].position: must lie in (0, 1] (x0/l), a reason of some length\"}";
+    }
+    json += "]}\n";
     test::write_text(dir + "/sweep.json", json);
     std::string csv;
     for (std::size_t a = 0; a < axes.size(); ++a) csv += std::string(columns[a]) + ",";
@@ -218,7 +224,9 @@ TEST(LargeOutput, PlotDrawsSweepsOfManyPointsFromThinnedCopies) {
     std::vector<double> x(50000), y(600);
     for (std::size_t i = 0; i < x.size(); ++i) x[i] = 0.3 + 0.7 * static_cast<double>(i) / static_cast<double>(x.size() - 1);
     for (std::size_t i = 0; i < y.size(); ++i) y[i] = 100.0 + static_cast<double>(i);
-    write_sweep_folder(dir + "/line", {x});
+    // Its sweep.json over 64 MiB (the whole-file readers' limit): a million failures listed.
+    write_sweep_folder(dir + "/line", {x}, 1000000);
+    EXPECT_GT(fs::file_size(dir + "/line/sweep.json"), std::uintmax_t{64} << 20);
     const auto line = test::run_vibroimpact({"plot", dir + "/line"});
     EXPECT_EQ(line.exit_code, 0) << line.err;
     const std::string curve = test::read_text(dir + "/line/plots/sweep_z_max.csv");
