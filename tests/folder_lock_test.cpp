@@ -122,6 +122,12 @@ TEST(FolderLock, ASecondRunIntoAFolderInUseIsRefusedNamingTheProcess) {
     EXPECT_TRUE(fs::exists(lock));
     test::ChildProcess next(resume);
     ASSERT_TRUE(test::wait_until([&] { return holds(next); }, 60.0)) << "the stale lock was not taken over";
+    // Two resumes at once: the second is refused, not computing the grid beside the first.
+    const auto twice = test::run_vibroimpact({resume.begin() + 1, resume.end()});
+    EXPECT_EQ(twice.exit_code, 2) << twice.err;
+    EXPECT_EQ(twice.err.rfind("vibroimpact: error: " + out + ": in use by process " + std::to_string(next.pid()) + " (", 0), 0u)
+        << twice.err;
+    EXPECT_TRUE(next.running()) << "the refused resume disturbed the first";
     next.signal(SIGINT);
     const auto r = next.wait();
     EXPECT_EQ(r.exit_code, 130) << r.err;
