@@ -1,0 +1,103 @@
+// The progress of the long commands on stderr: lines on a pipe (done of total, rate, time left),
+// a bar redrawn in place on a terminal, nothing with --progress none. The tests set the line
+// interval to 0 (a line at every step) or beyond any run, so that what they read never depends on
+// how fast the machine is.
+
+#include <gtest/gtest.h>
+
+#include <cstddef>
+#include <filesystem>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "impacts/simulation.hpp"
+#include "io/case_reader.hpp"
+#include "io/number_text.hpp"
+#include "support/run_command.hpp"
+#include "support/test_files.hpp"
+
+namespace vi {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string free_impact() { return test::source_path("examples/paper/free_impact_tip.toml"); }
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> out;
+    for (std::size_t at = 0; at < text.size();) {
+        const std::size_t end = text.find('\n', at);
+        out.push_back(text.substr(at, end - at));
+        at = end == std::string::npos ? text.size() : end + 1;
+    }
+    return out;
+}
+
+// Every line of `err` is a progress line of `what` counting `unit` of `total`; the counts never go
+// back and the last is the total. Returns how many lines there were.
+std::size_t expect_progress_lines(const std::string& err, const std::string& what, const std::string& unit, std::size_t total,
+                                  bool at_most) {
+    const std::regex line("^" + what + ": ([0-9]+)/" + std::to_string(total) + " " + unit + ", (- |[0-9.e+]+ )" + unit +
+                          "/s, left " + (at_most ? "(at most )?" : "") + "(-|[0-9]+:[0-9][0-9]), elapsed [0-9]+:[0-9][0-9](; .*)?$");
+    const std::vector<std::string> lines = lines_of(err);
+    std::size_t last = 0;
+    for (const std::string& l : lines) {
+        std::smatch m;
+        EXPECT_TRUE(std::regex_match(l, m, line)) << "not a progress line: '" << l << "'";
+        if (m.empty()) continue;
+        const std::size_t done = std::stoul(m[1].str());
+        EXPECT_GE(done, last) << l;
+        last = done;
+    }
+    EXPECT_EQ(last, total) << err;
+    return lines.size();
+}
+
+TEST(ProgressReport, APipedSweepWritesALinePerPointAtIntervalZero) {
+    const std::string dir = test::make_temp_dir();
+    const auto r = test::run_vibroimpact({"sweep", free_impact(), "--set", "supports[0].position=0.5:1:5", "--threads", "2",
+                                          "--progress", "lines", "--progress-interval", "0", "--out", dir + "/s"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(expect_progress_lines(r.err, "sweep", "points", 5, false), 5u) << r.err;
+    // auto on a pipe is lines; VIBROIMPACT_PROGRESS gives the default, --progress wins over it.
+    const std::vector<std::string> sweep{test::vibroimpact_path(), "sweep", free_impact(), "--set", "supports[0].position=0.5,1",
+                                         "--threads", "1", "--progress-interval", "0"};
+    const auto automatic = test::run_program(sweep, {"VIBROIMPACT_PROGRESS=auto"});
+    EXPECT_EQ(automatic.exit_code, 0) << automatic.err;
+    EXPECT_EQ(expect_progress_lines(automatic.err, "sweep", "points", 2, false), 2u);
+    std::vector<std::string> lines = sweep;
+    lines.insert(lines.end(), {"--progress", "lines"});
+    const auto given = test::run_program(lines, {"VIBROIMPACT_PROGRESS=none"});
+    EXPECT_EQ(expect_progress_lines(given.err, "sweep", "points", 2, false), 2u);
+    std::vector<std::string> none = sweep;
+    none.insert(none.end(), {"--progress", "none"});
+    EXPECT_EQ(test::run_program(none, {"VIBROIMPACT_PROGRESS=lines"}).err, "");
+    fs::remove_all(dir);
+}
+
+TEST(ProgressReport, ARunShorterThanTheIntervalWritesNoLine) {
+    const auto r = test::run_vibroimpact({"sweep", free_impact(), "--set", "supports[0].position=0.5,1", "--threads", "1",
+                                          "--progress", "lines", "--progress-interval", "1e6"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+}
+
+TEST(ProgressReport, ABadModeIsRefusedBeforeAnyWork) {
+    const std::string dir = test::make_temp_dir();
+    const std::vector<std::string> sweep{test::vibroimpact_path(), "sweep", free_impact(), "--set", "supports[0].position=0.5,1",
+                                         "--out", dir + "/s"};
+    const auto env = test::run_program(sweep, {"VIBROIMPACT_PROGRESS=verbose"});
+    EXPECT_EQ(env.exit_code, 2);
+    EXPECT_EQ(env.err, "vibroimpact: error: VIBROIMPACT_PROGRESS=verbose: must be auto, bar, lines or none\n");
+    std::vector<std::string> option = sweep;
+    option.insert(option.end(), {"--progress", "verbose"});
+    const auto opt = test::run_program(option);
+    EXPECT_EQ(opt.exit_code, 2);
+    EXPECT_NE(opt.err.find("--progress"), std::string::npos) << opt.err;
+    EXPECT_FALSE(fs::exists(dir + "/s"));
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace vi
