@@ -99,5 +99,20 @@ TEST(ProgressReport, ABadModeIsRefusedBeforeAnyWork) {
     fs::remove_all(dir);
 }
 
+TEST(ProgressReport, APipedOptimizeWritesEachDesignAndTheBestSoFar) {
+    const std::string dir = test::make_temp_dir();
+    const auto r = test::run_vibroimpact({"optimize", free_impact(), "--vary", "supports[0].position=0.5:1", "--minimize", "z_max",
+                                          "--max-evals", "6", "--threads", "2", "--progress", "lines", "--progress-interval", "0",
+                                          "--out", dir + "/o"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<std::string> lines = lines_of(r.err);
+    // One line per design the search used (it may stop short of --max-evals: the time left is "at most").
+    ASSERT_GE(lines.size(), 2u) << r.err;
+    EXPECT_EQ(lines.front().rfind("optimize: 1/6 designs, ", 0), 0u) << r.err;
+    EXPECT_NE(lines.back().find("; best z_max "), std::string::npos) << r.err;
+    for (const std::string& l : lines) EXPECT_NE(l.find("left at most"), std::string::npos) << l;
+    fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace vi
