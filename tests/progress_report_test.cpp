@@ -99,6 +99,35 @@ TEST(ProgressReport, ABadModeIsRefusedBeforeAnyWork) {
     fs::remove_all(dir);
 }
 
+// A trajectory of the example with a stiffer stop than the case's: the fit has iterations to make.
+std::string fit_data(const std::string& dir) {
+    Case c = read_case_file(free_impact());
+    c.solver.horizon = 10e-6;
+    c.solver.output_step = 100e-9;
+    c.supports[0].stiffness *= 1.3;
+    SimulationOptions o;
+    o.energy = false;
+    const SimulationRun run = run_simulation(c, o);
+    std::string text = "t_s,tip_m\n";
+    for (std::size_t k = 0; k < run.result.history.t.size(); ++k) {
+        text += round_trip_text(run.result.history.t[k]) + "," + round_trip_text(run.result.history.tip_v[k]) + "\n";
+    }
+    test::write_text(dir + "/tip.csv", text);
+    return dir + "/tip.csv";
+}
+
+TEST(ProgressReport, APipedFitWritesItsIterationsOfTheBudget) {
+    const std::string dir = test::make_temp_dir();
+    const auto r = test::run_vibroimpact({"fit", free_impact(), "--data", fit_data(dir), "--fit", "supports[0].stiffness=300:3000",
+                                          "--starts", "2", "--max-iterations", "20", "--threads", "2", "--progress", "lines",
+                                          "--progress-interval", "0", "--out", dir + "/f"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    // Budget 2 starts x 20: a line per iteration and one per start that ends before its share.
+    EXPECT_GE(expect_progress_lines(r.err, "fit", "iterations", 40, true), 3u) << r.err;
+    EXPECT_NE(r.out.find("converged"), std::string::npos) << r.out;
+    fs::remove_all(dir);
+}
+
 TEST(ProgressReport, APipedOptimizeWritesEachDesignAndTheBestSoFar) {
     const std::string dir = test::make_temp_dir();
     const auto r = test::run_vibroimpact({"optimize", free_impact(), "--vary", "supports[0].position=0.5:1", "--minimize", "z_max",
@@ -113,6 +142,23 @@ TEST(ProgressReport, APipedOptimizeWritesEachDesignAndTheBestSoFar) {
     for (const std::string& l : lines) EXPECT_NE(l.find("left at most"), std::string::npos) << l;
     fs::remove_all(dir);
 }
+
+TEST(ProgressReport, OnATerminalAFitDrawsABarAndEndsItsLine) {
+    const std::string dir = test::make_temp_dir();
+    const auto r = test::run_on_terminal({test::vibroimpact_path(), "fit", free_impact(), "--data", fit_data(dir), "--fit",
+                                          "supports[0].stiffness=300:3000", "--max-iterations", "20", "--out", dir + "/f"});
+    ASSERT_FALSE(r.hung) << r.out;
+    EXPECT_EQ(r.exit_code, 0) << r.out;
+    // Redrawn in place ("\r", erase to the end of the line), and the bar's line ended before the
+    // results (the terminal turns "\n" into "\r\n").
+    EXPECT_NE(r.out.find("\r\033[Kfit ["), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("20/20 iterations"), std::string::npos) << r.out;
+    const std::size_t results = r.out.find("Fit of ");
+    ASSERT_NE(results, std::string::npos) << r.out;
+    EXPECT_EQ(r.out.substr(results - 2, 2), "\r\n") << r.out;
+    fs::remove_all(dir);
+}
+
 
 }  // namespace
 }  // namespace vi
