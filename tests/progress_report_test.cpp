@@ -143,6 +143,15 @@ TEST(ProgressReport, APipedOptimizeWritesEachDesignAndTheBestSoFar) {
     fs::remove_all(dir);
 }
 
+TEST(ProgressReport, APipedAirQWritesEachPressure) {
+    const std::string dir = test::make_temp_dir();
+    const auto r = test::run_vibroimpact({"air-q", test::source_path("examples/paper/cantilever.toml"), "--progress", "lines",
+                                          "--progress-interval", "0", "--out", dir + "/q"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(expect_progress_lines(r.err, "air-q", "pressures", 17, false), 17u) << r.err;
+    fs::remove_all(dir);
+}
+
 TEST(ProgressReport, OnATerminalAFitDrawsABarAndEndsItsLine) {
     const std::string dir = test::make_temp_dir();
     const auto r = test::run_on_terminal({test::vibroimpact_path(), "fit", free_impact(), "--data", fit_data(dir), "--fit",
@@ -158,7 +167,6 @@ TEST(ProgressReport, OnATerminalAFitDrawsABarAndEndsItsLine) {
     EXPECT_EQ(r.out.substr(results - 2, 2), "\r\n") << r.out;
     fs::remove_all(dir);
 }
-
 
 }  // namespace
 }  // namespace vi
