@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "impacts/simulation.hpp"
 #include "io/case_reader.hpp"
 #include "io/number_text.hpp"
@@ -35,12 +37,13 @@ std::vector<std::string> lines_of(const std::string& text) {
 }
 
 // Every line of `err` is a progress line of `what` counting `unit` of `total`; the counts never go
-// back and the last is the total. Returns how many lines there were.
+// back and the last is `last_count` (the total unless given). Returns how many lines there were.
 std::size_t expect_progress_lines(const std::string& err, const std::string& what, const std::string& unit, std::size_t total,
-                                  bool at_most) {
+                                  bool at_most, std::size_t last_count = 0) {
     const std::regex line("^" + what + ": ([0-9]+)/" + std::to_string(total) + " " + unit + ", (- |[0-9.e+]+ )" + unit +
                           "/s, left " + (at_most ? "(at most )?" : "") + "(-|[0-9]+:[0-9][0-9]), elapsed [0-9]+:[0-9][0-9](; .*)?$");
     const std::vector<std::string> lines = lines_of(err);
+    if (last_count == 0) last_count = total;
     std::size_t last = 0;
     for (const std::string& l : lines) {
         std::smatch m;
@@ -50,8 +53,17 @@ std::size_t expect_progress_lines(const std::string& err, const std::string& wha
         EXPECT_GE(done, last) << l;
         last = done;
     }
-    EXPECT_EQ(last, total) << err;
+    EXPECT_EQ(last, last_count) << err;
     return lines.size();
+}
+
+// The lines of `err` that start with `prefix`, each ended by a newline.
+std::string lines_starting(const std::string& err, const std::string& prefix) {
+    std::string out;
+    for (const std::string& l : lines_of(err)) {
+        if (l.rfind(prefix, 0) == 0) out += l + "\n";
+    }
+    return out;
 }
 
 TEST(ProgressReport, APipedSweepWritesALinePerPointAtIntervalZero) {
@@ -150,6 +162,20 @@ TEST(ProgressReport, APipedAirQWritesEachPressure) {
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(expect_progress_lines(r.err, "air-q", "pressures", 17, false), 17u) << r.err;
     fs::remove_all(dir);
+}
+
+TEST(ProgressReport, APipedPullinWritesItsBranchAndItsTransients) {
+    const auto r = test::run_vibroimpact({"pullin", test::source_path("examples/switch/cantilever_switch.toml"), "--dynamic",
+                                          "--json", "--progress", "lines", "--progress-interval", "0"});
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    // The branch in step lengths of the air gap (200) and the 16 frequency points.
+    const std::string branch = lines_starting(r.err, "pullin: ");
+    EXPECT_GE(expect_progress_lines(branch, "pullin", "steps", 216, false), 17u) << r.err;
+    // One line per transient of the bisection, of at most 2 + 11 (0.5 V_PI .. V_PI to 1e-3).
+    const std::size_t trials = nlohmann::json::parse(r.out)["dynamic"]["trials"].size();
+    const std::string dynamic = lines_starting(r.err, "pullin --dynamic: ");
+    EXPECT_EQ(expect_progress_lines(dynamic, "pullin --dynamic", "transients", 13, true, trials), trials) << r.err;
+    EXPECT_EQ(lines_of(branch).size() + lines_of(dynamic).size(), lines_of(r.err).size()) << r.err;
 }
 
 TEST(ProgressReport, OnATerminalAFitDrawsABarAndEndsItsLine) {
