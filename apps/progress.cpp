@@ -24,14 +24,15 @@ std::string duration_text(double s) {
 
 bool stderr_is_terminal() { return isatty(STDERR_FILENO) == 1; }
 
-void add_progress_options(CLI::App& sub, ProgressSettings& s) {
-    sub.add_option("--progress", s.mode,
+CLI::Option* add_progress_options(CLI::App& sub, ProgressSettings& s) {
+    CLI::Option* mode = sub.add_option("--progress", s.mode,
                    "Progress on stderr: auto (a bar on a terminal, lines otherwise), bar, lines or none "
                    "(default: $VIBROIMPACT_PROGRESS, else auto)")
         ->check(CLI::IsMember({"auto", "bar", "lines", "none"}));
     sub.add_option("--progress-interval", s.interval_s, "Seconds between two progress lines (0: a line at every step)")
         ->check(CLI::Range(0.0, 1e6))
         ->capture_default_str();
+    return mode;
 }
 
 ProgressStyle progress_style(const ProgressSettings& s) {
@@ -54,7 +55,7 @@ Progress::Progress(std::string what, std::string unit, std::size_t total, std::s
       total_(total),
       done_(done),
       shown_(done),
-      style_(total > 0 ? style : ProgressStyle::none),
+      style_(style),
       interval_s_(interval_s),
       upper_bound_(upper_bound) {
     const std::lock_guard<std::mutex> lock(mutex_);
@@ -77,6 +78,23 @@ void Progress::count(std::size_t done, std::size_t computed) {
     if (style_ == ProgressStyle::lines && (interval_s_ == 0.0 || since >= interval_s_)) write_line();
 }
 
+void Progress::set_total(std::size_t total) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    total_ = total;
+    done_ = std::min(done_, total_);
+    shown_ = std::min(shown_, total_);
+    if (style_ == ProgressStyle::bar && !finished_) draw_bar();
+}
+
+void Progress::say(const std::string& line) {
+    const std::lock_guard<std::mutex> lock(mutex_);
+    if (style_ == ProgressStyle::none) return;
+    // Over the bar, which is drawn again below the line.
+    std::fprintf(stderr, "%s%s\n", drawn_ ? "\r\033[K" : "", line.c_str());
+    if (drawn_ && !finished_) draw_bar();
+    std::fflush(stderr);
+}
+
 void Progress::set_note(const std::string& note) {
     const std::lock_guard<std::mutex> lock(mutex_);
     note_ = note;
@@ -97,13 +115,14 @@ void Progress::tick() {
 void Progress::finish() {
     const std::lock_guard<std::mutex> lock(mutex_);
     if (finished_) return;
-    if (style_ == ProgressStyle::bar) {
+    if (style_ == ProgressStyle::bar && total_ > 0) {
         draw_bar();
         std::fputc('\n', stderr);
         std::fflush(stderr);
     }
     if (style_ == ProgressStyle::lines && wrote_line_ && shown_ != done_) write_line();
     finished_ = true;
+    drawn_ = false;
 }
 
 std::string Progress::counts() const {
@@ -122,7 +141,9 @@ std::string Progress::counts() const {
 }
 
 void Progress::draw_bar() {
+    if (total_ == 0) return;  // nothing to count yet
     last_ = Clock::now();
+    drawn_ = true;
     constexpr std::size_t kWidth = 30;
     std::string bar(done_ * kWidth / total_, '#');
     bar.resize(kWidth, '.');
@@ -133,6 +154,7 @@ void Progress::draw_bar() {
 }
 
 void Progress::write_line() {
+    if (total_ == 0) return;
     last_ = Clock::now();
     shown_ = done_;
     wrote_line_ = true;

@@ -26,8 +26,8 @@ struct ProgressSettings {
 // The environment variable that gives --progress's default (a batch script or a CI job sets it once).
 inline constexpr const char* kProgressEnvironment = "VIBROIMPACT_PROGRESS";
 
-// Adds --progress and --progress-interval to a command.
-void add_progress_options(CLI::App& sub, ProgressSettings& s);
+// Adds --progress and --progress-interval to a command; returns --progress.
+CLI::Option* add_progress_options(CLI::App& sub, ProgressSettings& s);
 
 // The style the settings ask for: auto is a bar when stderr is a terminal and lines otherwise.
 // Throws InputError for a mode (of VIBROIMPACT_PROGRESS) that is none of the four.
@@ -51,6 +51,10 @@ public:
     void advance(std::size_t n = 1);
     // n more units done that this run did not compute (a journal's): not in the rate.
     void skip(std::size_t n = 1);
+    // The total once it is known (a Progress made with total 0 shows nothing but say() until then).
+    void set_total(std::size_t total);
+    // A line of its own (an event of the run), written above the bar; nothing when the style is none.
+    void say(const std::string& line);
     // Text shown after the counts (the slowest point, the best value so far); empty: none.
     void set_note(const std::string& note);
     // The ticker's call: redraws the bar, or writes a line once the interval has passed since the last.
@@ -73,6 +77,7 @@ private:
     bool upper_bound_;
     bool wrote_line_ = false;
     bool finished_ = false;
+    bool drawn_ = false;  // the bar is on the terminal's last line
     Clock::time_point start_ = Clock::now();
     Clock::time_point last_ = start_;  // of the last drawing or line
     std::string note_;

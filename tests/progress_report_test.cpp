@@ -57,13 +57,21 @@ std::size_t expect_progress_lines(const std::string& err, const std::string& wha
     return lines.size();
 }
 
-// The lines of `err` that start with `prefix`, each ended by a newline.
-std::string lines_starting(const std::string& err, const std::string& prefix) {
+// The lines of `err` that start with `prefix`, each ended by a newline; with `counts`, only those
+// where a count follows the prefix (not a command's event lines, "paper: [ 0.3 s] ...").
+std::string lines_starting(const std::string& err, const std::string& prefix, bool counts = false) {
     std::string out;
     for (const std::string& l : lines_of(err)) {
-        if (l.rfind(prefix, 0) == 0) out += l + "\n";
+        const bool digit = l.size() > prefix.size() && l[prefix.size()] >= '0' && l[prefix.size()] <= '9';
+        if (l.rfind(prefix, 0) == 0 && (!counts || digit)) out += l + "\n";
     }
     return out;
+}
+
+// The total of the first count line "what: done/TOTAL unit, ...", or 0.
+std::size_t total_of(const std::string& lines) {
+    const std::size_t slash = lines.find('/');
+    return slash == std::string::npos ? 0 : std::stoul(lines.substr(slash + 1));
 }
 
 TEST(ProgressReport, APipedSweepWritesALinePerPointAtIntervalZero) {
@@ -169,13 +177,45 @@ TEST(ProgressReport, APipedPullinWritesItsBranchAndItsTransients) {
                                           "--json", "--progress", "lines", "--progress-interval", "0"});
     EXPECT_EQ(r.exit_code, 0) << r.err;
     // The branch in step lengths of the air gap (200) and the 16 frequency points.
-    const std::string branch = lines_starting(r.err, "pullin: ");
+    const std::string branch = lines_starting(r.err, "pullin: ", true);
     EXPECT_GE(expect_progress_lines(branch, "pullin", "steps", 216, false), 17u) << r.err;
     // One line per transient of the bisection, of at most 2 + 11 (0.5 V_PI .. V_PI to 1e-3).
     const std::size_t trials = nlohmann::json::parse(r.out)["dynamic"]["trials"].size();
     const std::string dynamic = lines_starting(r.err, "pullin --dynamic: ");
     EXPECT_EQ(expect_progress_lines(dynamic, "pullin --dynamic", "transients", 13, true, trials), trials) << r.err;
     EXPECT_EQ(lines_of(branch).size() + lines_of(dynamic).size(), lines_of(r.err).size()) << r.err;
+}
+
+TEST(ProgressReport, PaperAndValidateCountTheirJobsAndSectionsBesideTheirEventLines) {
+    const std::string dir = test::make_temp_dir();
+    const auto paper = test::run_vibroimpact({"paper", "--out", dir + "/paper", "--positions", "3", "--modal-positions", "3",
+                                              "--prestress-points", "3", "--scan-horizon", "150 us", "--progress", "lines",
+                                              "--progress-interval", "0"});
+    EXPECT_EQ(paper.exit_code, 0) << paper.err;
+    const std::string jobs = lines_starting(paper.err, "paper: ", true);
+    const std::size_t total = total_of(jobs);
+    EXPECT_GT(total, 10u) << paper.err;
+    EXPECT_EQ(expect_progress_lines(jobs, "paper", "jobs", total, false), total);
+    EXPECT_NE(paper.err.find("paper: ["), std::string::npos) << paper.err;
+    EXPECT_NE(paper.err.find("] figures drawn"), std::string::npos) << paper.err;
+
+    const std::vector<std::string> validate{"validate", "--quick", "--case", free_impact(), "--out", dir + "/v.md"};
+    std::vector<std::string> lines = validate;
+    lines.insert(lines.end(), {"--progress", "lines", "--progress-interval", "0"});
+    const auto v = test::run_vibroimpact(lines);
+    EXPECT_EQ(v.exit_code, 0) << v.err;
+    EXPECT_EQ(expect_progress_lines(lines_starting(v.err, "validate: ", true), "validate", "sections", 10, false), 10u) << v.err;
+    EXPECT_NE(v.err.find("validate: done in "), std::string::npos) << v.err;
+    // --progress none is --quiet: nothing on stderr; the two together are refused.
+    std::vector<std::string> none = validate;
+    none.insert(none.end(), {"--progress", "none"});
+    EXPECT_EQ(test::run_vibroimpact(none).err, "");
+    std::vector<std::string> both = validate;
+    both.insert(both.end(), {"--progress", "lines", "--quiet"});
+    const auto refused = test::run_vibroimpact(both);
+    EXPECT_EQ(refused.exit_code, 2) << refused.err;
+    EXPECT_NE(refused.err.find("excludes"), std::string::npos) << refused.err;
+    fs::remove_all(dir);
 }
 
 TEST(ProgressReport, OnATerminalAFitDrawsABarAndEndsItsLine) {
