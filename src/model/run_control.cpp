@@ -23,6 +23,18 @@ double now_s() {
 thread_local double t_deadline = 0.0;
 thread_local double t_seconds = 0.0;
 thread_local std::string t_setting;
+// The innermost ProgressNote of this thread, or null.
+thread_local const std::function<std::string()>* t_note = nullptr;
+
+// What the innermost note says, or "" (a note that fails to say is left out: the timeout matters more).
+std::string progress_text() {
+    if (t_note == nullptr || !*t_note) return "";
+    try {
+        return (*t_note)();
+    } catch (...) {
+        return "";
+    }
+}
 
 }  // namespace
 
@@ -60,13 +72,20 @@ ScopedTimeLimit::~ScopedTimeLimit() {
     t_setting = std::move(previous_setting_);
 }
 
+ProgressNote::ProgressNote(std::function<std::string()> describe) : describe_(std::move(describe)), previous_(t_note) {
+    t_note = &describe_;
+}
+
+ProgressNote::~ProgressNote() { t_note = previous_; }
+
 double time_limit_elapsed() { return t_deadline > 0.0 ? now_s() - (t_deadline - t_seconds) : 0.0; }
 
 void check_run() {
     if (g_stop.load(std::memory_order_relaxed)) throw StopRequested(g_signal.load());
     if (t_deadline > 0.0 && now_s() > t_deadline) {
-        throw TimeLimitReached("timeout: more than " + significant(t_seconds, 6) + " s of wall time (raise " + t_setting +
-                               ")");
+        const std::string doing = progress_text();
+        throw TimeLimitReached("timeout: more than " + significant(t_seconds, 6) + " s of wall time (raise " + t_setting + ")" +
+                               (doing.empty() ? "" : "; " + doing));
     }
 }
 

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "forces/force_assembly.hpp"
 #include "statics/bordered_solver.hpp"
@@ -297,10 +299,12 @@ std::string collapse_onto_a_pad(const Model& m, const State& s, double voltage) 
     return end;
 }
 
+// The frequencies at o.frequency_points voltages of the open branch; `point_done` after each.
 void add_frequencies(const Model& m, const std::vector<State>& open, double top, const PullinOptions& o,
-                     PullinResult& r) {
+                     PullinResult& r, const std::function<void()>& point_done) {
     if (open.empty() || o.frequency_points < 2) return;
     for (int i = 0; i < o.frequency_points; ++i) {
+        if (i > 0) point_done();
         const double target = top * i / (o.frequency_points - 1);
         const State* best = &open.front();
         for (const State& s : open) {
@@ -322,6 +326,7 @@ void add_frequencies(const Model& m, const std::vector<State>& open, double top,
         }
         if (r.frequencies.empty() || r.frequencies.back().voltage != f.voltage) r.frequencies.push_back(std::move(f));
     }
+    point_done();
 }
 
 }  // namespace
@@ -369,7 +374,13 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
     open.push_back(s);
     r.branch.push_back(describe(m, s, ls));
 
-    const double full = o.steps > 0 ? m.air_gap / o.steps : m.air_gap / 200;
+    const int budget_steps = o.steps > 0 ? o.steps : 200;
+    const double full = m.air_gap / budget_steps;
+    int reported = 0;  // units of the progress budget (steps, then frequency points) reported
+    const auto report = [&](int units, int unused) {
+        if (o.progress && units + unused > 0) o.progress(units, unused);
+        reported += units + unused;
+    };
     double step = full;
     State previous = s;
     const long max_points = 8L * std::max(o.steps, 1) + 200;
@@ -408,6 +419,7 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
         // Release: the lowest voltage at which a closed support still holds the beam stably.
         if (p.contact && p.stable) r.release_voltage = std::min(r.release_voltage.value_or(p.voltage), p.voltage);
         r.branch.push_back(p);
+        report(std::max(0, std::min(budget_steps, static_cast<int>(s.tau / full)) - reported), 0);
         r.end = collapse_onto_a_pad(m, s, p.voltage);
         if (!r.end.empty()) break;
         if (s.lambda > lambda_limit) {
@@ -421,7 +433,9 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
         if (!r.pullin || x.tau <= r.pullin->travel) stable_open.push_back(x);
     }
     const double top = r.pullin ? r.pullin->voltage : r.touchdown ? r.touchdown->voltage : r.branch.back().voltage;
-    add_frequencies(m, stable_open, top, o, r);
+    report(0, budget_steps - reported);
+    add_frequencies(m, stable_open, top, o, r, [&] { report(1, 0); });
+    report(0, budget_steps + o.frequency_points - reported);
     r.lu_fallbacks = ls.fallbacks();
     return r;
 }

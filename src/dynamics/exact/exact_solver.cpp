@@ -15,6 +15,7 @@
 #include "dynamics/exact/exact_state.hpp"
 #include "dynamics/piecewise_linear_form.hpp"
 #include "dynamics/exact/state_modes.hpp"
+#include "model/number_format.hpp"
 #include "model/run_control.hpp"
 
 namespace vi {
@@ -107,6 +108,18 @@ std::optional<Tangency> resolve_tangency(const ExpSignal& F, const ExpSignal& d,
     return std::nullopt;
 }
 
+// The time reached, the pieces so far and the last one's length, and the closest contact gap at the
+// current piece's start (negative: a penetration): computed only when a time limit is reached.
+std::string exact_progress(double t, double t_end, long pieces, double last_piece, const PieceSolution* piece, int contacts) {
+    std::string out = "the exact solver had reached t = " + significant(t, 6) + " s of " + significant(t_end, 6) + " s in " +
+                      std::to_string(pieces) + " pieces";
+    if (std::isfinite(last_piece)) out += "; last piece " + significant(last_piece, 3) + " s";
+    double gap = std::numeric_limits<double>::infinity();
+    for (int c = 0; piece != nullptr && c < contacts; ++c) gap = std::min(gap, -piece->penetration(c).value(0.0));
+    if (std::isfinite(gap)) out += "; closest contact gap " + significant(gap, 3) + " m (negative: penetration)";
+    return out;
+}
+
 // What to change when contact states repeat at one instant (see the caller).
 std::string endless_switching_message(const PiecewiseLinearProblem& p, int only, int who, double t) {
     const std::string at = " switches without end at t = " + std::to_string(t * 1e6) + " us (zero-length contact states repeat)";
@@ -193,6 +206,10 @@ private:
     // The piece being played: where its first event lies and whose (-1: none, or a release).
     double tau_e_ = 0.0;
     int who_ = -1;
+    // What a time limit reached during the run reports (model/run_control.hpp): the current piece
+    // (null while the next is made: the last may leave the cache) and the last one's length.
+    const PieceSolution* piece_ = nullptr;
+    double last_piece_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 ExactRun::ExactRun(const PiecewiseLinearProblem& p, const TransientOptions& o, const ExactOptions& settings)
@@ -398,7 +415,9 @@ bool ExactRun::advance() {
     const double end = piece_end();
     const auto t_piece = Clock::now();
     const double dec_before = model_.decomposition_seconds();
+    piece_ = nullptr;
     const PieceSolution& s = piece_at(model_, p_, active_, x_, t_, end);
+    piece_ = &s;
     res_.stats.propagation_s += seconds_since(t_piece) - (model_.decomposition_seconds() - dec_before);
     const double span = end - t_;
     if (resting(s, end)) {
@@ -425,6 +444,7 @@ bool ExactRun::advance() {
     res_.stats.propagation_s += seconds_since(t_prop);
     ++res_.stats.steps;
     t_ += tau_e_;
+    last_piece_ = tau_e_;
     count_zero_length_piece();
     if (who_ >= 0) switch_contact(s);
     return true;
@@ -453,6 +473,7 @@ void ExactRun::finish() {
 
 TransientResult ExactRun::run() {
     start();
+    const ProgressNote note([this] { return exact_progress(t_, p_.t_end, pieces_, last_piece_, piece_, nc_); });
     while (t_ < p_.t_end && advance()) {
     }
     finish();
