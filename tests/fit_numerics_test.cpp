@@ -44,7 +44,7 @@ MeasuredTrajectory ten_microseconds() {
     m.file = "synthetic";
     m.column = "tip_m";
     m.t = run.result.history.t;
-    m.value = run.result.history.tip_v;
+    m.value = run.result.history.watched_v;
     return m;
 }
 

@@ -58,7 +58,7 @@ TEST(LargeOutput, AMillionSampleFitWritesItsResultsAndAFigureFromAThinnedCopy) {
     std::string text = "t_s,tip_m,tip_velocity_m_s,contact0_m,contact0_velocity_m_s,contact0_force_n\n";
     text.reserve(std::size_t{120} << 20);
     for (std::size_t k = 0; k < h.t.size(); ++k) {
-        for (const double v : {h.t[k], h.tip_v[k], h.tip_velocity[k], h.contact_v[0][k], h.contact_velocity[0][k]}) {
+        for (const double v : {h.t[k], h.watched_v[k], h.watched_velocity[k], h.contact_v[0][k], h.contact_velocity[0][k]}) {
             append_shortest(text, v);
             text += ',';
         }
@@ -100,7 +100,7 @@ TEST(LargeOutput, AFigureThatCannotBeDrawnNeverThrowsAwayTheResults) {
         for (std::size_t k = 0; k < run.result.history.t.size(); ++k) {
             append_shortest(text, run.result.history.t[k]);
             text += ',';
-            append_shortest(text, run.result.history.tip_v[k]);
+            append_shortest(text, run.result.history.watched_v[k]);
             text += '\n';
         }
         test::write_text(dir + "/tip.csv", text);

@@ -130,7 +130,7 @@ std::string fit_data(const std::string& dir) {
     const SimulationRun run = run_simulation(c, o);
     std::string text = "t_s,tip_m\n";
     for (std::size_t k = 0; k < run.result.history.t.size(); ++k) {
-        text += round_trip_text(run.result.history.t[k]) + "," + round_trip_text(run.result.history.tip_v[k]) + "\n";
+        text += round_trip_text(run.result.history.t[k]) + "," + round_trip_text(run.result.history.watched_v[k]) + "\n";
     }
     test::write_text(dir + "/tip.csv", text);
     return dir + "/tip.csv";

@@ -57,25 +57,26 @@ TEST(TransientSolver, EnergyHistoryOnlyOnRequest) {
     }
 }
 
+// The solver stops with WorkLimitReached naming `setting`.
+void expect_work_limit(const TransientSolver& s, const TransientProblem& p, const TransientOptions& o,
+                       const std::string& setting) {
+    try {
+        (void)s.solve(p, o);
+        ADD_FAILURE() << s.method() << ": no WorkLimitReached for " << setting;
+    } catch (const WorkLimitReached& e) {
+        EXPECT_NE(std::string(e.what()).find(setting), std::string::npos) << e.what();
+    }
+}
+
 TEST(TransientSolver, WorkBoundsNameTheSettingThatRaisesThem) {
     const TransientProblem p = drop();
     for (const auto& s : both()) {
         TransientOptions few_events;
         few_events.max_events = 1;
-        try {
-            (void)s->solve(p, few_events);
-            ADD_FAILURE() << s->method() << ": no WorkLimitReached at max_events = 1";
-        } catch (const WorkLimitReached& e) {
-            EXPECT_NE(std::string(e.what()).find("solver.max_events"), std::string::npos) << e.what();
-        }
+        expect_work_limit(*s, p, few_events, "solver.max_events");
         TransientOptions few_steps;
         few_steps.max_steps = 5;
-        try {
-            (void)s->solve(p, few_steps);
-            ADD_FAILURE() << s->method() << ": no WorkLimitReached at max_steps = 5";
-        } catch (const WorkLimitReached& e) {
-            EXPECT_NE(std::string(e.what()).find("solver.max_steps"), std::string::npos) << e.what();
-        }
+        expect_work_limit(*s, p, few_steps, "solver.max_steps");
     }
 }
 
