@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "fem/beam_element.hpp"
+#include "model/bisection.hpp"
 
 namespace vi {
 namespace {
@@ -32,20 +33,7 @@ std::vector<double> quadratic_roots(double c0, double c1, double c2) {
 
 // Root of a polynomial monotone on [a, b] with a sign change, by bisection to machine precision.
 double bisect(const Eigen::Vector4d& c, double a, double b) {
-    double fa = poly(c, a);
-    for (int it = 0; it < 200 && b - a > 0.0; ++it) {
-        const double mid = 0.5 * (a + b);
-        if (mid <= a || mid >= b) break;
-        const double fm = poly(c, mid);
-        if (fm == 0.0) return mid;
-        if ((fm < 0) == (fa < 0)) {
-            a = mid;
-            fa = fm;
-        } else {
-            b = mid;
-        }
-    }
-    return 0.5 * (a + b);
+    return bisect_sign_change([&](double x) { return poly(c, x); }, a, b);
 }
 
 // Per element: polynomial of v (or theta, scaled to the same x) in xi.

@@ -5,25 +5,10 @@
 #include <functional>
 #include <stdexcept>
 
+#include "model/bisection.hpp"
+
 namespace vi::closed_form {
 namespace {
-
-// Bisection to machine precision of f on [a, b] with f(a) f(b) < 0.
-double bisect(const std::function<double(double)>& f, double a, double b) {
-    double fa = f(a);
-    for (int i = 0; i < 200; ++i) {
-        const double m = 0.5 * (a + b);
-        if (m <= a || m >= b) break;
-        const double fm = f(m);
-        if ((fm < 0) == (fa < 0)) {
-            a = m;
-            fa = fm;
-        } else {
-            b = m;
-        }
-    }
-    return 0.5 * (a + b);
-}
 
 // The first n sign changes of f on (lo, hi) scanned with step h, each refined by bisection.
 std::vector<double> roots(const std::function<double(double)>& f, double lo, double hi, double h, int n) {
@@ -33,7 +18,7 @@ std::vector<double> roots(const std::function<double(double)>& f, double lo, dou
     while (static_cast<int>(r.size()) < n && a < hi) {
         const double b = std::min(a + h, hi);
         const double fb = f(b);
-        if (fa != 0.0 && (fa < 0) != (fb < 0)) r.push_back(bisect(f, a, b));
+        if (fa != 0.0 && (fa < 0) != (fb < 0)) r.push_back(bisect_sign_change(f, a, b));
         a = b;
         fa = fb;
     }
