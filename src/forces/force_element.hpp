@@ -31,6 +31,16 @@ struct ContactReading {
     double point_velocity = 0.0;
 };
 
+// What a terminal mode (ForceElement::ends_run) answers, read where the element entered it: a
+// one-word outcome ("collapsed"), the place along the beam [m] (negative when none), the value that
+// decided it (for an electrode, the narrowest air gap [m]) and one sentence saying what happened.
+struct RunEnd {
+    std::string outcome;
+    double x = -1.0;
+    double value = 0.0;
+    std::string text;
+};
+
 // Which term of the energy ledger an element's stored energy belongs to: a contact's spring, the
 // electrical co-energy of an electrode (-C V^2/2), or strain energy (mid-plane stretching).
 enum class StoredEnergyKind { contact_spring, electrical, strain };
@@ -85,6 +95,13 @@ public:
     // The mode at the start of a transient from state s: static_mode, except where a solver must
     // take a contact that touches and moves in (d = 0, dd/dt > 0) as closed.
     [[nodiscard]] virtual int initial_mode(const ElementState& s) const { return static_mode(s); }
+
+    // A terminal mode: entering it ends a transient, because the model stops holding there and the
+    // state reached is itself the answer (the beam collapsing onto a bare electrode's face: its force
+    // grows without bound, and following it further only creeps toward a singularity). The solver
+    // locates the switch into it as any other and ends the run there with run_end's reading.
+    [[nodiscard]] virtual bool ends_run(int /*mode*/) const { return false; }
+    [[nodiscard]] virtual RunEnd run_end(const ElementState& /*s*/) const { return {}; }
 
     // Watch functions: smooth functions whose zero crossings a solver locates because something is
     // reported there (a contact's peak force and penetration) or because a switch could hide between

@@ -169,9 +169,46 @@ std::string layer_reason(const StuckBalance& b, double held_for) {
 
 }  // namespace
 
+namespace {
+
+// The collapse that ended r, if an electrode's terminal mode did.
+std::optional<SwitchingCollapse> collapse_of(const TransientResult& r, const std::vector<Electrode>& electrodes) {
+    if (!r.ended_by || r.ended_by->reading.outcome != "collapsed") return std::nullopt;
+    SwitchingCollapse c{r.ended_by->name, r.ended_by->t, r.ended_by->reading.x, 0.0, r.ended_by->reading.value};
+    for (std::size_t k = 0; k < electrodes.size(); ++k) {
+        if (c.electrode == "electrodes[" + std::to_string(k) + "]") c.voltage = electrodes[k].voltage * electrodes[k].time(c.time);
+    }
+    return c;
+}
+
+}  // namespace
+
 SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1,
                                  const std::vector<std::optional<ContactHold>>& holds,
                                  const std::vector<std::optional<LayerHold>>& layers) {
+    SwitchingLedger L = switching_ledger_to_end(r, electrodes, omega1, holds, layers);
+    L.collapse = collapse_of(r, electrodes);
+    if (!L.collapse) return L;
+    // The run ended at the collapse: no contact after it, none stable, nothing released.
+    L.state = "collapsed";
+    L.reason = r.ended_by->reading.text;
+    L.stable_contact.reset();
+    L.release_time.reset();
+    L.stuck.reset();
+    L.bounces = 0;
+    L.contacts.clear();
+    L.peak_force = 0.0;
+    for (const ContactEpisode& e : r.episodes) {
+        L.contacts.push_back({e.support, e.t_on, e.t_off, e.v_in, e.peak_force, e.closed_at_end});
+        L.peak_force = std::max(L.peak_force, e.peak_force);
+        if (!e.closed_at_end) ++L.bounces;
+    }
+    return L;
+}
+
+SwitchingLedger switching_ledger_to_end(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1,
+                                        const std::vector<std::optional<ContactHold>>& holds,
+                                        const std::vector<std::optional<LayerHold>>& layers) {
     SwitchingLedger L;
     L.voltage = voltage_window(electrodes);
     const std::vector<ContactEpisode>& eps = r.episodes;

@@ -50,6 +50,15 @@ struct StuckBalance {
     std::optional<LayerHold> layer;  // a layer's peel balance
 };
 
+// The beam collapsing onto an electrode: the run ended there (ElectrostaticPad's terminal mode).
+struct SwitchingCollapse {
+    std::string electrode;  // "electrodes[k]"
+    double time = 0.0;      // [s]
+    double x = 0.0;         // where the air gap is narrowest [m]
+    double voltage = 0.0;   // that electrode's V at that time [V]
+    double air_gap = 0.0;   // the narrowest air gap then [m]
+};
+
 struct SwitchingLedger {
     VoltageWindow voltage;
     std::optional<double> closing_time;    // onset of the first contact episode [s]
@@ -60,8 +69,10 @@ struct SwitchingLedger {
     std::optional<double> release_time;    // end of the last contact, once the voltage has fallen [s]
     // never_closed, closed (still closed at the horizon), stuck (closed at the horizon after the voltage
     // fell, held by adhesion), released (opened after the voltage fell), opened_before_voltage_off,
-    // bouncing (open at the horizon with the voltage still on).
+    // bouncing (open at the horizon with the voltage still on), collapsed (the beam reached an
+    // electrode, which ended the run: `collapse`; the contacts are those up to then).
     std::string state;
+    std::optional<SwitchingCollapse> collapse;  // with state "collapsed"
     std::optional<StuckBalance> stuck;  // with state "stuck"
     std::string reason;  // one sentence: why that state
 };
@@ -73,5 +84,9 @@ struct SwitchingLedger {
 SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1,
                                  const std::vector<std::optional<ContactHold>>& holds = {},
                                  const std::vector<std::optional<LayerHold>>& layers = {});
+// The ledger of a run read to its end as if the horizon ended it (switching_ledger without the collapse).
+SwitchingLedger switching_ledger_to_end(const TransientResult& r, const std::vector<Electrode>& electrodes,
+                                        double omega1, const std::vector<std::optional<ContactHold>>& holds,
+                                        const std::vector<std::optional<LayerHold>>& layers);
 
 }  // namespace vi

@@ -146,6 +146,10 @@ nlohmann::json switching_json(const SwitchingLedger& l) {
             {"contacts", contacts}};
     // Only where a support has adhesion, so that the summaries of other cases stay as they were.
     if (l.stuck) j["stuck"] = stuck;
+    if (const auto& c = l.collapse) {
+        j["collapse"] = {{"electrode", c->electrode}, {"time_s", c->time}, {"x_m", c->x},
+                         {"voltage_v", c->voltage}, {"air_gap_m", c->air_gap}};
+    }
     return j;
 }
 
@@ -196,7 +200,10 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
         j["solver"]["initial_projection_error"] = r.stats.initial_projection_error;
     }
     if (!r.stats.fallback_reason.empty()) j["solver"]["fallback_reason"] = r.stats.fallback_reason;
-    if (switching) j["switching"] = switching_json(*switching);
+    if (switching) {
+        j["switching"] = switching_json(*switching);
+        if (switching->collapse) j["switching"]["collapse"]["x_over_l"] = switching->collapse->x / c.beam.length;
+    }
     j["resolved"] = resolved_case_json(c, b, s);
     return j;
 }

@@ -131,6 +131,9 @@ private:
     void record(double t, const double* y);
     double handle_roots(double tret);
     [[nodiscard]] bool contact_closed() const;  // some contact element is in its contact mode
+    // Whether some element is in a terminal mode (ForceElement::ends_run); if so, records it as what
+    // ended the run at t.
+    bool ended_by_element(double t);
     double locate_missed_switch(int e, double tret);
     void toggle(double t, const std::vector<int>& which);
     void restart(double t);
@@ -329,6 +332,15 @@ bool Driver::contact_closed() const {
     return false;
 }
 
+bool Driver::ended_by_element(double t) {
+    for (int e = 0; e < sys_.elements(); ++e) {
+        if (!sys_.element(e).ends_run(modes_[static_cast<std::size_t>(e)])) continue;
+        r_.ended_by = RunEndEvent{e, sys_.element(e).name(), t, sys_.run_end(e, t, N_VGetArrayPointer(s_.y))};
+        return true;
+    }
+    return false;
+}
+
 void Driver::add_counters() {
     long nst = 0, nsetups = 0;
     check(CVodeGetNumSteps(s_.mem, &nst), "CVodeGetNumSteps");
@@ -396,7 +408,8 @@ TransientResult Driver::run() {
 
     double t = 0.0;
     std::size_t seg = 0;
-    for (;;) {
+    if (ended_by_element(0.0)) t_final_ = 0.0;
+    while (!r_.ended_by) {
         const double t_stop = stops_[seg];
         if (t >= t_stop || same_time(t, t_stop)) {  // reached a stop: the end, or a breakpoint
             sample_until(t_stop, false);
@@ -441,6 +454,11 @@ TransientResult Driver::run() {
                 restart(t);
             } else {
                 stalled_roots_ = 0;
+            }
+            if (ended_by_element(t)) {
+                sample_until(t, false);
+                t_final_ = t;
+                break;
             }
             if (o_.stop_at_first_contact && contact_closed()) {
                 sample_until(t, false);

@@ -214,6 +214,11 @@ ContactReading ModalSystem::reading(int e, double t, const double* y) const {
     return element(e).contact_reading(ElementState{element_time(t), scratch_.q.data(), scratch_.v.data(), nullptr});
 }
 
+RunEnd ModalSystem::run_end(int e, double t, const double* y) const {
+    gather(e, y, nullptr, scratch_);
+    return element(e).run_end(ElementState{element_time(t), scratch_.q.data(), scratch_.v.data(), nullptr});
+}
+
 double ModalSystem::stored_energy(int e, int mode, double t, const double* y) const {
     gather(e, y, nullptr, scratch_);
     return element(e).stored_energy(ElementState{element_time(t), scratch_.q.data(), scratch_.v.data(), nullptr},
@@ -238,6 +243,9 @@ std::vector<int> ModalSystem::initial_modes(const double* y) const {
         // solver's event search closes it: CVODE holds a root function that is zero at the start
         // inactive, and would let the beam pass into the support (shared/cases/starts_in_contact.toml).
         if (el.is_contact() && start == el.contact_mode()) modes[ue] = start;
+        // A state the model no longer holds at t = 0 (the beam already within an electrode's
+        // collapse gap) ends the run at once.
+        if (el.ends_run(start)) modes[ue] = start;
     }
     return modes;
 }
