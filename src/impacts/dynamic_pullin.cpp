@@ -1,5 +1,7 @@
 #include "impacts/dynamic_pullin.hpp"
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -67,8 +69,9 @@ StepBisection bisect_step_voltage(const std::function<StepTrial(double)>& trial,
     return b;
 }
 
-StepTrial case_step_trial(const Case& c, double voltage, double horizon, PullinCriterion criterion) {
-    const Case k = stepped(c, voltage, horizon, criterion);
+StepTrial case_step_trial(const Case& c, double voltage, double horizon, PullinCriterion criterion, int reduced_modes) {
+    Case k = stepped(c, voltage, horizon, criterion);
+    if (reduced_modes >= 0) k.solver.reduced_modes = reduced_modes;
     const auto limits = check_transient_run(k, false, memory_budget_bytes());
     if (!limits.empty()) throw InputError(limits.front().key + ": " + limits.front().message);
     const BuiltProblem built = build_transient_problem(k);
@@ -80,12 +83,19 @@ StepTrial case_step_trial(const Case& c, double voltage, double horizon, PullinC
     // The first contact answers the question; the bouncing after it (grazing contacts near the
     // threshold chatter for millions of steps) is not needed.
     co.stop_at_first_contact = true;
+    const auto start = std::chrono::steady_clock::now();
     StepTrial t;
     t.voltage = voltage;
     t.how = "open";
+    t.reduced_modes = k.solver.reduced_modes;
     try {
         const TransientResult r = solve_cvode(built.problem, co);
-        if (!r.episodes.empty()) {
+        if (r.ended_by) {
+            // The beam collapsed onto an electrode (its pad's terminal mode): pulled in.
+            t.closes = true;
+            t.closing_time = r.ended_by->t;
+            t.how = "collapse";
+        } else if (!r.episodes.empty()) {
             t.closes = true;
             t.closing_time = r.episodes.front().t_on;
             t.how = "contact";
@@ -95,8 +105,44 @@ StepTrial case_step_trial(const Case& c, double voltage, double horizon, PullinC
         t.closes = true;
         t.how = "electrode";
     }
+    t.seconds = seconds_since(start);
     return t;
 }
+
+namespace {
+
+// The reduced model's final bracket b run again on the full model: its upper end over the whole
+// horizon (it ends at the closure or collapse), then its lower end over the time the upper end took
+// to pull in plus one period of mode 1. That is the first approach to the threshold, where the two
+// models can part; the later swings were followed by the reduced model over the whole horizon, and
+// the full model differs from it only in the modes it cuts, which respond quasi-statically (docs/
+// electrostatics.md §6). Agreeing at both ends, b stands (out.confirmed); otherwise the full model
+// bisects on from what its trials showed, and b becomes its bracket. Returns every trial run.
+std::vector<StepTrial> confirm_on_full_model(const Case& c, StepBisection& b, DynamicPullinResult& out,
+                                             const DynamicPullinOptions& o, double lo, double period) {
+    std::vector<StepTrial> trials = b.trials;
+    check_run();
+    trials.push_back(case_step_trial(c, b.upper, out.horizon, o.criterion, 0));
+    const StepTrial above = trials.back();
+    if (above.closes) {
+        const double first_approach = std::min(out.horizon, *above.closing_time + period);
+        check_run();
+        trials.push_back(case_step_trial(c, b.lower, first_approach, o.criterion, 0));
+    }
+    const bool below_holds = above.closes && !trials.back().closes;
+    out.confirmed = below_holds;
+    if (out.confirmed) return trials;
+    // Where the full model parts from the reduced one, it decides: a lower end that pulls in moves
+    // the bracket down, an upper end that holds moves it up.
+    const double from = above.closes ? lo : b.upper;
+    const double to = above.closes ? b.lower : out.static_voltage;
+    const auto full = [&](double v) { return case_step_trial(c, v, out.horizon, o.criterion, 0); };
+    b = bisect_step_voltage(full, from, to, o.bisection);
+    trials.insert(trials.end(), b.trials.begin(), b.trials.end());
+    return trials;
+}
+
+}  // namespace
 
 DynamicPullinResult dynamic_pullin(const Case& c, double static_voltage, const DynamicPullinOptions& o) {
     if (c.electrodes.empty()) throw InputError("electrodes: dynamic pull-in needs at least one [[electrodes]]");
@@ -108,16 +154,25 @@ DynamicPullinResult dynamic_pullin(const Case& c, double static_voltage, const D
     out.static_voltage = static_voltage;
     out.criterion = o.criterion;
     out.horizon = o.horizon;
-    if (!(out.horizon > 0.0)) {
-        // Ten periods of mode 1: with the voltage on, a beam that is not pulled in within its first
-        // swings is held (its largest travel comes in the first swing, the damping only lowers the later).
-        // omega1 does not depend on the horizon; any positive one builds.
-        const double probe = c.solver.output_step > 0.0 ? c.solver.output_step : 1e-9;
-        const BeamModel m = build_beam_model(stepped(c, static_voltage, probe, o.criterion));
-        out.horizon = 10.0 * 2.0 * std::numbers::pi / m.omega1;
+    // omega1 and the size of the model do not depend on the horizon; any positive one builds.
+    const double probe = c.solver.output_step > 0.0 ? c.solver.output_step : 1e-9;
+    const BeamModel m = build_beam_model(stepped(c, static_voltage, probe, o.criterion));
+    // Ten periods of mode 1: with the voltage on, a beam that is not pulled in within its first
+    // swings is held (its largest travel comes in the first swing, the damping only lowers the later).
+    const double period = 2.0 * std::numbers::pi / m.omega1;
+    if (!(out.horizon > 0.0)) out.horizon = 10.0 * period;
+    const double lo = o.lower_fraction * static_voltage;
+    const auto modes = static_cast<int>(m.M.rows());
+    const bool reduce = c.solver.reduced_modes == 0 && o.reduced_modes > 0 && modes > 2 * o.reduced_modes;
+    out.bisected_on = reduce ? o.reduced_modes : c.solver.reduced_modes;
+    out.reduced_modes = c.solver.reduced_modes;
+    const auto on = [&](int model) {
+        return [&c, &out, &o, model](double v) { return case_step_trial(c, v, out.horizon, o.criterion, model); };
+    };
+    StepBisection b = bisect_step_voltage(on(out.bisected_on), lo, static_voltage, o.bisection);
+    if (reduce) {
+        b.trials = confirm_on_full_model(c, b, out, o, lo, period);
     }
-    const auto trial = [&](double v) { return case_step_trial(c, v, out.horizon, o.criterion); };
-    const StepBisection b = bisect_step_voltage(trial, o.lower_fraction * static_voltage, static_voltage, o.bisection);
     out.lower = b.lower;
     out.upper = b.upper;
     out.voltage = 0.5 * (b.lower + b.upper);

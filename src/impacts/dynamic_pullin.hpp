@@ -16,7 +16,9 @@ struct StepTrial {
     double voltage = 0.0;                // [V]
     bool closes = false;                 // pulled in within the horizon
     std::optional<double> closing_time;  // first contact onset [s] (empty: none, or the beam reached the electrode)
-    std::string how;                     // "contact", "electrode" or "open"
+    std::string how;                     // "contact", "collapse", "electrode" or "open"
+    int reduced_modes = 0;               // the model it ran on: 0 the full one, N a reduced one
+    double seconds = 0.0;                // its wall time [s]
 };
 
 struct StepBisectionOptions {
@@ -49,6 +51,11 @@ struct DynamicPullinOptions {
     double lower_fraction = 0.5;  // the bracket: lower_fraction x V_PI(static) .. V_PI(static)
     PullinCriterion criterion = PullinCriterion::close;
     StepBisectionOptions bisection;
+    // A case on its full model (solver.reduced_modes = 0) whose beam has more than twice this many
+    // bending modes is bisected first on the reduced model of this many modes (docs/model.md §13),
+    // and that bracket is kept when the full model agrees at both of its ends; otherwise the
+    // bisection goes on with the full model from what its two trials showed. 0: the case's model only.
+    int reduced_modes = 8;
 };
 
 struct DynamicPullinResult {
@@ -59,11 +66,18 @@ struct DynamicPullinResult {
     std::optional<double> upper_closing_time;  // when the upper end's transient closed [s]
     PullinCriterion criterion = PullinCriterion::close;
     std::vector<StepTrial> trials;
+    // The model the bracket holds for: 0 the full one (bisected on it, or the reduced bracket confirmed
+    // at both ends by it: `confirmed`), N the case's own reduced model of N modes.
+    int reduced_modes = 0;
+    int bisected_on = 0;     // the model the bisection ran on first (0 full, N reduced)
+    bool confirmed = false;  // a reduced model's bracket, both ends run again on the full model and agreeing
 };
 
 // One transient of c with every electrode's waveform replaced by a step to `voltage` at t = 0 (all
 // electrodes at one voltage, as the static tracer), CVODE over `horizon` without history.
-StepTrial case_step_trial(const Case& c, double voltage, double horizon, PullinCriterion criterion);
+// reduced_modes: the model (0 full, N > 0 reduced), or -1 for the case's own solver.reduced_modes.
+StepTrial case_step_trial(const Case& c, double voltage, double horizon, PullinCriterion criterion,
+                          int reduced_modes = -1);
 
 // V_DPI of c. Throws InputError when c has no electrode or a transient limit refuses the run, and
 // what bisect_step_voltage and solve_cvode throw.

@@ -113,6 +113,8 @@ nlohmann::json dynamic_pullin_json(const DynamicPullinResult& r) {
         trials.push_back({{"voltage_V", t.voltage},
                           {"pulls_in", t.closes},
                           {"how", t.how},
+                          {"reduced_modes", t.reduced_modes},
+                          {"seconds", t.seconds},
                           {"closing_time_s", t.closing_time ? nlohmann::json(*t.closing_time) : nlohmann::json(nullptr)}});
     }
     return {{"voltage_V", r.voltage},
@@ -123,16 +125,31 @@ nlohmann::json dynamic_pullin_json(const DynamicPullinResult& r) {
             {"upper_closing_time_s",
              r.upper_closing_time ? nlohmann::json(*r.upper_closing_time) : nlohmann::json(nullptr)},
             {"criterion", r.criterion == PullinCriterion::close ? "close" : "electrode"},
+            {"bisected_on_reduced_modes", r.bisected_on},
+            {"confirmed_on_full_model", r.confirmed},
+            {"model", dynamic_pullin_model_text(r)},
             {"horizon_s", r.horizon},
             {"trials", trials}};
+}
+
+std::string dynamic_pullin_model_text(const DynamicPullinResult& r) {
+    const std::string reduced = "the reduced model of " + std::to_string(r.bisected_on) + " modes";
+    if (r.bisected_on > 0 && r.reduced_modes == 0) {
+        return r.confirmed ? "bisected on " + reduced + "; the full model agrees at both ends of the bracket"
+                           : "bisected on " + reduced + ", which the full model did not confirm; the bracket is the "
+                                                        "full model's";
+    }
+    if (r.bisected_on > 0) return "bisected on " + reduced + " (solver.reduced_modes)";
+    return "bisected on the full model";
 }
 
 std::string dynamic_pullin_text(const DynamicPullinResult& r) {
     std::string out = line("Dynamic pull-in V_DPI = %.6g V (= %.4f of static)\n", r.voltage, r.voltage / r.static_voltage);
     out += line("  step bracket %.6g .. %.6g V", r.lower, r.upper);
-    out += line(", %.0f transients of %.4g us each", static_cast<double>(r.trials.size()), r.horizon * 1e6);
+    out += line(", %.0f transients of at most %.4g us", static_cast<double>(r.trials.size()), r.horizon * 1e6);
     out += r.criterion == PullinCriterion::close ? ", criterion: a support closes or the beam reaches the electrode\n"
                                                  : ", criterion: the beam reaches the electrode (supports removed)\n";
+    out += "  " + dynamic_pullin_model_text(r) + "\n";
     return out;
 }
 
