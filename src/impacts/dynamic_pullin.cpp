@@ -111,35 +111,35 @@ StepTrial case_step_trial(const Case& c, double voltage, double horizon, PullinC
 
 namespace {
 
-// The reduced model's final bracket b run again on the full model: its upper end over the whole
-// horizon (it ends at the closure or collapse), then its lower end over the time the upper end took
-// to pull in plus one period of mode 1. That is the first approach to the threshold, where the two
-// models can part; the later swings were followed by the reduced model over the whole horizon, and
-// the full model differs from it only in the modes it cuts, which respond quasi-statically (docs/
-// electrostatics.md §6). Agreeing at both ends, b stands (out.confirmed); otherwise the full model
-// bisects on from what its trials showed, and b becomes its bracket. Returns every trial run.
-std::vector<StepTrial> confirm_on_full_model(const Case& c, StepBisection& b, DynamicPullinResult& out,
-                                             const DynamicPullinOptions& o, double lo, double period) {
-    std::vector<StepTrial> trials = b.trials;
+// The models a case on its full model is bisected on, coarsest first: the reduced model of n modes,
+// then of 2n, 4n, ... while that stays below half the beam's `modes`, then the full model (0).
+std::vector<int> model_ladder(int n, int modes) {
+    std::vector<int> out;
+    for (int k = n; k > 0 && 2 * k <= modes; k *= 2) out.push_back(k);
+    out.push_back(0);
+    return out;
+}
+
+// Both ends of the bracket b run again on `model` over the whole horizon: true when the lower end
+// still holds and the upper still pulls in there. Appends the trials; `from`, `to` get the bracket
+// the finer model is known to lie in (with the end that disagreed moved out).
+bool confirm_bracket(const std::function<StepTrial(double)>& trial, const StepBisection& b, double lo, double hi,
+                     std::vector<StepTrial>& trials, double& from, double& to) {
     check_run();
-    trials.push_back(case_step_trial(c, b.upper, out.horizon, o.criterion, 0));
-    const StepTrial above = trials.back();
-    if (above.closes) {
-        const double first_approach = std::min(out.horizon, *above.closing_time + period);
-        check_run();
-        trials.push_back(case_step_trial(c, b.lower, first_approach, o.criterion, 0));
+    trials.push_back(trial(b.upper));
+    if (!trials.back().closes) {
+        from = b.upper;
+        to = hi;
+        return false;
     }
-    const bool below_holds = above.closes && !trials.back().closes;
-    out.confirmed = below_holds;
-    if (out.confirmed) return trials;
-    // Where the full model parts from the reduced one, it decides: a lower end that pulls in moves
-    // the bracket down, an upper end that holds moves it up.
-    const double from = above.closes ? lo : b.upper;
-    const double to = above.closes ? b.lower : out.static_voltage;
-    const auto full = [&](double v) { return case_step_trial(c, v, out.horizon, o.criterion, 0); };
-    b = bisect_step_voltage(full, from, to, o.bisection);
-    trials.insert(trials.end(), b.trials.begin(), b.trials.end());
-    return trials;
+    check_run();
+    trials.push_back(trial(b.lower));
+    if (trials.back().closes) {
+        from = lo;
+        to = b.lower;
+        return false;
+    }
+    return true;
 }
 
 }  // namespace
@@ -159,20 +159,36 @@ DynamicPullinResult dynamic_pullin(const Case& c, double static_voltage, const D
     const BeamModel m = build_beam_model(stepped(c, static_voltage, probe, o.criterion));
     // Ten periods of mode 1: with the voltage on, a beam that is not pulled in within its first
     // swings is held (its largest travel comes in the first swing, the damping only lowers the later).
-    const double period = 2.0 * std::numbers::pi / m.omega1;
-    if (!(out.horizon > 0.0)) out.horizon = 10.0 * period;
+    if (!(out.horizon > 0.0)) out.horizon = 10.0 * 2.0 * std::numbers::pi / m.omega1;
     const double lo = o.lower_fraction * static_voltage;
     const auto modes = static_cast<int>(m.M.rows());
+    // On the case's full model, the bisection runs on a reduced model and its bracket is checked on
+    // the next finer one (twice the modes, at last the full model): the bracket stands once a finer
+    // model agrees at both of its ends, a modal convergence check (docs/electrostatics.md §6). A
+    // full model costs far more: an undamped one follows its mesh's top modes at every step.
     const bool reduce = c.solver.reduced_modes == 0 && o.reduced_modes > 0 && modes > 2 * o.reduced_modes;
-    out.bisected_on = reduce ? o.reduced_modes : c.solver.reduced_modes;
+    const std::vector<int> ladder = reduce ? model_ladder(o.reduced_modes, modes) : std::vector<int>{c.solver.reduced_modes};
     out.reduced_modes = c.solver.reduced_modes;
+    out.bisected_on = ladder.front();
     const auto on = [&](int model) {
-        return [&c, &out, &o, model](double v) { return case_step_trial(c, v, out.horizon, o.criterion, model); };
+        return std::function<StepTrial(double)>(
+            [&c, &out, &o, model](double v) { return case_step_trial(c, v, out.horizon, o.criterion, model); });
     };
-    StepBisection b = bisect_step_voltage(on(out.bisected_on), lo, static_voltage, o.bisection);
-    if (reduce) {
-        b.trials = confirm_on_full_model(c, b, out, o, lo, period);
+    StepBisection b = bisect_step_voltage(on(ladder.front()), lo, static_voltage, o.bisection);
+    std::vector<StepTrial> trials = b.trials;
+    out.model = ladder.front();
+    for (std::size_t k = 1; k < ladder.size(); ++k) {
+        double from = lo, to = static_voltage;
+        if (confirm_bracket(on(ladder[k]), b, lo, static_voltage, trials, from, to)) {
+            out.confirmed_on = ladder[k];
+            break;
+        }
+        // The finer model parts from the coarser one: it bisects on from what it showed.
+        b = bisect_step_voltage(on(ladder[k]), from, to, o.bisection);
+        trials.insert(trials.end(), b.trials.begin(), b.trials.end());
+        out.model = ladder[k];
     }
+    b.trials = std::move(trials);
     out.lower = b.lower;
     out.upper = b.upper;
     out.voltage = 0.5 * (b.lower + b.upper);

@@ -52,9 +52,10 @@ struct DynamicPullinOptions {
     PullinCriterion criterion = PullinCriterion::close;
     StepBisectionOptions bisection;
     // A case on its full model (solver.reduced_modes = 0) whose beam has more than twice this many
-    // bending modes is bisected first on the reduced model of this many modes (docs/model.md §13),
-    // and that bracket is kept when the full model agrees at both of its ends; otherwise the
-    // bisection goes on with the full model from what its two trials showed. 0: the case's model only.
+    // bending modes is bisected on the reduced model of this many modes (docs/model.md §13), and its
+    // bracket checked on the model of twice as many (at last the full one): kept when that model
+    // agrees at both ends, else the finer model bisects on and is checked in turn. 0: the case's
+    // model only.
     int reduced_modes = 8;
 };
 
@@ -66,11 +67,13 @@ struct DynamicPullinResult {
     std::optional<double> upper_closing_time;  // when the upper end's transient closed [s]
     PullinCriterion criterion = PullinCriterion::close;
     std::vector<StepTrial> trials;
-    // The model the bracket holds for: 0 the full one (bisected on it, or the reduced bracket confirmed
-    // at both ends by it: `confirmed`), N the case's own reduced model of N modes.
+    // The models (0 the full one, N a reduced one of N modes): the case's own, the one the bracket
+    // comes from, and the finer one that agreed at both of its ends (-1 when none was asked: the
+    // case's own reduced model, or a beam too small to reduce).
     int reduced_modes = 0;
-    int bisected_on = 0;     // the model the bisection ran on first (0 full, N reduced)
-    bool confirmed = false;  // a reduced model's bracket, both ends run again on the full model and agreeing
+    int bisected_on = 0;   // the first model bisected on
+    int model = 0;         // the model whose bisection gave the bracket
+    int confirmed_on = -1;
 };
 
 // One transient of c with every electrode's waveform replaced by a step to `voltage` at t = 0 (all

@@ -125,22 +125,22 @@ nlohmann::json dynamic_pullin_json(const DynamicPullinResult& r) {
             {"upper_closing_time_s",
              r.upper_closing_time ? nlohmann::json(*r.upper_closing_time) : nlohmann::json(nullptr)},
             {"criterion", r.criterion == PullinCriterion::close ? "close" : "electrode"},
-            {"bisected_on_reduced_modes", r.bisected_on},
-            {"confirmed_on_full_model", r.confirmed},
+            {"model_reduced_modes", r.model},
+            {"confirmed_on_reduced_modes", r.confirmed_on >= 0 ? nlohmann::json(r.confirmed_on) : nlohmann::json(nullptr)},
             {"model", dynamic_pullin_model_text(r)},
             {"horizon_s", r.horizon},
             {"trials", trials}};
 }
 
 std::string dynamic_pullin_model_text(const DynamicPullinResult& r) {
-    const std::string reduced = "the reduced model of " + std::to_string(r.bisected_on) + " modes";
-    if (r.bisected_on > 0 && r.reduced_modes == 0) {
-        return r.confirmed ? "bisected on " + reduced + "; the full model agrees at both ends of the bracket"
-                           : "bisected on " + reduced + ", which the full model did not confirm; the bracket is the "
-                                                        "full model's";
-    }
-    if (r.bisected_on > 0) return "bisected on " + reduced + " (solver.reduced_modes)";
-    return "bisected on the full model";
+    const auto name = [](int modes) {
+        return modes > 0 ? "the reduced model of " + std::to_string(modes) + " modes" : std::string("the full model");
+    };
+    std::string out = "bracket of " + name(r.model);
+    if (r.model != r.bisected_on) out += " (" + name(r.bisected_on) + " parted from it first)";
+    if (r.confirmed_on >= 0) out += "; " + name(r.confirmed_on) + " agrees at both ends";
+    if (r.model > 0 && r.reduced_modes == r.model) out += " (solver.reduced_modes)";
+    return out;
 }
 
 std::string dynamic_pullin_text(const DynamicPullinResult& r) {
