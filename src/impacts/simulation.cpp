@@ -112,7 +112,8 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
             layers.emplace_back();
             if (c.electrodes[k].work_of_adhesion) layers.back() = layer_hold(c, k);
         }
-        run.switching = switching_ledger(run.result, c.electrodes, run.built.model.omega1, holds, layers);
+        run.switching =
+            switching_ledger(run.result, c.electrodes, run.built.model.omega1, holds, layers, run.summary.group_gap);
     }
     return run;
 }

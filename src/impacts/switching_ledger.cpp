@@ -181,14 +181,37 @@ std::optional<SwitchingCollapse> collapse_of(const TransientResult& r, const std
     return c;
 }
 
+// The bounces among L.contacts (a prefix of r.episodes) followed by a flight of at least gap before
+// the next episode, or by none.
+int grouped_bounce_count(const SwitchingLedger& L, const std::vector<ContactEpisode>& eps, double gap) {
+    int n = 0;
+    for (std::size_t i = 0; i < L.contacts.size(); ++i) {
+        const ContactEpisode& e = eps[i];
+        const bool bounce = !e.closed_at_end && !(L.stable_contact && e.t_on >= *L.stable_contact);
+        if (bounce && (i + 1 >= eps.size() || eps[i + 1].t_on - e.t_off >= gap)) ++n;
+    }
+    return n;
+}
+
 }  // namespace
+
+std::string bounce_text(const SwitchingLedger& l) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "%d (every separation, chatter included); %d after a flight of at least %.4g us", l.bounces,
+                  l.grouped_bounces, l.group_gap * 1e6);
+    return buf;
+}
 
 SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1,
                                  const std::vector<std::optional<ContactHold>>& holds,
-                                 const std::vector<std::optional<LayerHold>>& layers) {
+                                 const std::vector<std::optional<LayerHold>>& layers, double group_gap) {
     SwitchingLedger L = switching_ledger_to_end(r, electrodes, omega1, holds, layers);
+    L.group_gap = group_gap > 0.0 ? group_gap : 0.25 * 2.0 * std::numbers::pi / omega1;
     L.collapse = collapse_of(r, electrodes);
-    if (!L.collapse) return L;
+    if (!L.collapse) {
+        L.grouped_bounces = grouped_bounce_count(L, r.episodes, L.group_gap);
+        return L;
+    }
     // The run ended at the collapse: no contact after it, none stable, nothing released.
     L.state = "collapsed";
     L.reason = r.ended_by->reading.text;
@@ -203,6 +226,7 @@ SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Ele
         L.peak_force = std::max(L.peak_force, e.peak_force);
         if (!e.closed_at_end) ++L.bounces;
     }
+    L.grouped_bounces = grouped_bounce_count(L, r.episodes, L.group_gap);
     return L;
 }
 

@@ -62,7 +62,13 @@ struct SwitchingCollapse {
 struct SwitchingLedger {
     VoltageWindow voltage;
     std::optional<double> closing_time;    // onset of the first contact episode [s]
-    int bounces = 0;                       // contact episodes that opened before stable contact
+    // Contact episodes that opened before stable contact: every separation, the chatter inside one
+    // impact included (a re-closure after a flight shorter than group_gap, DESIGN.md §3).
+    int bounces = 0;
+    // The same bounces grouped as impacts are: those followed by a flight of at least group_gap (or by
+    // no further contact); a separation after a shorter flight is chatter within one impact.
+    int grouped_bounces = 0;
+    double group_gap = 0.0;                // [s]: solver.group_gap, by default a quarter period of mode 1
     std::optional<double> stable_contact;  // onset of the episode that stays closed [s]
     std::vector<SwitchingContact> contacts;  // first contact up to stable contact (or all, without one)
     double peak_force = 0.0;               // largest of those [N]
@@ -83,10 +89,12 @@ struct SwitchingLedger {
 // of an adhesive dielectric layer (empty otherwise).
 SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1,
                                  const std::vector<std::optional<ContactHold>>& holds = {},
-                                 const std::vector<std::optional<LayerHold>>& layers = {});
+                                 const std::vector<std::optional<LayerHold>>& layers = {}, double group_gap = 0.0);
 // The ledger of a run read to its end as if the horizon ended it (switching_ledger without the collapse).
 SwitchingLedger switching_ledger_to_end(const TransientResult& r, const std::vector<Electrode>& electrodes,
                                         double omega1, const std::vector<std::optional<ContactHold>>& holds,
                                         const std::vector<std::optional<LayerHold>>& layers);
+// How the bounces are counted, in words, with the grouped count: for the text output and the report.
+std::string bounce_text(const SwitchingLedger& l);
 
 }  // namespace vi

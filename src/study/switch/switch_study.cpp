@@ -101,7 +101,7 @@ ReportDocument switch_report(const SwitchStudy& s, const std::string& command) {
         const auto us = [](const std::optional<double>& t) { return t ? formatted("%.5g us", *t * 1e6) : std::string("-"); };
         d.heading(3, "Switching ledger");
         d.table({"closing time", "bounces", "stable contact from", "peak contact force [uN]", "release time", "state"},
-                {{us(w.closing_time), std::to_string(w.bounces), us(w.stable_contact), formatted("%.4g", w.peak_force * 1e6),
+                {{us(w.closing_time), bounce_text(w), us(w.stable_contact), formatted("%.4g", w.peak_force * 1e6),
                   us(w.release_time), w.state}});
         d.paragraph(w.reason);
     }
