@@ -61,12 +61,14 @@ CommandBody add_pullin_command(CLI::App& app) {
         } catch (const InputError& e) {
             throw locate_in_case(c, e);
         }
+        // A branch that ends before it found pull-in or touch-down has no answer to give.
+        if (!r.pullin && !r.touchdown) throw std::runtime_error("pullin: no pull-in and no touch-down found: " + r.end);
         std::optional<DynamicPullinResult> dyn;
         if (opt->dynamic) {
             if (!r.pullin) {
-                std::fprintf(stderr, "vibroimpact pullin: --dynamic needs a static pull-in to bracket, and the branch has "
-                                     "none (%s)\n", r.touchdown ? "a support closes first" : r.end.c_str());
-                return kExitFailure;
+                throw std::runtime_error(std::string("pullin --dynamic: needs a static pull-in to bracket, and the branch "
+                                                     "has none (") +
+                                         (r.touchdown ? "a support closes first" : r.end.c_str()) + ")");
             }
             DynamicPullinOptions o = opt->dyn;
             o.horizon = horizon;
@@ -89,11 +91,6 @@ CommandBody add_pullin_command(CLI::App& app) {
             std::printf("Case %s: %s\n%s", opt->case_path.c_str(), c.name.c_str(), pullin_text(r).c_str());
             if (dyn) std::printf("%s", dynamic_pullin_text(*dyn).c_str());
             if (!opt->out_dir.empty()) std::printf("Written to %s/\n", opt->out_dir.c_str());
-        }
-        // A branch that ends before it found pull-in or touch-down has no answer to give.
-        if (!r.pullin && !r.touchdown) {
-            std::fprintf(stderr, "vibroimpact pullin: no pull-in and no touch-down found: %s\n", r.end.c_str());
-            return kExitFailure;
         }
         return kExitOk;
     };
