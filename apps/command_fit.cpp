@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -60,17 +61,25 @@ std::string command_line(const FitCommandOptions& o) {
 int finish(const FitCommandOptions& o, const nlohmann::json& j, OutputFiles files, const std::vector<FigureSpec>& figures,
            const std::string& gnuplot, const std::string& text, const std::vector<const FitResult*>& results) {
     files["fit.json"] = j.dump(2) + "\n";
-    write_with_figures(o.out, std::move(files), figures, gnuplot);
+    const std::optional<std::string> figure_failed = write_with_figures(o.out, std::move(files), figures, gnuplot);
     if (o.json) {
         std::printf("%s\n", j.dump(2).c_str());
     } else {
         std::printf("%sWritten to %s/\n", text.c_str(), o.out.c_str());
     }
+    const std::string figure_note =
+        figure_failed ? "; the figure was not drawn (" + *figure_failed + "), fit.json and fit_residuals.csv are written" : "";
     for (const FitResult* r : results) {
         if (!r->converged) {
-            std::fprintf(stderr, "vibroimpact: fit: did not converge (%s); fit.json holds the last estimate\n", r->message.c_str());
+            std::fprintf(stderr, "vibroimpact: fit: did not converge (%s); fit.json holds the last estimate%s\n", r->message.c_str(),
+                         figure_note.c_str());
             return kExitFailure;
         }
+    }
+    if (figure_failed) {
+        std::fprintf(stderr, "vibroimpact: fit: the figure was not drawn (%s); fit.json and fit_residuals.csv are written in %s\n",
+                     figure_failed->c_str(), o.out.c_str());
+        return kExitFailure;
     }
     return kExitOk;
 }

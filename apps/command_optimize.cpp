@@ -6,6 +6,7 @@
 #include <csignal>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -166,7 +167,15 @@ DesignProblem read_problem(const OptimizeCommandOptions& o, const std::string& c
     p.base = read_case_text(case_text, o.case_path);
     p.columns = sweep_result_columns(SweepAnalysis::simulate, 0);
     p.settings.point_timeout = o.point_timeout;
-    for (const std::string& v : o.vary) p.variables.push_back(parse_design_variable(v, p.base));
+    for (const std::string& v : o.vary) {
+        DesignVariable variable = parse_design_variable(v, p.base);
+        for (const DesignVariable& earlier : p.variables) {
+            if (earlier.path.text() == variable.path.text()) {
+                throw InputError("--vary " + v + ": " + variable.path.text() + " is already varied by --vary " + earlier.setting);
+            }
+        }
+        p.variables.push_back(std::move(variable));
+    }
     p.maximize = !o.maximize.empty();
     p.objective = quantity_column(p.maximize ? o.maximize : o.minimize, p.columns, p.maximize ? "--maximize" : "--minimize");
     for (const std::string& c : o.constraints) p.constraints.push_back(parse_design_constraint(c, p.columns));
@@ -177,6 +186,11 @@ DesignProblem read_problem(const OptimizeCommandOptions& o, const std::string& c
 // to go on.
 int run_optimize(const OptimizeCommandOptions& opt) {
     if (opt.minimize.empty() == opt.maximize.empty()) throw InputError("optimize: give one of --minimize or --maximize");
+    if (opt.global_evals >= opt.max_evals) {
+        throw InputError("--global-evals " + std::to_string(opt.global_evals) + ": must be below --max-evals " +
+                         std::to_string(opt.max_evals) +
+                         " (it is the global stage's share of them; the local stage needs one at least)");
+    }
     const std::string gnuplot = require_gnuplot(opt.gnuplot, "the convergence figure");
     std::string reason;
     const auto case_text = file_text(opt.case_path, reason);
@@ -192,6 +206,7 @@ int run_optimize(const OptimizeCommandOptions& opt) {
 
     OptimizeResult r;
     nlohmann::json j;
+    std::optional<std::string> figure_failed;
     const auto t0 = std::chrono::steady_clock::now();
     try {
         r = optimize_design(p, o);
@@ -201,19 +216,28 @@ int run_optimize(const OptimizeCommandOptions& opt) {
         OutputFiles files;
         files["optimize.json"] = j.dump(2) + "\n";
         files["evaluations.csv"] = evaluations_csv(p, r);
-        write_with_figures(opt.out, std::move(files), {convergence_figure(p, r)}, gnuplot);
+        figure_failed = write_with_figures(opt.out, std::move(files), {convergence_figure(p, r)}, gnuplot);
         journal.remove();
         if (opt.json) {
             std::printf("%s\n", j.dump(2).c_str());
         } else {
             print_result(opt, p, r, wall_s);
         }
+    } catch (const InputError&) {
+        // A refusal leaves nothing behind: a journal this run started goes with it.
+        if (journal.started_here()) journal.remove();
+        throw;
     } catch (const StopRequested& s) {
         std::fprintf(stderr,
                      "vibroimpact: optimize interrupted: %zu designs computed, kept in %s; run the same command with "
                      "--resume to go on\n",
                      journal.size(), journal.path().c_str());
         return kExitStoppedBase + (s.signal() > 0 ? s.signal() : SIGINT);
+    }
+    if (figure_failed) {
+        std::fprintf(stderr, "vibroimpact: optimize: the convergence figure was not drawn (%s); optimize.json and "
+                             "evaluations.csv are written in %s\n", figure_failed->c_str(), opt.out.c_str());
+        return kExitFailure;
     }
     if (!r.best) {
         std::fprintf(stderr, "vibroimpact: optimize: no design met the constraints and ran to the end in %zu evaluations "

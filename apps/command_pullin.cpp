@@ -5,6 +5,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
 #include "statics/pullin.hpp"
@@ -16,6 +17,25 @@
 #include "report/pullin_output.hpp"
 
 namespace vi::cli {
+namespace {
+
+// The dynamic pull-in's transients run over a horizon the command sets (--horizon, or ten periods
+// of mode 1), not the case file's: a check that refuses it names the option, or says where the
+// default came from, rather than the case file's solver.horizon line.
+InputError blame_horizon(const Case& c, const InputError& e, const std::string& horizon_option) {
+    const std::string what = e.what();
+    const std::string horizon = "solver.horizon: ", step = "solver.output_step: ";
+    const std::string option =
+        horizon_option.empty() ? "--horizon (default: ten periods of mode 1)" : "--horizon " + horizon_option;
+    if (what.rfind(horizon, 0) == 0) return InputError(option + ": " + what.substr(horizon.size()));
+    // The case's output step against the command's horizon: both named, the option first.
+    if (what.rfind(step, 0) == 0 && what.find("horizon") != std::string::npos) {
+        return InputError(option + ": the case's " + locate_in_case(c, e).what());
+    }
+    return locate_in_case(c, e);
+}
+
+}  // namespace
 
 CommandBody add_pullin_command(CLI::App& app) {
     struct PullinCommandOptions {
@@ -35,16 +55,22 @@ CommandBody add_pullin_command(CLI::App& app) {
         ->check(CLI::Range(10, 100000));
     sub->add_flag("--dynamic", opt->dynamic,
                   "Also the dynamic (step) pull-in voltage, by bisection on transients (docs/electrostatics.md)");
-    sub->add_option("--horizon", opt->horizon, "--dynamic: length of each transient (default 10 periods of mode 1)");
-    sub->add_option("--bisections", opt->dyn.bisection.bisections, "--dynamic: most transients after the bracket")
-        ->check(CLI::Range(1, 200));
-    sub->add_option("--rel-width", opt->dyn.bisection.rel_width, "--dynamic: relative width of the final bracket")
-        ->check(CLI::Range(1e-12, 0.5));
+    const std::vector<CLI::Option*> dynamic_only{
+        sub->add_option("--horizon", opt->horizon, "--dynamic: length of each transient (default 10 periods of mode 1)"),
+        sub->add_option("--bisections", opt->dyn.bisection.bisections, "--dynamic: most transients after the bracket")
+            ->check(CLI::Range(1, 200)),
+        sub->add_option("--rel-width", opt->dyn.bisection.rel_width, "--dynamic: relative width of the final bracket")
+            ->check(CLI::Range(1e-12, 0.5))};
     sub->add_flag("--json", opt->json, "Print one JSON document on stdout instead of text");
     sub->add_option("--out,-o", opt->out_dir, "Folder for pullin.json, pullin_branch.csv, pullin_frequencies.csv");
 
-    return [opt]() {
-        // Bad options are refused before any work.
+    return [opt, dynamic_only]() {
+        // Bad options are refused before any work, and so are options that would do nothing.
+        for (const CLI::Option* o : dynamic_only) {
+            if (o->count() > 0 && !opt->dynamic) {
+                throw InputError(o->get_name() + ": applies to --dynamic (the step pull-in), which is not asked for");
+            }
+        }
         double horizon = 0.0;
         if (!opt->horizon.empty()) {
             try {
@@ -75,7 +101,7 @@ CommandBody add_pullin_command(CLI::App& app) {
             try {
                 dyn = dynamic_pullin(c, r.pullin->voltage, o);
             } catch (const InputError& e) {
-                throw locate_in_case(c, e);
+                throw blame_horizon(c, e, opt->horizon);
             }
         }
         nlohmann::json j = pullin_json(r);

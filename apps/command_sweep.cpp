@@ -274,10 +274,10 @@ CommandBody add_sweep_command(CLI::App& app) {
     sub->add_option("--analysis", opt->analysis, "What each point computes: simulate (transient) or modes")
         ->check(CLI::IsMember({"simulate", "modes"}))
         ->capture_default_str();
-    sub->add_option("--modes", opt->modes, "Bending modes per point of a modes sweep")
-        ->check(CLI::Range(1, 100))
-        ->capture_default_str();
-    add_support_model_option(*sub, opt->support_model);
+    CLI::Option* modes = sub->add_option("--modes", opt->modes, "Bending modes per point of a modes sweep")
+                             ->check(CLI::Range(1, 100))
+                             ->capture_default_str();
+    CLI::Option* support_model = add_support_model_option(*sub, opt->support_model);
     sub->add_option("--out,-o", opt->out_dir,
                     "Folder for sweep.csv and sweep.json, and for the journal of finished points (otherwise the CSV "
                     "goes to stdout and an interrupted sweep is lost)");
@@ -295,7 +295,15 @@ CommandBody add_sweep_command(CLI::App& app) {
         ->check(CLI::Range(0, 4096))
         ->capture_default_str();
     sub->footer(paths_help());
-    return [opt]() { return run_sweep(*opt); };
+    return [opt, modes, support_model]() {
+        // Options a simulate sweep has no use for are refused rather than ignored.
+        if (opt->analysis == "simulate") {
+            for (const CLI::Option* o : {modes, support_model}) {
+                if (o->count() > 0) throw InputError(o->get_name() + ": applies to --analysis modes, not to a simulate sweep");
+            }
+        }
+        return run_sweep(*opt);
+    };
 }
 
 }  // namespace vi::cli

@@ -18,8 +18,8 @@ namespace vi {
 namespace {
 
 // The base case with two supports, ratio damping, a harmonic and a step load, a displacement step
-// with a modal velocity, electrodes with a sine, a step, a pulse and a two-step drive: every path
-// has something to address.
+// with a modal velocity, electrodes with a sine, a step (on an adhesive layer), a pulse and a
+// two-step drive, air and two film spans: every path has something to address.
 Case full_case() {
     const std::string text = test::kBaseCase +
                              "[damping]\nratios = [0.01, 0.02]\nmodes = [1, 3]\n"
@@ -33,9 +33,12 @@ Case full_case() {
                              "[[loads]]\nposition = 0.6\namplitude = \"2 uN\"\nkind = \"step\"\nt_on = \"1 us\"\n"
                              "[[electrodes]]\nfrom = 0.1\nto = 0.5\ngap = \"2 um\"\nvoltage = \"5 V\"\nwaveform = \"sine\"\nfrequency = \"1 kHz\"\n"
                              "[[electrodes]]\nfrom = 0.2\nto = 0.9\ngap = \"2 um\"\ndielectric_thickness = \"0.1 um\"\nvoltage = \"5 V\"\nwaveform = \"step\"\nt_on = \"1 us\"\n"
+                             "work_of_adhesion = \"0.01 J/m^2\"\n"
                              "[[electrodes]]\nfrom = 0.6\nto = 0.7\ngap = \"3 um\"\nvoltage = \"5 V\"\nwaveform = \"pulse\"\nrise = \"1 us\"\nhold = \"2 us\"\nfall = \"1 us\"\n"
                              "[[electrodes]]\nfrom = 0.7\nto = 0.8\ngap = \"3 um\"\nvoltage = \"5 V\"\nwaveform = \"two_step\"\nrise = \"10 ns\"\nlevel = 0.8\nhold = \"2 us\"\n"
                              "[air]\npressure = \"100 Pa\"\n"
+                             "[[films]]\nfrom = 0.0\nto = 0.05\ngap = \"1 um\"\n"
+                             "[[films]]\nfrom = 0.92\nto = 0.95\nside = \"above\"\ngap = \"1 um\"\n"
                              "[solver]\nhorizon = \"50 us\"\n";
     return read_case_text(text, "full.toml");
 }
@@ -98,8 +101,10 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
         ++checked;
     }
     // 47, the adhesion keys (3), the air keys (4), solver.settle_velocity and the waveform's shape
-    // keys beyond t_on and frequency (rise, hold, fall, level, phase, bias).
-    EXPECT_EQ(checked, 61);
+    // keys beyond t_on and frequency (rise, hold, fall, level, phase, bias); since every number of the
+    // schema is a path, the electrode's dielectric_modulus, work_of_adhesion, adhesion_range and
+    // width, and the film's from, to and gap.
+    EXPECT_EQ(checked, 68);
 }
 
 TEST(SweepCasePaths, ValuesLandWhereTheCaseFileWouldPutThem) {

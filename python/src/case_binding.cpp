@@ -13,6 +13,7 @@
 
 #include "bindings.hpp"
 #include "io/case_reader.hpp"
+#include "io/case_writer.hpp"
 #include "model/case_checks.hpp"
 #include "model/input_error.hpp"
 #include "sweep/case_paths.hpp"
@@ -107,6 +108,8 @@ void bind_case(py::module_& m) {
                 set_values(c, v);
             },
             py::arg("values"), "Sets several {path: value} together, then checks the case once")
+        .def("to_toml", &case_to_toml,
+             "The case as a case file: every key in effect with its value, in SI units (reads back as the same case)")
         .def("copy", [](const Case& c) { return Case(c); }, "An independent copy")
         .def("__copy__", [](const Case& c) { return Case(c); })
         .def("__deepcopy__", [](const Case& c, const py::dict&) { return Case(c); }, py::arg("memo"))

@@ -17,6 +17,15 @@ def test_get_and_set_by_path(small_case):
     assert "supports[i].position" in vi.Case.paths()
 
 
+def test_to_toml_reads_back_as_the_same_case(small_case):
+    case = vi.Case.from_file(str(small_case))
+    case.set("supports[0].stiffness", 2500.0)
+    text = case.to_toml()
+    assert "stiffness = 2500.0  # N/m" in text
+    back = vi.Case.from_string(text)
+    assert back.to_toml() == text and back.get("supports[0].stiffness") == 2500.0
+
+
 def test_a_refused_value_leaves_the_case_unchanged_and_names_the_key(small_case):
     case = vi.Case.from_file(str(small_case))
     with pytest.raises(vi.InputError) as e:

@@ -79,6 +79,11 @@ FitResult fit_least_squares(const LeastSquaresProblem& p, const FitOptions& o);
 // model runs to `calls`. Throws std::runtime_error when a difference step cannot run.
 Eigen::MatrixXd jacobian_at(const LeastSquaresProblem& p, const std::vector<double>& x, int& calls);
 
+// The index of the weighted residual (model - data) / sigma with the largest magnitude when their
+// sum of squares is not a finite number (the misfit overflows double precision, or a residual is
+// not finite), else weighted.size(). A fit checks its start with it before Ceres sees the problem.
+std::size_t overflowing_residual(const std::vector<double>& weighted);
+
 // The covariance of r's estimate [SI^2] from its standard errors and correlations (NaN for the
 // undetermined parameters), and back: set_covariance replaces the standard errors, intervals and
 // correlations of r's determined parameters by those of v.

@@ -10,9 +10,9 @@
 namespace vi {
 namespace {
 
-// Columns that hold text (why T_p ended, which support an impact hit), not numbers.
+// Columns that hold text (why T_p ended, which solver ran, which support an impact hit), not numbers.
 bool is_text_column(const std::string& name) {
-    return name == "Tp_reason" || (name.rfind("impact", 0) == 0 && name.size() > 8 && name.ends_with("_support"));
+    return name == "Tp_reason" || name == "solver" || (name.rfind("impact", 0) == 0 && name.size() > 8 && name.ends_with("_support"));
 }
 
 }  // namespace

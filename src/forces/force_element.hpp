@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "forces/linear_form.hpp"
+#include "model/time_function.hpp"
 
 namespace vi {
 
@@ -132,8 +133,9 @@ public:
     // from t = 0 on, so it does not).
     [[nodiscard]] virtual bool in_static_state() const { return true; }
 
-    // Times in (t0, t1) where the force jumps or kinks in time (a step, table knots), ascending.
-    [[nodiscard]] virtual std::vector<double> breakpoints(double /*t0*/, double /*t1*/) const { return {}; }
+    // Times in (t0, t1) where an integrator must stop for its prescribed force (a step's jump, a
+    // table's corners: TimeFunction::stops), ascending.
+    [[nodiscard]] virtual std::vector<TimeBreak> time_stops(double /*t0*/, double /*t1*/) const { return {}; }
 
     // The element as the exact solver needs it, or nullopt when its force is not piecewise linear.
     [[nodiscard]] virtual std::optional<LinearForm> linear_form() const { return std::nullopt; }

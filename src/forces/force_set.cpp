@@ -13,16 +13,23 @@ const ForceElement* first_nonlinear(const ForceSet& forces) {
     return nullptr;
 }
 
-std::vector<double> breakpoints(const ForceSet& forces, double t0, double t1) {
-    std::vector<double> out;
+std::vector<TimeBreak> time_stops(const ForceSet& forces, double t0, double t1) {
+    std::vector<TimeBreak> all;
     for (const ForceElementPtr& e : forces) {
-        for (double b : e->breakpoints(t0, t1)) out.push_back(b);
+        for (const TimeBreak& b : e->time_stops(t0, t1)) all.push_back(b);
     }
-    std::sort(out.begin(), out.end());
+    std::sort(all.begin(), all.end(), [](const TimeBreak& a, const TimeBreak& b) { return a.t < b.t; });
     const auto same = [](double a, double b) {
         return std::abs(a - b) <= 8.0 * std::numeric_limits<double>::epsilon() * std::max({std::abs(a), std::abs(b), 1e-300});
     };
-    out.erase(std::unique(out.begin(), out.end(), same), out.end());
+    std::vector<TimeBreak> out;
+    for (const TimeBreak& b : all) {
+        if (!out.empty() && same(out.back().t, b.t)) {
+            out.back().jump = out.back().jump || b.jump;
+        } else {
+            out.push_back(b);
+        }
+    }
     return out;
 }
 

@@ -165,6 +165,12 @@ FieldReader::FieldReader(const toml::table& table, std::string path, Position at
     if (!path_.empty()) log_.locate(path_, at_);
 }
 
+FieldReader::FieldReader(const toml::table& table, std::string path, Position at, ReadLog& log,
+                         std::vector<std::string_view> accepted)
+    : table_(table), path_(std::move(path)), at_(at), log_(log), accepted_(std::move(accepted)) {
+    if (!path_.empty()) log_.locate(path_, at_);
+}
+
 bool FieldReader::has(std::string_view key) const { return table_.find(key) != table_.end(); }
 
 Position FieldReader::key_position(std::string_view key) const {
@@ -217,10 +223,15 @@ std::optional<std::string> FieldReader::string(std::string_view key, bool requir
 
 std::optional<std::string> FieldReader::choice(std::string_view key, std::initializer_list<std::string_view> options,
                                                bool required) {
+    return choice(key, std::vector<std::string>(options.begin(), options.end()), required);
+}
+
+std::optional<std::string> FieldReader::choice(std::string_view key, const std::vector<std::string>& options,
+                                               bool required) {
     const toml::node* node = find(key, required);
     if (node == nullptr) return std::nullopt;
     std::string list;
-    for (const std::string_view option : options) {
+    for (const std::string& option : options) {
         if (!list.empty()) list += ", ";
         list += '"';
         list += option;
@@ -231,7 +242,7 @@ std::optional<std::string> FieldReader::choice(std::string_view key, std::initia
         wrong_type(key, "one of " + list, *node);
         return std::nullopt;
     }
-    if (std::find(options.begin(), options.end(), std::string_view(s->get())) == options.end()) {
+    if (std::find(options.begin(), options.end(), s->get()) == options.end()) {
         log_.problem(key_position(key), child_path(path_, key),
                      "must be one of " + list + ", got " + in_quotes(s->get()));
         return std::nullopt;

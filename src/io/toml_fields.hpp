@@ -74,6 +74,9 @@ class FieldReader {
 public:
     FieldReader(const toml::table& table, std::string path, Position at, ReadLog& log,
                 std::initializer_list<std::string_view> accepted);
+    // The same with the accepted keys in a list (the schema's; the views must outlive the reader).
+    FieldReader(const toml::table& table, std::string path, Position at, ReadLog& log,
+                std::vector<std::string_view> accepted);
 
     [[nodiscard]] const std::string& path() const { return path_; }
     [[nodiscard]] Position position() const { return at_; }
@@ -86,6 +89,7 @@ public:
     // A string that must be one of options.
     std::optional<std::string> choice(std::string_view key, std::initializer_list<std::string_view> options,
                                       bool required);
+    std::optional<std::string> choice(std::string_view key, const std::vector<std::string>& options, bool required);
     const toml::table* table(std::string_view key, bool required);
     // expected describes the array in the wrong-type message ("an array of 2 numbers").
     const toml::array* array(std::string_view key, bool required, std::string_view expected = "an array");

@@ -4,26 +4,9 @@
 #include <string>
 #include <string_view>
 
-namespace vi {
+#include "model/dimension.hpp"
 
-// The physical dimension a case-file value must have; each accepts only its own units.
-enum class Dimension {
-    dimensionless,  // no unit
-    length,         // m
-    pressure,       // Pa
-    density,        // kg/m^3
-    stiffness,      // N/m
-    damping,        // N s/m
-    force,          // N
-    time,           // s
-    velocity,       // m/s
-    frequency,      // Hz
-    mass_damping,   // 1/s (Rayleigh alpha)
-    voltage,        // V
-    surface_energy, // J/m^2 (work of adhesion)
-    viscosity,      // Pa s
-    temperature,    // K
-};
+namespace vi {
 
 // Human-readable list of the units accepted for a dimension, e.g. "m, mm, um, nm".
 std::string accepted_units(Dimension d);

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "model/parameter_set.hpp"
 #include "model/time_function.hpp"
 #include "model/waveform.hpp"
 
@@ -71,6 +72,7 @@ struct Support {
     double work_of_adhesion = 0.0;           // w [J/m^2]
     double contact_radius = 0.0;             // R of the contacting asperity or sphere [m]
     double adhesion_range = kDefaultAdhesionRange;  // delta [m]
+    ParameterSet params;                     // values of keys registered for supports (a law's own)
     // The pull-off force F_po [N]: 2 pi R w (DMT), 1.5 pi R w (JKR), 0 without adhesion.
     [[nodiscard]] double pull_off_force() const;
 };
@@ -110,6 +112,8 @@ struct PointLoad {
     double position = 1.0;       // x/l
     double amplitude = 0.0;      // [N]
     TimeFunction time;
+    std::string table_file;      // kind table: the CSV file as the case file names it
+    ParameterSet params;         // values of keys registered for loads
 };
 
 // Fringing-field correction of an electrode's force (docs/electrostatics.md §2): none (the
@@ -141,6 +145,8 @@ struct Electrode {
     // `time` again.
     Waveform waveform;
     TimeFunction time;                     // g(t) (ramps, pulses and two-step drives are tables)
+    std::string table_file;                // waveform table: the CSV file as the case file names it
+    ParameterSet params;                   // values of keys registered for electrodes
 };
 
 // The gas around the beam (docs/squeeze-film.md). Its presence in a case ([air]) turns on the
@@ -167,6 +173,7 @@ struct Film {
     double to = 1.0;
     Side side = Side::below;
     double gap = 0.0;  // beam to surface at rest [m]
+    ParameterSet params;  // values of keys registered for films
 };
 
 // Transient solver settings.
@@ -224,6 +231,8 @@ struct Case {
     std::optional<Air> air;       // none: vacuum (no squeeze film)
     std::vector<Film> films;      // explicit film spans (only with air)
     SolverSettings solver;
+    // Entries of sections registered by higher layers (model/case_schema.hpp), by section name.
+    std::map<std::string, std::vector<ParameterSet>, std::less<>> sections;
 };
 
 }  // namespace vi

@@ -5,16 +5,14 @@
 #include <vector>
 
 #include "model/case.hpp"
+#include "model/case_problem.hpp"
 
 namespace vi {
 
-// One thing wrong with a case: the dotted key path (e.g. "supports[1].position") and what is wrong.
-struct CaseProblem {
-    std::string key;
-    std::string message;
-};
-
-// Every problem found, in key order of the case file; empty when the case can be simulated.
+// Every problem found; empty when the case can be simulated. The values of every key in effect
+// against the schema's ranges and the magnitude window (check_key_values), then the rules between
+// keys (supports at one place, a dielectric thinner than its gap, an output step within the
+// horizon, ...) and the derived scales (check_magnitudes).
 std::vector<CaseProblem> check_case(const Case& c);
 
 // True when the end conditions alone keep the beam from moving as a rigid body in bending.

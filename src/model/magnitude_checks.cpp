@@ -9,10 +9,9 @@
 #include "model/run_estimate.hpp"
 #include "model/number_format.hpp"
 
-// Why a window and not just "finite": the solvers form products of a few of these values (EI = E w t^3
-// / 12, omega^2, energies 1/2 k q^2, the state matrix's omega^2 next to 1). A value of 1e-320 is
-// subnormal and has lost its digits; 1e308 overflows at the first product. Nothing physical in SI
-// units comes near 1e+-100, so the window refuses only values that cannot be computed with.
+// The values a case file gives are held to the window by check_key_values (model/key_checks.hpp);
+// here the scales derived from several of them, which can leave the window when each value is in it
+// (a thickness of 1e-45 m gives a second moment of 1e-135 m^4).
 
 namespace vi {
 namespace {
@@ -20,14 +19,6 @@ namespace {
 const std::string kWindow = "1e-100 to 1e100";
 
 bool in_window(double v) { return std::abs(v) >= 1.0 / kMagnitudeLimit && std::abs(v) <= kMagnitudeLimit; }
-
-// A value as given: zero is left to the key's own checks (where zero is allowed it means "none").
-void value(std::vector<CaseProblem>& out, const std::string& key, double v) {
-    if (!std::isfinite(v) || v == 0.0 || in_window(v)) return;
-    out.push_back({key, significant(v, 3) + " is outside the magnitudes double precision computes with here (" + kWindow +
-                            " in SI units" + (std::abs(v) < 2.2250738585072014e-308 ? ", and subnormal" : "") +
-                            "; docs/case-files.md, Limits)"});
-}
 
 // A derived scale: reported on the contributing key whose value lies farthest from 1 (in decades),
 // the one most likely written in the wrong unit.
@@ -48,60 +39,6 @@ void derived(std::vector<CaseProblem>& out, const char* what, double v,
 }
 
 bool usable(double v) { return std::isfinite(v) && v > 0.0 && in_window(v); }
-
-void check_values(std::vector<CaseProblem>& out, const Case& c) {
-    value(out, "beam.length", c.beam.length);
-    value(out, "beam.width", c.beam.width);
-    value(out, "beam.thickness", c.beam.thickness);
-    value(out, "material.youngs_modulus", c.material.youngs_modulus);
-    value(out, "material.density", c.material.density);
-    for (std::size_t i = 0; i < c.supports.size(); ++i) {
-        const Support& s = c.supports[i];
-        const std::string at = "supports[" + std::to_string(i) + "].";
-        value(out, at + "position", s.position);
-        value(out, at + (s.surface_key.empty() ? "gap" : s.surface_key), s.surface);
-        value(out, at + "stiffness", s.stiffness);
-        value(out, at + "damping", s.damping);
-        if (s.damping_ratio) value(out, at + "damping_ratio", *s.damping_ratio);
-    }
-    const RayleighDamping& d = c.damping;
-    if (d.from_ratios) {
-        value(out, "damping.ratios", d.ratio1);
-        value(out, "damping.ratios", d.ratio2);
-    } else {
-        value(out, "damping.alpha", d.alpha);
-        value(out, "damping.beta", d.beta);
-    }
-    const InitialState& in = c.initial;
-    value(out, "initial.position", in.position);
-    if (in.kind == InitialState::Kind::displacement) value(out, "initial.displacement", in.displacement);
-    if (in.kind == InitialState::Kind::force) value(out, "initial.force", in.force);
-    if (in.velocity_kind != InitialState::Velocity::none) value(out, "initial.velocity", in.velocity);
-    for (std::size_t k = 0; k < c.loads.size(); ++k) {
-        const PointLoad& p = c.loads[k];
-        const std::string at = "loads[" + std::to_string(k) + "].";
-        value(out, at + "position", p.position);
-        value(out, at + "amplitude", p.amplitude);
-        const TimeFunction& g = p.time;
-        if (g.kind == TimeFunction::Kind::step) value(out, at + "t_on", g.t_on);
-        if (g.kind == TimeFunction::Kind::harmonic) {
-            value(out, at + "frequency", g.frequency_hz);
-            value(out, at + "phase", g.phase);
-            value(out, at + "offset", g.offset);
-        }
-        for (std::size_t r = 0; r < g.times.size() && r < g.values.size(); ++r) {
-            value(out, at + "table", g.times[r]);
-            value(out, at + "table", g.values[r]);
-        }
-    }
-    const SolverSettings& s = c.solver;
-    value(out, "solver.horizon", s.horizon);
-    value(out, "solver.output_step", s.output_step);
-    value(out, "solver.group_gap", s.group_gap);
-    value(out, "solver.settle_tolerance", s.settle_tolerance);
-    value(out, "solver.settle_velocity", s.settle_velocity);
-    value(out, "solver.rtol", s.rtol);
-}
 
 // The beam's derived scales and the supports against the beam; only once its own values are usable.
 void check_scales(std::vector<CaseProblem>& out, const Case& c) {
@@ -154,9 +91,6 @@ void check_scales(std::vector<CaseProblem>& out, const Case& c) {
 
 }  // namespace
 
-void check_magnitudes(std::vector<CaseProblem>& out, const Case& c) {
-    check_values(out, c);
-    check_scales(out, c);
-}
+void check_magnitudes(std::vector<CaseProblem>& out, const Case& c) { check_scales(out, c); }
 
 }  // namespace vi

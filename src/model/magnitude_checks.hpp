@@ -9,10 +9,10 @@
 
 namespace vi {
 
-// Appends the magnitude problems of c to out: a nonzero value (SI) or a derived scale of the beam
-// (A, I, EI, rho A, its mass, EI/l^3, omega_1^2, the mesh's highest omega^2) outside
-// [1/kMagnitudeLimit, kMagnitudeLimit]; a support stiffer than kMaxContactRatio EI/l^3, or whose damper
-// at omega_1 is. Values that are not finite or have the wrong sign are left to check_case's own checks.
+// Appends the magnitude problems of c's derived scales to out: a derived scale of the beam (A, I, EI,
+// rho A, its mass, EI/l^3, omega_1^2, the mesh's highest omega^2) outside [1/kMagnitudeLimit,
+// kMagnitudeLimit]; a support stiffer than kMaxContactRatio EI/l^3, or whose damper at omega_1 is.
+// The values themselves are check_key_values's (model/key_checks.hpp).
 void check_magnitudes(std::vector<CaseProblem>& out, const Case& c);
 
 }  // namespace vi

@@ -110,7 +110,8 @@ double memory_budget_bytes() {
 }
 
 std::vector<CaseProblem> check_transient_run(const Case& c, bool history, double memory_budget) {
-    // In the order of their keys in a case file: beam.elements, solver.horizon, solver.output_step.
+    // In the order of their keys in a case file: beam.elements, the load and voltage tables,
+    // solver.horizon, solver.output_step.
     std::vector<CaseProblem> out;
     const RunEstimate e = estimate_run(c);
     const bool cvode = c.solver.method == SolverSettings::Method::cvode;
@@ -121,6 +122,20 @@ std::vector<CaseProblem> check_transient_run(const Case& c, bool history, double
                            (cvode ? "cvode" : "exact") + "\" takes (at most " + std::to_string(most) +
                            ", docs/case-files.md, Limits): its cost grows like n^3 with n = " +
                            std::to_string(static_cast<long>(e.bending_dofs)) + " bending DOFs"});
+    }
+    const auto corners = [&](const std::string& key, const TimeFunction& g, bool exact) {
+        if (g.kind != TimeFunction::Kind::table || c.solver.horizon <= 0.0) return;
+        const std::size_t n = exact ? g.breakpoints(0.0, c.solver.horizon).size() : g.stops(0.0, c.solver.horizon).size();
+        if (n <= kMaxTimeCorners) return;
+        out.push_back({key, std::to_string(n) + " corners within solver.horizon, each a stop of the integrator (at most " +
+                                std::to_string(kMaxTimeCorners) + ", docs/case-files.md, Limits): rows within " +
+                                significant(exact ? kTableExactTolerance : kTableStopTolerance, 2) +
+                                " of the table's peak of the straight line between their neighbours cost nothing; "
+                                "thin or smooth the table, or shorten the horizon"});
+    };
+    for (std::size_t k = 0; k < c.loads.size(); ++k) corners("loads[" + std::to_string(k) + "].table", c.loads[k].time, !cvode);
+    for (std::size_t k = 0; k < c.electrodes.size(); ++k) {
+        corners("electrodes[" + std::to_string(k) + "].table", c.electrodes[k].time, false);
     }
     const double tau = e.shortest_time_scale;
     if (tau > 0.0 && c.solver.horizon > kMaxHorizonRatio * tau) {

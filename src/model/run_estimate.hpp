@@ -26,6 +26,12 @@ inline constexpr int kMaxCvodeElements = 400;
 inline constexpr std::size_t kMaxSupports = 100;
 // At most this many electrodes: each one is a force element integrated over its span at every step.
 inline constexpr std::size_t kMaxElectrodes = 20;
+// Most corners of one prescribed time function within a transient's horizon (a voltage or load
+// table's rows off the straight line between their neighbours: TimeFunction::stops for CVODE,
+// breakpoints for the exact solver). Each costs CVODE about 18 steps and 7 factorisations where the
+// table is noise (the switch example under a table of 1e4 noisy rows over its 50 us: 8 s), the exact
+// solver a piece (a 1e5-row load table on the paper's example: 15 s).
+inline constexpr std::size_t kMaxTimeCorners = 5000;
 // Largest horizon, in the shortest time scale the solvers must resolve: event times carry a
 // rounding error of a few eps t, 1e-6 of that time scale at 1e9 of it.
 inline constexpr double kMaxHorizonRatio = 1e9;
@@ -70,7 +76,7 @@ RunEstimate estimate_run(const Case& c);
 double memory_budget_bytes();
 
 // Problems of a transient of c that this machine or double precision cannot carry out: too many
-// elements for the method, a horizon beyond kMaxHorizonRatio time scales, more than kMaxSamples
+// elements for the method, more than kMaxTimeCorners corners of a table within the horizon, a horizon beyond kMaxHorizonRatio time scales, more than kMaxSamples
 // samples or more memory than `memory_budget` bytes (the history counts only when kept: the exact
 // solver keeps none when `history` is false, CVODE always does). Empty when the transient may run.
 std::vector<CaseProblem> check_transient_run(const Case& c, bool history, double memory_budget);

@@ -4,6 +4,8 @@
 #include <limits>
 #include <string>
 
+#include "io/case_writer.hpp"
+
 namespace vi {
 namespace {
 
@@ -30,6 +32,21 @@ nlohmann::json contact_row(const Row& e) {
             {"v_out_m_s", e.v_out},         {"peak_force_n", e.peak_force},
             {"peak_penetration_m", e.peak_penetration}, {"impulse_n_s", e.impulse},
             {"closed_at_end", e.closed_at_end}};
+}
+
+// The case as it ran: the values the run worked out for keys left to their defaults (the horizon and
+// output step it used, the grouping gap, the mean free path, an electrode's width) written in, so
+// that the resolved case read back as a case file runs the same.
+Case case_as_run(const Case& c, const BuiltProblem& b, const ImpactSummary& s) {
+    Case r = c;
+    r.solver.horizon = b.problem.t_end;
+    r.solver.output_step = b.problem.output_step;
+    if (c.solver.grouping == SolverSettings::Grouping::flights) r.solver.group_gap = s.group_gap;
+    if (r.air && !r.air->mean_free_path) r.air->mean_free_path = r.air->lambda();
+    for (Electrode& e : r.electrodes) {
+        if (e.width == 0.0) e.width = c.beam.width;
+    }
+    return r;
 }
 
 const char* end_name(EndCondition e) {
@@ -94,6 +111,8 @@ nlohmann::json resolved_case_json(const Case& c, const BuiltProblem& b, const Im
                    {"max_events", c.solver.max_events},
                    {"max_steps", c.solver.max_steps}};
     j["omega1_rad_s"] = b.model.omega1;
+    // Every key of the case file in effect, in SI and in the file's layout: it reads back as a case.
+    j["case"] = case_to_json(case_as_run(c, b, s));
     if (c.air) {
         nlohmann::json films = nlohmann::json::array();
         for (const FilmRegime& f : b.model.films) {

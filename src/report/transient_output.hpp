@@ -14,7 +14,9 @@
 
 namespace vi {
 
-// Every parameter of the run, defaults and derived values included, so it can be reproduced.
+// Every parameter of the run, defaults and derived values included, so it can be reproduced: under
+// "case" the case file itself (io/case_writer.hpp) with the values the run used for keys left to their
+// defaults, beside derived values (nodes, effective modulus and damping, contact stiffness, y0, ...).
 nlohmann::json resolved_case_json(const Case& c, const BuiltProblem& b, const ImpactSummary& s);
 
 // The switching ledger as JSON (times in s, forces in N, velocities in m/s; null where not applicable).

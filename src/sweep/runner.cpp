@@ -14,7 +14,7 @@ namespace vi {
 namespace {
 
 // The status column holds one CSV cell on one line.
-std::string one_line(std::string s) {
+std::string status_on_one_line(std::string s) {
     for (char& ch : s) {
         if (ch == '\n' || ch == '\r' || ch == '\t') ch = ' ';
     }
@@ -48,10 +48,10 @@ SweepPointResult run_sweep_point(const Case& base, const SweepGrid& grid, std::s
         r.status = "ok";
     } catch (const TimeLimitReached& e) {
         r.cells.clear();
-        r.status = one_line(e.what());
+        r.status = status_on_one_line(e.what());
     } catch (const std::exception& e) {
         r.cells.clear();
-        r.status = one_line("error: " + std::string(e.what()));
+        r.status = status_on_one_line("error: " + std::string(e.what()));
     } catch (const StopRequested&) {
         throw;
     } catch (...) {

@@ -47,7 +47,7 @@ Case air_q_case(const Case& base, double gap) {
         e.waveform = Waveform{};
         e.time = TimeFunction{};
     }
-    if (c.electrodes.empty() && c.films.empty()) c.films.push_back(Film{0.0, 1.0, Side::below, gap});
+    if (c.electrodes.empty() && c.films.empty()) c.films.push_back(Film{0.0, 1.0, Side::below, gap, {}});
     c.supports.clear();
     c.loads.clear();
     c.damping = RayleighDamping{};

@@ -82,13 +82,29 @@ std::vector<double> cell_edges(const SweepAxis& a) {
     return e;
 }
 
-// The grid value nearest x (sweep.csv and sweep.json write the same values to the last digit).
+// The grid value nearest x (sweep.csv and sweep.json write the same values to the last digit), by
+// bisection of the sorted values: a heat map may hold 10^8 points.
 std::size_t index_of(const SweepAxis& a, double x) {
-    std::size_t best = 0;
-    for (std::size_t i = 1; i < a.values.size(); ++i) {
-        if (std::fabs(a.values[i] - x) < std::fabs(a.values[best] - x)) best = i;
-    }
-    return best;
+    const auto it = std::lower_bound(a.values.begin(), a.values.end(), x);
+    if (it == a.values.begin()) return 0;
+    const std::size_t i = static_cast<std::size_t>(it - a.values.begin());
+    if (i == a.values.size()) return i - 1;
+    return std::fabs(a.values[i] - x) < std::fabs(a.values[i - 1] - x) ? i : i - 1;
+}
+
+// A heat map keeps at most this many grid values per axis: a 2400 px wide figure shows no more
+// cells, and gnuplot draws every cell as a shape of its own (the SVG grows with them).
+constexpr std::size_t kMaxCellsPerAxis = 500;
+
+// Every how many grid values one is drawn on an axis of a heat map (1: all of them).
+std::size_t cell_stride(const SweepAxis& a) { return (a.values.size() + kMaxCellsPerAxis - 1) / kMaxCellsPerAxis; }
+
+// The axis with every stride-th value only (the first among them), for a heat map's cells.
+SweepAxis every_nth(const SweepAxis& a, std::size_t stride) {
+    SweepAxis out = a;
+    out.values.clear();
+    for (std::size_t i = 0; i < a.values.size(); i += stride) out.values.push_back(a.values[i]);
+    return out;
 }
 
 std::string axis_text(const SweepAxis& a) {
@@ -105,9 +121,23 @@ FigureSpec line_figure(const RunTable& t, const SweepAxis& a, const Quantity& q)
     std::vector<std::size_t> order(t.rows);
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return x[i] < x[j]; });
+    // A long sweep is drawn from the points that shape its curve, as a long history is (in each
+    // slice the first, the last, the lowest and the highest): every peak survives.
+    std::vector<double> xs, ys;
+    xs.reserve(order.size());
+    ys.reserve(order.size());
+    for (std::size_t r : order) {
+        xs.push_back(x[r]);
+        ys.push_back(y[r]);
+    }
+    const std::vector<std::size_t> drawn = rows_to_draw({&ys}, ys.size());
+    if (drawn.size() < ys.size()) {
+        f.caption += " Drawn from " + std::to_string(drawn.size()) + " of the " + std::to_string(ys.size()) +
+                     " points (in each slice of the axis the first, the last, the lowest and the highest).";
+    }
     CsvTable data;
     data.header = {t.header[static_cast<std::size_t>(a.column)], t.header[static_cast<std::size_t>(q.column)]};
-    for (std::size_t r : order) data.add_row({x[r], y[r]});
+    for (std::size_t r : drawn) data.add_row({xs[r], ys[r]});
     const std::string file = f.name + ".csv";
     f.data = {{file, data.str()}};
     double lo = 0.0, hi = 0.0;
@@ -128,7 +158,17 @@ FigureSpec heat_figure(const RunTable& t, const SweepAxis& ax, const SweepAxis& 
     FigureSpec f = run_figure("sweep_" + safe_name(t.header[static_cast<std::size_t>(q.column)]), q.label + " over " + ax.path + " and " + ay.path,
                               t.header[static_cast<std::size_t>(q.column)] + " of sweep.csv, one cell per grid point; grey: a point "
                                   "without a value (failed, or the quantity undefined there).");
-    const std::vector<double> ex = cell_edges(ax), ey = cell_edges(ay);
+    // A grid finer than the figure can show is drawn on a sub-grid of its own points (every n-th
+    // value of an axis, each cell widened to its neighbours'): values are shown, never averaged.
+    const std::size_t sx = cell_stride(ax), sy = cell_stride(ay);
+    const SweepAxis dx = every_nth(ax, sx), dy = every_nth(ay, sy);
+    if (sx > 1 || sy > 1) {
+        f.caption += " Drawn on a sub-grid of " + std::to_string(dx.values.size()) + " x " + std::to_string(dy.values.size()) +
+                     " of the " + std::to_string(ax.values.size()) + " x " + std::to_string(ay.values.size()) +
+                     " grid values (every " + std::to_string(sx) + "th of " + ax.path + ", every " + std::to_string(sy) +
+                     "th of " + ay.path + ").";
+    }
+    const std::vector<double> ex = cell_edges(dx), ey = cell_edges(dy);
     // Each point's cell spans low_<x> to high_<x> and low_<y> to high_<y>.
     CsvTable data;
     data.header = {ax.name, ay.name, "low_" + ax.name, "high_" + ax.name, "low_" + ay.name, "high_" + ay.name,
@@ -138,7 +178,8 @@ FigureSpec heat_figure(const RunTable& t, const SweepAxis& ax, const SweepAxis& 
     for (std::size_t r = 0; r < t.rows; ++r) {
         if (!std::isfinite(z[r]) || !std::isfinite(xs[r]) || !std::isfinite(ys[r])) continue;
         const std::size_t i = index_of(ax, xs[r]), k = index_of(ay, ys[r]);
-        data.add_row({xs[r], ys[r], ex[i], ex[i + 1], ey[k], ey[k + 1], z[r]});
+        if (i % sx != 0 || k % sy != 0) continue;
+        data.add_row({xs[r], ys[r], ex[i / sx], ex[i / sx + 1], ey[k / sy], ey[k / sy + 1], z[r]});
     }
     const std::string file = f.name + ".csv";
     f.data = {{file, data.str()}};
