@@ -37,6 +37,12 @@ std::vector<std::string> lines_of(const std::string& text) {
 
 bool names_file_line_and_key(const std::string& message, const FuzzRun& run) {
     const std::string dir = run.case_dir + "/";
+    // A value an option of the command derives from the case (pullin --dynamic's default horizon) is
+    // blamed on the option first, then on the case's key it came from.
+    if (starts_with(message, "--")) {
+        const std::size_t at = message.find(dir);
+        return at != std::string::npos && names_file_line_and_key(message.substr(at), run);
+    }
     if (!starts_with(message, dir)) return false;
     const std::size_t colon = message.find(':', dir.size());
     if (colon == std::string::npos || colon == dir.size()) return false;

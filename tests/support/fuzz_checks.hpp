@@ -26,7 +26,8 @@ long env_number(const char* name, long fallback);
 std::vector<std::string> lines_of(const std::string& text);
 
 // True when message (after "vibroimpact: error: ") names a file in case_dir with a line, and, for
-// the case file itself, a key or "TOML syntax": "DIR/case.toml:12: electrodes[0].gap: ...".
+// the case file itself, a key or "TOML syntax": "DIR/case.toml:12: electrodes[0].gap: ...", perhaps
+// after the option that derived the value ("--horizon (default ...): the case's DIR/case.toml:...").
 bool names_file_line_and_key(const std::string& message, const FuzzRun& run);
 
 // What is wrong with one run; empty when it ended as a run must.
