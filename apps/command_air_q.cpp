@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "figure_output.hpp"
+#include "progress.hpp"
 #include "io/case_reader.hpp"
 #include "io/output_files.hpp"
 #include "io/units.hpp"
@@ -27,6 +28,7 @@ CommandBody add_air_q_command(CLI::App& app) {
         std::string out = "out/air-q";
         std::string gap = "1 um";
         std::string gnuplot = "gnuplot";
+        ProgressSettings progress;
     };
     auto opt = std::make_shared<AirQCommandOptions>();
     CLI::App* sub = app.add_subcommand("air-q", "Quality factor of mode 1 against air pressure (squeeze film), 1 atm to 1 Pa");
@@ -37,6 +39,7 @@ CommandBody add_air_q_command(CLI::App& app) {
         sub->add_option("--gap", opt->gap, "Film gap under the whole beam when the case has no electrode or film")
             ->capture_default_str();
     sub->add_option("--gnuplot", opt->gnuplot, "gnuplot executable (name on PATH or path)")->capture_default_str();
+    add_progress_options(*sub, opt->progress);
 
     return [opt, gap_option]() {
         const Case base = read_case_file(opt->case_path);
@@ -56,12 +59,17 @@ CommandBody add_air_q_command(CLI::App& app) {
                              "docs/case-files.md, Limits)");
         }
         const std::string gnuplot = require_gnuplot(opt->gnuplot, "the Q figure");
+        const ProgressStyle style = progress_style(opt->progress);
         std::vector<AirQPoint> points;
         try {
             const Case c = air_q_case(base, gap);
-            for (double p : air_q_pressures()) {
+            const std::vector<double> pressures = air_q_pressures();
+            Progress progress("air-q", "pressures", pressures.size(), 0, style, opt->progress.interval_s);
+            const ProgressTicker ticker(progress);
+            for (double p : pressures) {
                 check_run();
                 points.push_back(air_q_point(c, p));
+                progress.advance();
             }
         } catch (const InputError& e) {
             throw locate_in_case(base, e);

@@ -4,9 +4,11 @@
 #include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -14,6 +16,7 @@
 
 #include "commands.hpp"
 #include "figure_output.hpp"
+#include "progress.hpp"
 #include "design/design_journal.hpp"
 #include "design/optimizer.hpp"
 #include "io/case_reader.hpp"
@@ -128,6 +131,7 @@ struct OptimizeCommandOptions {
     std::string gnuplot = "gnuplot";
     bool json = false;
     bool resume = false;
+    ProgressSettings progress;
 };
 
 std::string command_text(const OptimizeCommandOptions& o, const DesignProblem& p) {
@@ -182,6 +186,28 @@ DesignProblem read_problem(const OptimizeCommandOptions& o, const std::string& c
     return p;
 }
 
+// The search, reported as it goes: designs used of --max-evals (the search may end sooner), those
+// of the journal not in the rate, and the best objective so far.
+OptimizeResult search(const DesignProblem& p, const OptimizeOptions& o, ProgressStyle style, double interval_s) {
+    std::set<std::vector<std::uint64_t>> journal;
+    for (const ComputedDesign& d : o.known) journal.insert(design_key(d.x));
+    Progress progress("optimize", "designs", static_cast<std::size_t>(o.max_evaluations), 0, style, interval_s, true);
+    const ProgressTicker ticker(progress);
+    const std::string& q = p.columns[p.objective].name;
+    return optimize_design(p, o, [&](const DesignEvaluation& e) {
+        if (journal.count(design_key(e.x)) > 0) {
+            progress.skip();
+        } else {
+            progress.advance();
+        }
+        if (e.best) {
+            char best[64];
+            std::snprintf(best, sizeof best, "%.6g", *e.best);
+            progress.set_note("best " + q + " " + best);
+        }
+    });
+}
+
 // The search with its journal, then the files all together; a stop keeps the journal and says how
 // to go on.
 int run_optimize(const OptimizeCommandOptions& opt) {
@@ -192,6 +218,7 @@ int run_optimize(const OptimizeCommandOptions& opt) {
                          " (it is the global stage's share of them; the local stage needs one at least)");
     }
     const std::string gnuplot = require_gnuplot(opt.gnuplot, "the convergence figure");
+    const ProgressStyle style = progress_style(opt.progress);
     std::string reason;
     const auto case_text = file_text(opt.case_path, reason);
     if (!case_text) throw InputError(one_line(opt.case_path + ": cannot read file (" + reason + ")"));
@@ -209,7 +236,7 @@ int run_optimize(const OptimizeCommandOptions& opt) {
     std::optional<std::string> figure_failed;
     const auto t0 = std::chrono::steady_clock::now();
     try {
-        r = optimize_design(p, o);
+        r = search(p, o, style, opt.progress.interval_s);
         const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         j = result_json(p, r, command_text(opt, p));
         j["run"] = run_json(r, wall_s);
@@ -274,6 +301,7 @@ CommandBody add_optimize_command(CLI::App& app) {
                   "again, and the result is the one of an uninterrupted run");
     sub->add_option("--gnuplot", opt->gnuplot, "gnuplot executable (name on PATH or path)")->capture_default_str();
     sub->add_flag("--json", opt->json, "Print optimize.json on stdout instead of text");
+    add_progress_options(*sub, opt->progress);
 
     return [opt]() { return run_optimize(*opt); };
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "progress.hpp"
 #include "statics/pullin.hpp"
 #include "impacts/dynamic_pullin.hpp"
 #include "io/case_reader.hpp"
@@ -46,6 +47,7 @@ CommandBody add_pullin_command(CLI::App& app) {
         bool dynamic = false;
         std::string horizon;
         DynamicPullinOptions dyn;
+        ProgressSettings progress;
     };
     auto opt = std::make_shared<PullinCommandOptions>();
     CLI::App* sub = app.add_subcommand(
@@ -63,6 +65,7 @@ CommandBody add_pullin_command(CLI::App& app) {
             ->check(CLI::Range(1e-12, 0.5))};
     sub->add_flag("--json", opt->json, "Print one JSON document on stdout instead of text");
     sub->add_option("--out,-o", opt->out_dir, "Folder for pullin.json, pullin_branch.csv, pullin_frequencies.csv");
+    add_progress_options(*sub, opt->progress);
 
     return [opt, dynamic_only]() {
         // Bad options are refused before any work, and so are options that would do nothing.
@@ -80,10 +83,20 @@ CommandBody add_pullin_command(CLI::App& app) {
             }
             if (!(horizon > 0.0)) throw InputError("--horizon: must be positive (e.g. \"100 us\")");
         }
+        const ProgressStyle style = progress_style(opt->progress);
         const Case c = read_case_file(opt->case_path);
         PullinResult r;
         try {
-            r = trace_pullin(c, opt->pullin);
+            // The branch in step lengths of the air gap, then the frequency points.
+            PullinOptions po = opt->pullin;
+            Progress progress("pullin", "steps", static_cast<std::size_t>(po.steps + po.frequency_points), 0, style,
+                              opt->progress.interval_s);
+            po.progress = [&progress](int units, int unused) {
+                progress.advance(static_cast<std::size_t>(units));
+                progress.skip(static_cast<std::size_t>(unused));
+            };
+            const ProgressTicker ticker(progress);
+            r = trace_pullin(c, po);
         } catch (const InputError& e) {
             throw locate_in_case(c, e);
         }
@@ -98,6 +111,12 @@ CommandBody add_pullin_command(CLI::App& app) {
             }
             DynamicPullinOptions o = opt->dyn;
             o.horizon = horizon;
+            // Transients of the bisection, at most (it ends once the bracket is narrow enough).
+            Progress progress("pullin --dynamic", "transients",
+                              static_cast<std::size_t>(most_step_trials(o.lower_fraction, 1.0, o.bisection)), 0, style,
+                              opt->progress.interval_s, true);
+            o.bisection.trial_done = [&progress](const StepTrial&) { progress.advance(); };
+            const ProgressTicker ticker(progress);
             try {
                 dyn = dynamic_pullin(c, r.pullin->voltage, o);
             } catch (const InputError& e) {

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -25,7 +26,7 @@
 #include "sweep/table.hpp"
 #include "support_model_option.hpp"
 #include "stop_signals.hpp"
-#include "sweep_progress.hpp"
+#include "progress.hpp"
 
 #ifdef VI_HAVE_MPI
 #include "sweep/mpi.hpp"
@@ -52,6 +53,7 @@ struct SweepCommandOptions {
     bool resume = false;
     bool retry_failed = false;
     double point_timeout = 60.0;
+    ProgressSettings progress;
 };
 
 // What every rank knows before the first point: the case, the grid and the columns.
@@ -62,15 +64,17 @@ struct Plan {
     std::vector<SweepColumn> columns;
     std::string fingerprint;
     std::string csv_header;
+    ProgressStyle progress = ProgressStyle::none;
 };
 
 Plan make_plan(const SweepCommandOptions& o) {
     if (o.resume && o.out_dir.empty()) throw InputError("--resume: needs --out DIR, the folder holding the journal");
     if (o.retry_failed && !o.resume) throw InputError("--retry-failed: goes with --resume (failed points of a journal)");
+    Plan p;
+    p.progress = progress_style(o.progress);
     std::string reason;
     const auto text = file_text(o.case_path, reason);
     if (!text) throw InputError(one_line(o.case_path + ": cannot read file (" + reason + ")"));
-    Plan p;
     p.base = read_case_text(*text, o.case_path);
     p.grid = parse_sweep_grid(o.sets, p.base);
     p.settings.analysis = o.analysis == "modes" ? SweepAnalysis::modes : SweepAnalysis::simulate;
@@ -196,7 +200,9 @@ int run_sweep(const SweepCommandOptions& o) {
     const int threads = worker_threads(o, *ranks);
     const std::size_t result_columns = plan.columns.size();
 
-    SweepProgress progress(plan.grid.size(), root ? store->done() : 0, root && stderr_is_terminal());
+    // Only the root reports: the other ranks' points reach it as they finish.
+    Progress progress("sweep", "points", plan.grid.size(), root ? store->done() : 0,
+                      root ? plan.progress : ProgressStyle::none, o.progress.interval_s);
     RunningPoints running;
     const LocalRun local = [&](const PointSink& emit, const std::atomic<bool>& stop) {
         run_sweep_points(
@@ -206,13 +212,19 @@ int run_sweep(const SweepCommandOptions& o) {
     };
     const PointSink sink = [&](const FinishedPoint& p) {
         store->add(p);
-        progress.point_done();
+        progress.advance();
     };
 
     const auto t0 = std::chrono::steady_clock::now();
     {
         // The line keeps moving while a point is slow: redrawn twice a second with the slowest point.
-        const ProgressTicker ticker(progress, running);
+        const ProgressTicker ticker(progress, [&] {
+            const auto [index, seconds] = running.slowest();
+            // A point is named once it has run 2 s: the usual points pass too fast to be worth it.
+            progress.set_note(index != SIZE_MAX && seconds >= 2.0
+                                  ? "slowest: point " + std::to_string(index) + ", " + duration_text(seconds) + " running"
+                                  : "");
+        });
         code = attempt([&] { ranks->collect(local, sink, stop_flag()); }, message);
     }
     progress.finish();
@@ -294,6 +306,7 @@ CommandBody add_sweep_command(CLI::App& app) {
                     "quota; under MPI, shared among the ranks that may use the same CPUs)")
         ->check(CLI::Range(0, 4096))
         ->capture_default_str();
+    add_progress_options(*sub, opt->progress);
     sub->footer(paths_help());
     return [opt, modes, support_model]() {
         // Options a simulate sweep has no use for are refused rather than ignored.

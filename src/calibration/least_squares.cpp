@@ -64,15 +64,24 @@ private:
     mutable int calls_ = 0;
 };
 
+// Ends the solve on a stop, and counts the iterations to the fit's progress (Ceres reports the
+// start's evaluation as iteration 0: not one of the budget's).
 class StopCallback final : public ceres::IterationCallback {
 public:
-    explicit StopCallback(const Residual& r) : r_(r) {}
-    ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+    StopCallback(const Residual& r, const std::function<void(int, int)>& progress) : r_(r), progress_(progress) {}
+    ceres::CallbackReturnType operator()(const ceres::IterationSummary& it) override {
+        if (it.iteration > 0 && progress_) {
+            ++counted_;
+            progress_(1, 0);
+        }
         return r_.stopped() || stop_flag().load() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
     }
+    [[nodiscard]] int counted() const { return counted_; }
 
 private:
     const Residual& r_;
+    const std::function<void(int, int)>& progress_;
+    int counted_ = 0;
 };
 
 // A Ceres problem over z with p's residuals (central differences) and bounds; the cost function is
@@ -97,13 +106,14 @@ void set_up(CeresSetup& s, const LeastSquaresProblem& p, std::vector<double>& z)
     }
 }
 
-StartRun solve_from(const LeastSquaresProblem& p, const std::vector<double>& start, int max_iterations) {
+StartRun solve_from(const LeastSquaresProblem& p, const std::vector<double>& start, int max_iterations,
+                    const std::function<void(int, int)>& progress) {
     const std::size_t n = p.params.size();
     std::vector<double> z(n);
     for (std::size_t i = 0; i < n; ++i) z[i] = start[i] / p.params[i].scale();
     CeresSetup s;
     set_up(s, p, z);
-    StopCallback stop(*s.residual);
+    StopCallback stop(*s.residual, progress);
     ceres::Solver::Options so;
     so.linear_solver_type = ceres::DENSE_QR;
     so.max_num_iterations = max_iterations;
@@ -120,6 +130,7 @@ StartRun solve_from(const LeastSquaresProblem& p, const std::vector<double>& sta
     ceres::Solver::Summary summary;
     ceres::Solve(so, &s.problem, &summary);
     if (s.residual->stopped() || stop_flag().load()) throw StopRequested(stop_signal());
+    if (progress && max_iterations > stop.counted()) progress(0, max_iterations - stop.counted());
     StartRun run;
     run.start = start;
     run.converged = summary.termination_type == ceres::CONVERGENCE;
@@ -398,7 +409,7 @@ FitResult fit_least_squares(const LeastSquaresProblem& p, const FitOptions& o) {
     const std::vector<std::vector<double>> starts = start_points(p.params, std::max(1, o.starts));
     std::vector<StartRun> runs(starts.size());
     parallel_for(starts.size(), starts.size() == 1 ? 1 : o.threads,
-                 [&](std::size_t k) { runs[k] = solve_from(p, starts[k], o.max_iterations); });
+                 [&](std::size_t k) { runs[k] = solve_from(p, starts[k], o.max_iterations, o.progress); });
     if (stop_flag().load()) throw StopRequested(stop_signal());
     std::size_t best = 0;
     for (std::size_t k = 1; k < runs.size(); ++k) {

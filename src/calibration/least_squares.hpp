@@ -30,6 +30,10 @@ struct FitOptions {
     int max_iterations = 50;   // Levenberg-Marquardt iterations per start (--max-iterations)
     int starts = 1;            // starting points (--starts): the case's values first
     int threads = 0;           // threads for the starts (--threads); 0: the CPUs the process may use
+    // Sees the work as it goes, in iterations of the budget starts x max_iterations: (1, 0) after
+    // each iteration of a start, and (0, the rest of its share) when a start ends sooner. Called from
+    // the starts' threads, possibly at once.
+    std::function<void(int iterations, int unused)> progress;
 };
 
 // One local solve from one start.
