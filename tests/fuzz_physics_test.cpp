@@ -60,8 +60,8 @@ constexpr long kDefaultMutants = 3000;
 #endif
 
 // The commands that take a case, with how often each is drawn (out of the sum), and the file a run
-// that ends with exit 0 must have written. air-q runs 17 ring-down transients (about 2 s of CPU on a
-// switch, 20 times a simulate), so it is drawn least, about 50 times in 3000.
+// that ends with exit 0 must have written. air-q runs 17 ring-down transients (4.7 s of CPU on the
+// cantilever switch, 15 times its simulate), so it is drawn least, about 50 times in 3000.
 struct Command {
     std::vector<std::string> args;   // before the case
     std::vector<std::string> after;  // after the case
