@@ -116,5 +116,98 @@ TEST(BoundedRuns, ANoisyVoltageTableBeyondTheCornerLimitIsRefused) {
                    {"9998 corners within solver.horizon", "at most 5000", "thin or smooth the table"}, out, "noise table");
 }
 
+// Meshes past what a command can do in proportion: the pull-in trace (its Newton steps grow with K's
+// roundoff and cost the square of the DOFs an electrode faces: m = 1000 gave no answer in 120 s),
+// air-q's ring-downs, a transient on the full model with an electrode, and switch-report, which
+// traced the pull-in before the transient's own limit refused the case.
+TEST(BoundedRuns, MeshesBeyondWhatACommandTakesAreRefusedOnBeamElements) {
+    const std::string dir = test::make_temp_dir();
+    const auto mesh = [&](int m) {
+        return switch_variant(dir, "m" + std::to_string(m) + ".toml",
+                              {{"elements = 50", "elements = " + std::to_string(m)}});
+    };
+    const std::string out = dir + "/out";
+    for (const int m : {1000, 2000}) {
+        expect_refused({"pullin", mesh(m), "--out", out}, mesh(m) + ":19: beam.elements",
+                       {std::to_string(m) + " elements are more than the pull-in trace takes", "at most 400"}, out, "pullin");
+        expect_refused({"pullin", mesh(m), "--dynamic", "--out", out}, mesh(m) + ":19: beam.elements", {"at most 400"}, out,
+                       "pullin --dynamic");
+    }
+    for (const int m : {400, 1000}) {
+        expect_refused({"air-q", mesh(m), "--out", out}, mesh(m) + ":19: beam.elements",
+                       {"more than air-q takes (at most 100", "use fewer"}, out, "air-q");
+    }
+    expect_refused({"switch-report", mesh(1000), "--out", out}, mesh(1000) + ":19: beam.elements",
+                   {"more than a transient with solver.method = \"cvode\" takes (at most 400"}, out, "switch-report m = 1000");
+    for (const char* command : {"simulate", "switch-report"}) {
+        expect_refused({command, mesh(400), "--out", out}, mesh(400) + ":19: beam.elements",
+                       {"more than a transient on the full model takes with an electrode (at most 100",
+                        "set solver.reduced_modes"},
+                       out, command);
+    }
+}
+
+// What the refusal suggests answers: the example at m = 400 on a reduced model of 16 modes closes when
+// the example does (3.17244 us); pullin --dynamic at m = 200 bisects on reduced models and confirms
+// its bracket on a finer reduced one, never the full model the limit refuses.
+TEST(BoundedRuns, AFineMeshAnswersOnAReducedModel) {
+    const std::string dir = test::make_temp_dir();
+    const json fine = simulate_json(switch_variant(dir, "m400.toml", {{"elements = 50", "elements = 400"},
+                                                                      {"rtol = 1e-8", "rtol = 1e-8\nreduced_modes = 16"}}),
+                                    "m = 400, 16 modes");
+    const json example = simulate_json(test::source_path("examples/switch/cantilever_switch.toml"), "example");
+    ASSERT_TRUE(fine.is_object() && example.is_object());
+    EXPECT_EQ(fine["switching"]["state"], "closed");
+    EXPECT_NEAR(fine["switching"]["closing_time_s"].get<double>(), example["switching"]["closing_time_s"].get<double>(),
+                1e-5 * example["switching"]["closing_time_s"].get<double>());
+    const CommandResult r = run({"pullin", switch_variant(dir, "m200.toml", {{"elements = 50", "elements = 200"}}),
+                                 "--dynamic", "--json"},
+                                "pullin --dynamic, m = 200");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const json d = json::parse(r.out)["dynamic"];
+    EXPECT_GT(d["confirmed_on_reduced_modes"].get<int>(), 0) << d;
+    for (const json& t : d["trials"]) EXPECT_GT(t["reduced_modes"].get<int>(), 0) << t;
+    EXPECT_NEAR(d["ratio_to_static"].get<double>(), 0.912, 0.002);
+}
+
+// Tolerances and drives that ask for work without end: an rtol below 1e-12 (the error test then
+// resolves the roundoff of the right-hand side), a sine above every bending frequency of the mesh,
+// a sine of more periods than solver.max_steps can take; refused on their keys before the run.
+TEST(BoundedRuns, ToleranceAndDriveBeyondWhatTheStepsCanTakeAreRefused) {
+    const std::string dir = test::make_temp_dir();
+    const std::string out = dir + "/out";
+    const std::string tight = switch_variant(dir, "rtol.toml", {{"rtol = 1e-8", "rtol = 1e-13"}});
+    expect_refused({"simulate", tight, "--out", out}, tight + ":56: solver.rtol", {"must be at least 1e-12"}, out, "rtol 1e-13");
+    const auto sine = [&](const std::string& name, const std::string& frequency, const std::string& solver_extra) {
+        return switch_variant(dir, name, {{"waveform = \"step\"", "waveform = \"sine\"\nfrequency = \"" + frequency + "\""},
+                                          {"t_on = \"0 us\"", ""},
+                                          {"rtol = 1e-8", "rtol = 1e-8" + solver_extra}});
+    };
+    const std::string fast = sine("fast.toml", "1e12 Hz", "");
+    expect_refused({"simulate", fast, "--out", out}, fast + ":47: electrodes[0].frequency",
+                   {"above every bending frequency of the mesh", "50 elements"}, out, "sine at 1e12 Hz");
+    const std::string many = sine("many.toml", "10 MHz", "\nmax_steps = 1000");
+    expect_refused({"simulate", many, "--out", out}, many + ":47: electrodes[0].frequency",
+                   {"500 periods", "more than solver.max_steps = 1000"}, out, "sine of 500 periods");
+}
+
+// solver.max_steps reached says what raises it, and, on a full model without damping, that the
+// mesh's highest mode rings and a reduced model or damping is the way out.
+TEST(BoundedRuns, TheStepLimitNamesItsKeyAndTheUndampedTopMode) {
+    const std::string dir = test::make_temp_dir();
+    const std::string undamped = switch_variant(dir, "undamped.toml", {{"ratios = [0.005, 0.005]", "ratios = [0, 0]"},
+                                                                       {"rtol = 1e-8", "rtol = 1e-8\nmax_steps = 2000"}});
+    const CommandResult r = run({"simulate", undamped}, "undamped, 2000 steps");
+    EXPECT_EQ(r.exit_code, 1) << r.err;
+    EXPECT_NE(r.err.find("more than solver.max_steps = 2000 steps before the horizon"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("keeps its highest mode"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("set solver.reduced_modes"), std::string::npos) << r.err;
+    const std::string damped = switch_variant(dir, "damped.toml", {{"rtol = 1e-8", "rtol = 1e-8\nmax_steps = 1000"}});
+    const CommandResult d = run({"simulate", damped}, "damped, 1000 steps");
+    EXPECT_EQ(d.exit_code, 1) << d.err;
+    EXPECT_NE(d.err.find("raise solver.max_steps"), std::string::npos) << d.err;
+    EXPECT_EQ(d.err.find("keeps its highest mode"), std::string::npos) << d.err;
+}
+
 }  // namespace
 }  // namespace vi

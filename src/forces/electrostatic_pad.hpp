@@ -144,7 +144,7 @@ public:
     // Acts from t = 0 on: the static state a transient starts from is without voltage.
     [[nodiscard]] bool in_static_state() const override { return false; }
     [[nodiscard]] double force_scale() const override;
-    [[nodiscard]] std::vector<TimeBreak> time_stops(double t0, double t1) const override { return time_.stops(t0, t1); }
+    [[nodiscard]] std::vector<double> time_stops(double t0, double t1) const override { return time_.stops(t0, t1); }
     [[nodiscard]] double position() const override { return 0.5 * (geometry_.from + geometry_.to); }
     // A line load over the span that is constant, linear and quadratic in x: the shapes the force
     // takes as the gap closes unevenly, for a reduced-order model's static corrections.

@@ -135,7 +135,7 @@ public:
 
     // Times in (t0, t1) where an integrator must stop for its prescribed force (a step's jump, a
     // table's corners: TimeFunction::stops), ascending.
-    [[nodiscard]] virtual std::vector<TimeBreak> time_stops(double /*t0*/, double /*t1*/) const { return {}; }
+    [[nodiscard]] virtual std::vector<double> time_stops(double /*t0*/, double /*t1*/) const { return {}; }
 
     // The element as the exact solver needs it, or nullopt when its force is not piecewise linear.
     [[nodiscard]] virtual std::optional<LinearForm> linear_form() const { return std::nullopt; }

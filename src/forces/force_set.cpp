@@ -13,23 +13,16 @@ const ForceElement* first_nonlinear(const ForceSet& forces) {
     return nullptr;
 }
 
-std::vector<TimeBreak> time_stops(const ForceSet& forces, double t0, double t1) {
-    std::vector<TimeBreak> all;
+std::vector<double> time_stops(const ForceSet& forces, double t0, double t1) {
+    std::vector<double> out;
     for (const ForceElementPtr& e : forces) {
-        for (const TimeBreak& b : e->time_stops(t0, t1)) all.push_back(b);
+        for (double b : e->time_stops(t0, t1)) out.push_back(b);
     }
-    std::sort(all.begin(), all.end(), [](const TimeBreak& a, const TimeBreak& b) { return a.t < b.t; });
+    std::sort(out.begin(), out.end());
     const auto same = [](double a, double b) {
         return std::abs(a - b) <= 8.0 * std::numeric_limits<double>::epsilon() * std::max({std::abs(a), std::abs(b), 1e-300});
     };
-    std::vector<TimeBreak> out;
-    for (const TimeBreak& b : all) {
-        if (!out.empty() && same(out.back().t, b.t)) {
-            out.back().jump = out.back().jump || b.jump;
-        } else {
-            out.push_back(b);
-        }
-    }
+    out.erase(std::unique(out.begin(), out.end(), same), out.end());
     return out;
 }
 

@@ -100,12 +100,10 @@ std::vector<double> TimeFunction::breakpoints(double t0, double t1) const {
     return corners(times, values, kTableExactTolerance * max_abs(), t0, t1);
 }
 
-std::vector<TimeBreak> TimeFunction::stops(double t0, double t1) const {
-    std::vector<TimeBreak> out;
-    if (kind == Kind::step && t_on > t0 && t_on < t1) out.push_back({t_on, true});
-    if (kind != Kind::table) return out;
-    for (double t : corners(times, values, kTableStopTolerance * max_abs(), t0, t1)) out.push_back({t, false});
-    return out;
+std::vector<double> TimeFunction::stops(double t0, double t1) const {
+    if (kind == Kind::step) return t_on > t0 && t_on < t1 ? std::vector<double>{t_on} : std::vector<double>{};
+    if (kind != Kind::table) return {};
+    return corners(times, values, kTableStopTolerance * max_abs(), t0, t1);
 }
 
 }  // namespace vi

@@ -9,18 +9,11 @@ namespace vi {
 // Largest departure of a table from the straight line between two integration stops, as a fraction
 // of its largest |g|: knots that stay within it are integrated through by CVODE's error control
 // instead of each ending a step (a sampled signal's rows are not corners to resolve one by one; a
-// stop at each of 1e4 rows cost 7 steps and 5 factorisations each).
+// stop and restart at each of 1e4 rows cost 7 steps and 5 factorisations each).
 inline constexpr double kTableStopTolerance = 1e-6;
 // The same for the exact solver's pieces, which take g as straight between their ends: rows on one
 // straight line to roundoff (a constant or a linear stretch written row by row) are one piece.
 inline constexpr double kTableExactTolerance = 1e-14;
-
-// A time where g(t) jumps (an integrator restarts there) or turns a corner (it stops there, so that
-// no step straddles the corner or steps over a short feature).
-struct TimeBreak {
-    double t = 0.0;     // [s]
-    bool jump = false;  // a jump of g, not only of its slope
-};
 
 // constant: g = 1. step: g = 0 before t_on, 1 after. harmonic: g = offset + sin(2 pi f t + phase).
 // table: piecewise linear through (times, values), held constant outside the table.
@@ -45,10 +38,10 @@ struct TimeFunction {
     // where it leaves the straight line from the previous one kept by more than kTableExactTolerance
     // of its largest |g|). O(rows).
     [[nodiscard]] std::vector<double> breakpoints(double t0, double t1) const;
-    // Times in (t0, t1) where an integrator with error control must stop, ascending: the step time
-    // (a jump), a table's first and last knots, and its knots where it leaves the straight line from
-    // the previous stop by more than kTableStopTolerance of its largest |g|. O(rows).
-    [[nodiscard]] std::vector<TimeBreak> stops(double t0, double t1) const;
+    // Times in (t0, t1) where an integrator with error control must stop, ascending: the step time,
+    // a table's first and last knots, and its knots where it leaves the straight line from the
+    // previous stop by more than kTableStopTolerance of its largest |g|. O(rows).
+    [[nodiscard]] std::vector<double> stops(double t0, double t1) const;
 };
 
 }  // namespace vi

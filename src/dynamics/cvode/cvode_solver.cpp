@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -141,6 +142,7 @@ private:
     void add_counters();
     // What a time limit reached during the integration reports (model/run_control.hpp).
     [[nodiscard]] std::string progress() const;
+    [[nodiscard]] std::string step_limit_message(double t) const;
 
     const TransientProblem& p_;
     CvodeOptions o_;
@@ -150,7 +152,7 @@ private:
     double t_final_ = p_.t_end;          // the horizon, or the first contact with stop_at_first_contact
     int close_root_restarts_ = 0;  // restarts after CVODE's "root found at and very near t"
     TransientResult r_;
-    std::vector<TimeBreak> stops_;       // element time stops in (0, t_end), then t_end
+    std::vector<double> stops_;          // element time stops in (0, t_end), then t_end
     std::size_t samples_ = 0, next_sample_ = 0;
     std::vector<int> modes_;             // each element's mode
     cvode_detail::EpisodeRecorder episodes_{sys_, r_};
@@ -364,6 +366,23 @@ void Driver::restart(double t) {
     t_restart_ = t;
 }
 
+// solver.max_steps reached at t: what raises it, and why the steps were many when the model keeps
+// undamped modes far above the physics (every mode of the mesh, at most 1e-3 of critical damping
+// at the top: CVODE follows them at every step once an impact or a step of voltage excites them).
+std::string Driver::step_limit_message(double t) const {
+    std::string m = "solve_cvode: more than solver.max_steps = " + std::to_string(o_.max_steps) +
+                    " steps before the horizon (at t = " + significant(t, 6) + " s of " + significant(p_.t_end, 6) + " s";
+    const ModalBasis& b = sys_.basis();
+    const Eigen::Index top = b.omega.size() - 1;
+    if (b.full && top >= 0 && sys_.rayleigh()[top] <= 2e-3 * b.omega[top]) {
+        return m + "): the full model without damping keeps its highest mode (" +
+               significant(b.omega[top] / (2.0 * std::numbers::pi), 3) +
+               " Hz) ringing and CVODE follows it; set solver.reduced_modes (e.g. 16) or add [damping], or raise "
+               "solver.max_steps";
+    }
+    return m + "; raise solver.max_steps, shorten solver.horizon, or loosen solver.rtol)";
+}
+
 // The time reached, CVODE's steps so far and its last step, and the closest contact gap at that
 // time (negative: a penetration): computed only when a time limit is reached.
 std::string Driver::progress() const {
@@ -386,7 +405,7 @@ TransientResult Driver::run() {
     const auto t_setup = Clock::now();
     const std::size_t nc = sys_.contacts().size();
     stops_ = time_stops(p_.forces, 0.0, p_.t_end);
-    stops_.push_back({p_.t_end, false});
+    stops_.push_back(p_.t_end);
     samples_ = p_.output_step > 0.0 ? static_cast<std::size_t>(std::floor(p_.t_end / p_.output_step * (1.0 + 1e-12))) + 1
                                     : 2;
     r_.history.contact_v.resize(nc);
@@ -396,7 +415,7 @@ TransientResult Driver::run() {
     const std::vector<int> start = sys_.initial_modes(y0.data());
     modes_.assign(start.size(), 0);
     sys_.set_modes(modes_);
-    sys_.set_segment_end(stops_.front().t);
+    sys_.set_segment_end(stops_.front());
     setup();
     r_.stats.decomposition_s = seconds_since(t_setup);  // basis, tolerance scales, CVODE setup
 
@@ -432,17 +451,14 @@ TransientResult Driver::run() {
     const ProgressNote note([this] { return progress(); });
     if (ended_by_element(0.0)) t_final_ = 0.0;
     while (!r_.ended_by) {
-        const double t_stop = stops_[seg].t;
-        if (t >= t_stop || same_time(t, t_stop)) {  // reached a stop: the end, a jump or a corner
+        const double t_stop = stops_[seg];
+        if (t >= t_stop || same_time(t, t_stop)) {  // reached a stop: the end, a step or a corner
             sample_until(t_stop, false);
             if (seg + 1 == stops_.size()) break;
-            // After a jump the step history describes another right-hand side; across a corner it
-            // stays valid to first order and the error control takes the corner in the next step
-            // (a restart at each of a table's 1e4 corners cost 7 steps and 5 factorisations each, and
-            // 5e-5 of the closing time against the same ramp given as a waveform).
-            const bool jump = stops_[seg].jump;
-            sys_.set_segment_end(stops_[++seg].t);
-            if (jump) restart(t);
+            // The step history describes the right-hand side before the stop: carried across a
+            // corner, CVODE's error test failed there without end at rtol 1e-12 (a ramp from rest).
+            sys_.set_segment_end(stops_[++seg]);
+            restart(t);
             continue;
         }
         check(CVodeSetStopTime(s_.mem, t_stop), "CVodeSetStopTime");
@@ -460,11 +476,7 @@ TransientResult Driver::run() {
         check(flag, "CVode");
         long nst = 0;
         check(CVodeGetNumSteps(s_.mem, &nst), "CVodeGetNumSteps");
-        if (steps_done_ + nst > o_.max_steps) {
-            throw WorkLimitReached("solve_cvode: more than solver.max_steps = " + std::to_string(o_.max_steps) +
-                                   " steps before the horizon (at t = " + std::to_string(tret * 1e6) +
-                                   " us; raise solver.max_steps, or loosen solver.rtol)");
-        }
+        if (steps_done_ + nst > o_.max_steps) throw WorkLimitReached(step_limit_message(tret));
         check_run();
         if (flag == CV_ROOT_RETURN) {
             const int events_before = r_.stats.events;

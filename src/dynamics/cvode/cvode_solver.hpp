@@ -35,8 +35,8 @@ struct CvodeOptions {
 };
 
 // Integrates p from 0 to p.t_end. Elements switch only at located events (their switching
-// functions crossing zero upward), each followed by a restart of CVODE; an element's time stops are
-// integration stops: a step's jump with a restart, a table's corners (TimeFunction::stops) without. The energy ledger's integrals and
+// functions crossing zero upward), each followed by a restart of CVODE; an element's time stops (a
+// load step, a table's corners: TimeFunction::stops) are integration stops with a restart too. The energy ledger's integrals and
 // each contact's impulse are extra CVODE states. Throws std::invalid_argument for an inconsistent
 // problem, std::runtime_error when CVODE fails, WorkLimitReached at solver.max_steps or
 // solver.max_events, std::domain_error when a force element refuses the state reached (the beam
