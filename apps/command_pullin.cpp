@@ -100,20 +100,23 @@ CommandBody add_pullin_command(CLI::App& app) {
         } catch (const InputError& e) {
             throw locate_in_case(c, e);
         }
+        // A branch that ends before it found pull-in or touch-down has no answer to give.
+        if (!r.pullin && !r.touchdown) throw std::runtime_error("pullin: no pull-in and no touch-down found: " + r.end);
         std::optional<DynamicPullinResult> dyn;
         if (opt->dynamic) {
             if (!r.pullin) {
-                std::fprintf(stderr, "vibroimpact pullin: --dynamic needs a static pull-in to bracket, and the branch has "
-                                     "none (%s)\n", r.touchdown ? "a support closes first" : r.end.c_str());
-                return kExitFailure;
+                throw std::runtime_error(std::string("pullin --dynamic: needs a static pull-in to bracket, and the branch "
+                                                     "has none (") +
+                                         (r.touchdown ? "a support closes first" : r.end.c_str()) + ")");
             }
             DynamicPullinOptions o = opt->dyn;
             o.horizon = horizon;
-            // Transients of the bisection, at most (it ends once the bracket is narrow enough).
-            Progress progress("pullin --dynamic", "transients",
-                              static_cast<std::size_t>(most_step_trials(o.lower_fraction, 1.0, o.bisection)), 0, style,
-                              opt->progress.interval_s, true);
+            // Transients of the bisection and the check of its bracket, at most (the bisection ends once
+            // the bracket is narrow enough; a finer model that disagrees adds its own).
+            std::size_t most = static_cast<std::size_t>(most_dynamic_pullin_trials(o));
+            Progress progress("pullin --dynamic", "transients", most, 0, style, opt->progress.interval_s, true);
             o.bisection.trial_done = [&progress](const StepTrial&) { progress.advance(); };
+            o.more_trials = [&progress, &most](int n) { progress.set_total(most += static_cast<std::size_t>(n)); };
             const ProgressTicker ticker(progress);
             try {
                 dyn = dynamic_pullin(c, r.pullin->voltage, o);
@@ -134,11 +137,6 @@ CommandBody add_pullin_command(CLI::App& app) {
             std::printf("Case %s: %s\n%s", opt->case_path.c_str(), c.name.c_str(), pullin_text(r).c_str());
             if (dyn) std::printf("%s", dynamic_pullin_text(*dyn).c_str());
             if (!opt->out_dir.empty()) std::printf("Written to %s/\n", opt->out_dir.c_str());
-        }
-        // A branch that ends before it found pull-in or touch-down has no answer to give.
-        if (!r.pullin && !r.touchdown) {
-            std::fprintf(stderr, "vibroimpact pullin: no pull-in and no touch-down found: %s\n", r.end.c_str());
-            return kExitFailure;
         }
         return kExitOk;
     };

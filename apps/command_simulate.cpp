@@ -26,7 +26,7 @@ std::string us(const std::optional<double>& v) {
 void print_switching(const SwitchingLedger& l) {
     std::printf("Switching [%s]: %s\n", l.state.c_str(), l.reason.c_str());
     std::printf("  closing time (first contact)     %s\n", us(l.closing_time).c_str());
-    std::printf("  bounces before stable contact    %d\n", l.bounces);
+    std::printf("  bounces before stable contact    %s\n", bounce_text(l).c_str());
     std::printf("  stable contact from              %s\n", us(l.stable_contact).c_str());
     if (!l.contacts.empty()) std::printf("  peak contact force               %.4g N\n", l.peak_force);
     std::printf("  release                          %s\n", us(l.release_time).c_str());

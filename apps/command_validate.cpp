@@ -27,6 +27,7 @@ CommandBody add_validate_command(CLI::App& app) {
         int threads = 0;
         std::string example = "examples/paper/free_impact_tip.toml";
         ProgressSettings progress;
+        std::string switch_example = "examples/switch/cantilever_switch.toml";
     };
     auto opt = std::make_shared<ValidateCommandOptions>();
     CLI::App* sub = app.add_subcommand(
@@ -36,6 +37,9 @@ CommandBody add_validate_command(CLI::App& app) {
     sub->add_flag("--paper-parameters", opt->paper_parameters,
                   "Write docs/paper-parameters.md instead: the parameters the paper does not give, and the Kc scan");
     sub->add_option("--case", opt->example, "The default example the transient sections run")->capture_default_str();
+    sub->add_option("--switch-case", opt->switch_example,
+                    "The switch whose collapse threshold section 11 checks against an independent model")
+        ->capture_default_str();
     CLI::Option* quiet = sub->add_flag("--quiet,-q", opt->quiet, "No progress on stderr (--progress none)");
     quiet->excludes(add_progress_options(*sub, opt->progress));
     sub->add_option("--threads,-j", opt->threads, "Worker threads for the sections (0: every CPU this process may use)")
@@ -50,6 +54,8 @@ CommandBody add_validate_command(CLI::App& app) {
         vo.threads = opt->threads;
         vo.example = read_case_file(opt->example);
         vo.example_path = opt->example;
+        vo.switch_example = read_case_file(opt->switch_example);
+        vo.switch_example_path = opt->switch_example;
         const auto t0 = std::chrono::steady_clock::now();
         auto elapsed = [t0]() { return seconds_since(t0); };
         // The document's sections counted, and a line after each step that takes noticeable time.

@@ -226,7 +226,7 @@ TEST(CaseReaderTablesErrors, Solver) {
     expect_error(s + "group_gap = \"-1 us\"\n", "bad.toml:12: solver.group_gap: must not be negative");
     expect_error(s + "settle_tolerance = 1\n", "bad.toml:12: solver.settle_tolerance: must lie in (0, 1)");
     expect_error(s + "settle_tolerance = 0\n", "bad.toml:12: solver.settle_tolerance: must lie in (0, 1)");
-    expect_error(s + "rtol = 1e-2\n", "bad.toml:12: solver.rtol: must lie in (0, 1e-3]");
+    expect_error(s + "rtol = 1e-2\n", "bad.toml:12: solver.rtol: must lie in [1e-12, 1e-3]");
     expect_error(s + "min_search_step = 0\n", "bad.toml:12: solver.min_search_step: must lie in [1e-15, 1e-3]");
     expect_error(s + "min_search_step = 0.01\n", "bad.toml:12: solver.min_search_step: must lie in [1e-15, 1e-3]");
     expect_error(s + "horizon = \"1 um\"\n", "bad.toml:12: solver.horizon: unit \"um\" is a length");

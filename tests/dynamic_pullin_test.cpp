@@ -42,7 +42,7 @@ struct Plate {
 // with a Kelvin-Voigt stop at travel g_c, over `periods` periods of omega0. The stop is 1e6 k stiff
 // (above the electrostatic softening eps0 A V^2 / (g - g_c)^3 up to V = 10 V_PI) and damped at half
 // its critical value, so a plate that reaches it settles there; neither matters before it closes.
-TransientProblem plate_problem(const Plate& p, double volts, double periods) {
+TransientProblem plate_problem(const Plate& p, double volts, double periods, bool stop = true) {
     const double kc = 1e6 * p.k;
     TransientProblem tp;
     tp.M.resize(1, 1);
@@ -50,7 +50,7 @@ TransientProblem plate_problem(const Plate& p, double volts, double periods) {
     tp.K.resize(1, 1);
     tp.K.insert(0, 0) = p.k;
     tp.forces.push_back(parallel_plate_pad(p.g, p.w, p.L, volts, TimeFunction{}));
-    tp.forces.push_back(std::make_shared<const KelvinVoigtContact>("supports[0]", 0, 1.0, -p.gc, kc, std::sqrt(kc * p.m), 0.0));
+    if (stop) tp.forces.push_back(std::make_shared<const KelvinVoigtContact>("supports[0]", 0, 1.0, -p.gc, kc, std::sqrt(kc * p.m), 0.0));
     tp.q0 = Eigen::VectorXd::Zero(1);
     tp.v0 = Eigen::VectorXd::Zero(1);
     tp.watched_dof = 0;
@@ -123,6 +123,53 @@ TEST(OneDofStep, ClosingTimeMatchesTheExactQuadrature) {
         RecordProperty("closing_time_rel_error_at_" + std::to_string(static_cast<int>(n)) + "_VPI", sci(err));
         EXPECT_LT(std::abs(err), 1e-6) << "V = " << n << " V_PI: CVODE " << *t.closing_time << " s, exact " << exact;
     }
+}
+
+// Without a stop the plate collapses onto the electrode: the pad's terminal mode ends the run where
+// the air gap falls to kCollapseGapFraction of g, at the time the exact quadrature gives for a travel
+// of (1 - kCollapseGapFraction) g.
+TEST(OneDofCollapse, EndsAtTheElectrodeAtTheQuadratureTime) {
+    const Plate p;
+    const double travel = (1.0 - kCollapseGapFraction) * p.g;
+    for (double n : {1.0, 2.0, 10.0}) {
+        const double v = n * p.v_pi();
+        const double exact = closing_time_quadrature(p, v, travel, 64);
+        ASSERT_NEAR(closing_time_quadrature(p, v, travel, 32), exact, 1e-12 * exact);
+        CvodeOptions o;
+        o.rtol = 1e-10;
+        const TransientResult r = solve_cvode(plate_problem(p, v, 20.0, false), TransientOptions{}, o);
+        ASSERT_TRUE(r.ended_by.has_value()) << "V = " << n << " V_PI";
+        EXPECT_EQ(r.ended_by->name, "electrodes[0]");
+        EXPECT_EQ(r.ended_by->reading.outcome, "collapsed");
+        EXPECT_NEAR(r.ended_by->reading.value, kCollapseGapFraction * p.g, 1e-6 * p.g);
+        EXPECT_EQ(r.t_end, r.ended_by->t);
+        const double err = (r.ended_by->t - exact) / exact;
+        RecordProperty("collapse_time_rel_error_at_" + std::to_string(static_cast<int>(n)) + "_VPI", sci(err));
+        std::printf("plate collapse at %g V_PI: %.9g s, quadrature %.9g s (%s), %d steps\n", n, r.ended_by->t, exact,
+                    sci(err).c_str(), r.stats.steps);
+        EXPECT_LT(std::abs(err), 1e-6) << "V = " << n << " V_PI";
+    }
+}
+
+// The step pull-in without any stop: the collapse itself decides each trial.
+TEST(OneDofCollapse, StepPullinWithoutAStopAtSqrt27Over32) {
+    const Plate p;
+    StepBisectionOptions o;
+    o.rel_width = 1e-7;
+    o.bisections = 40;
+    const auto trial = [&](double v) {
+        CvodeOptions co;
+        co.rtol = 1e-10;
+        const TransientResult r = solve_cvode(plate_problem(p, v, 20.0, false), TransientOptions{}, co);
+        StepTrial t;
+        t.voltage = v;
+        t.closes = r.ended_by.has_value();
+        return t;
+    };
+    const StepBisection b = bisect_step_voltage(trial, 0.8 * p.v_pi(), p.v_pi(), o);
+    const double ratio = 0.5 * (b.lower + b.upper) / p.v_pi();
+    RecordProperty("ratio_minus_closed_form", sci(ratio - std::sqrt(27.0 / 32.0)));
+    EXPECT_NEAR(ratio, std::sqrt(27.0 / 32.0), 1e-6);
 }
 
 }  // namespace

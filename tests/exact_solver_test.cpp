@@ -17,7 +17,7 @@
 namespace vi {
 namespace {
 
-double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
+double exact_rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
 // The reference problems in the exact solver's own terms (the decomposition and the search work on them).
 PiecewiseLinearProblem pl(const TransientProblem& p) { return piecewise_linear_form(p); }
@@ -34,11 +34,11 @@ TEST(ExactSolver, SingleDofContactDurationAndRestitution) {
         ASSERT_GE(r.episodes.size(), 1u) << zeta;
         const ContactEpisode& e = r.episodes.front();
         EXPECT_FALSE(e.closed_at_end);
-        EXPECT_LT(rel(e.t_on, h / v), 1e-10) << zeta;
-        EXPECT_LT(rel(e.t_off - e.t_on, tc), 1e-8) << "zeta " << zeta;
-        EXPECT_LT(rel(-e.v_out / e.v_in, std::exp(-zeta * wn * tc)), 1e-8) << "zeta " << zeta;
+        EXPECT_LT(exact_rel(e.t_on, h / v), 1e-10) << zeta;
+        EXPECT_LT(exact_rel(e.t_off - e.t_on, tc), 1e-8) << "zeta " << zeta;
+        EXPECT_LT(exact_rel(-e.v_out / e.v_in, std::exp(-zeta * wn * tc)), 1e-8) << "zeta " << zeta;
         // Impulse = m (v_out - v_in) since the contact force is the only one (k0 ~ 0).
-        EXPECT_LT(rel(e.impulse, m * (e.v_out - e.v_in)), 1e-8) << zeta;
+        EXPECT_LT(exact_rel(e.impulse, m * (e.v_out - e.v_in)), 1e-8) << zeta;
     }
 }
 

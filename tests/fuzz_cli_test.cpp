@@ -2,7 +2,8 @@
 // extremes, units swapped, keys removed, duplicated, misspelled, wrong types, truncation, random
 // bytes, extra tables; tests/support/case_mutator.*) each run `vibroimpact simulate MUTANT --out DIR`
 // (every fourth `modes`) in a child process with a wall-clock limit. Every run must end inside the
-// limit with exit 0, 1 or 2: exit 2 with one error line and nothing written, exit 1 with one
+// limit with exit 0, 1 or 2: exit 2 with one error line naming file, line and key and nothing
+// written, exit 1 with one
 // "vibroimpact: failure:" (or error) line and nothing written, exit 0 with its files; no signal, no
 // sanitizer report. A failing mutant is saved for replay (the message says where).
 //
@@ -23,9 +24,9 @@
 #include <vector>
 
 #include "support/case_mutator.hpp"
+#include "support/fuzz_checks.hpp"
 #include "support/run_command.hpp"
 #include "support/test_files.hpp"
-#include "support/text_checks.hpp"
 
 namespace vi {
 namespace {
@@ -64,61 +65,6 @@ struct KnownFinding {
 };
 const std::vector<KnownFinding> kKnownFindings = {};
 
-long env_number(const char* name, long fallback) {
-    const char* v = std::getenv(name);
-    if (v == nullptr || *v == '\0') return fallback;
-    char* end = nullptr;
-    const long n = std::strtol(v, &end, 10);
-    return end != v && *end == '\0' && n >= 0 ? n : fallback;
-}
-
-std::vector<std::string> lines_of(const std::string& text) {
-    std::vector<std::string> out;
-    std::size_t start = 0;
-    while (start < text.size()) {
-        const auto end = text.find('\n', start);
-        out.push_back(text.substr(start, end == std::string::npos ? std::string::npos : end - start));
-        if (end == std::string::npos) break;
-        start = end + 1;
-    }
-    return out;
-}
-
-bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
-
-// What is wrong with one run; empty when it ended as a run must.
-std::string defect(const CommandResult& r, const std::string& command, const std::string& out_dir) {
-    if (r.hung) return "no end within " + std::to_string(static_cast<int>(kLimitSeconds)) + " s (a hang)";
-    for (const char* marker : {"runtime error:", "AddressSanitizer", "LeakSanitizer", "UndefinedBehaviorSanitizer"}) {
-        if (r.err.find(marker) != std::string::npos) return std::string("sanitizer report (") + marker + ")";
-    }
-    if (r.exit_code < 0 || r.exit_code > 2) return "exit code " + std::to_string(r.exit_code);
-    const std::vector<std::string> err = lines_of(r.err);
-    if (r.exit_code == 2) {
-        if (!test::is_one_error_line(r.err)) return "exit 2 without exactly one error line";
-        if (fs::exists(out_dir)) return "exit 2 wrote " + out_dir;
-        if (!r.out.empty()) return "exit 2 printed on stdout";
-        return "";
-    }
-    // Warnings may come first; then, for exit 1, exactly one line saying what failed.
-    std::size_t warnings = 0;
-    for (const std::string& l : err) warnings += starts_with(l, "vibroimpact: warning: ") ? 1 : 0;
-    if (r.exit_code == 1) {
-        if (err.size() != warnings + 1) return "exit 1 without exactly one failure line";
-        const std::string& last = err.back();
-        if (!starts_with(last, "vibroimpact: failure: ") && !starts_with(last, "vibroimpact: error: ")) {
-            return "exit 1 with a last line that is not a failure: " + last;
-        }
-        if (last.size() < 30) return "exit 1 with an empty reason";
-        if (fs::exists(out_dir)) return "exit 1 wrote " + out_dir;
-        return "";
-    }
-    if (err.size() != warnings) return "exit 0 with stderr other than warnings";
-    const std::string expected = out_dir + (command == "modes" ? "/modes.json" : "/summary.json");
-    if (!fs::exists(expected)) return "exit 0 without " + expected;
-    return "";
-}
-
 // A failing mutant saved where the message says, to replay with `vibroimpact COMMAND FILE`.
 std::string save_finding(const Mutant& m, std::uint64_t seed, long index) {
     const fs::path dir = fs::temp_directory_path() / "vi_fuzz_findings";
@@ -129,11 +75,11 @@ std::string save_finding(const Mutant& m, std::uint64_t seed, long index) {
 }
 
 TEST(FuzzCli, EveryMutantEndsInTimeWithExitZeroOneOrTwo) {
-    const auto seed = static_cast<std::uint64_t>(env_number("VI_FUZZ_SEED", static_cast<long>(kDefaultSeed)));
-    const long seconds = env_number("VI_FUZZ_SECONDS", 0);
-    const long mutants = seconds > 0 ? kMaxMutants : std::min(env_number("VI_FUZZ_MUTANTS", kDefaultMutants), kMaxMutants);
-    const long only = env_number("VI_FUZZ_ONLY", -1);
-    const bool verbose = env_number("VI_FUZZ_VERBOSE", 0) > 0;
+    const auto seed = static_cast<std::uint64_t>(test::env_number("VI_FUZZ_SEED", static_cast<long>(kDefaultSeed)));
+    const long seconds = test::env_number("VI_FUZZ_SECONDS", 0);
+    const long mutants = seconds > 0 ? kMaxMutants : std::min(test::env_number("VI_FUZZ_MUTANTS", kDefaultMutants), kMaxMutants);
+    const long only = test::env_number("VI_FUZZ_ONLY", -1);
+    const bool verbose = test::env_number("VI_FUZZ_VERBOSE", 0) > 0;
     std::printf("fuzz: seed %llu, %s\n", static_cast<unsigned long long>(seed),
                 seconds > 0 ? ("for " + std::to_string(seconds) + " s").c_str()
                             : (std::to_string(mutants) + " mutants").c_str());
@@ -163,11 +109,13 @@ TEST(FuzzCli, EveryMutantEndsInTimeWithExitZeroOneOrTwo) {
         ++tried;
         slowest = std::max(slowest, r.seconds);
         if (verbose) {
-            const std::vector<std::string> err = lines_of(r.err);
+            const std::vector<std::string> err = test::lines_of(r.err);
             std::printf("fuzz: mutant %ld %s exit %d: %s\n", i, command.c_str(), r.exit_code,
                         err.empty() ? "" : err.back().substr(0, 200).c_str());
         }
-        std::string reason = defect(r, command, out);
+        const test::FuzzRun run{dir, path, out, out + (command == "modes" ? "/modes.json" : "/summary.json"),
+                                "a wall-clock time of " + std::to_string(static_cast<int>(kLimitSeconds)) + " s"};
+        std::string reason = test::run_defect(r, run);
         for (const KnownFinding& k : kKnownFindings) {
             if (!reason.empty() && k.matches(m, r)) {
                 ++known[k.name];
@@ -177,7 +125,7 @@ TEST(FuzzCli, EveryMutantEndsInTimeWithExitZeroOneOrTwo) {
         }
         if (reason.empty()) {
             ++tally[r.hung ? "timeout" : "exit " + std::to_string(r.exit_code)];
-            if (r.exit_code == 1) ++failures_by_reason[lines_of(r.err).back().substr(0, 90)];
+            if (r.exit_code == 1) ++failures_by_reason[test::lines_of(r.err).back().substr(0, 90)];
         } else {
             ++tally["defect"];
             if (++defects <= 20) {

@@ -18,7 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string free_impact() { return test::source_path("examples/paper/free_impact_tip.toml"); }
+std::string free_impact_example() { return test::source_path("examples/paper/free_impact_tip.toml"); }
 std::string switch_case() { return test::source_path("examples/switch/cantilever_switch.toml"); }
 
 // Runs the command and checks a refusal: exit 2, one line on stderr starting with `message`, and
@@ -37,14 +37,14 @@ TEST(RefusedCombinations, OptimizeWithOnePathInTwoVaryOptionsWritesNothing) {
     const std::string dir = test::make_temp_dir();
     for (const char* threads : {"1", "2"}) {
         const std::string out = dir + "/out" + threads;
-        expect_refused({"optimize", free_impact(), "--vary", "supports[0].position=0.3:1", "--vary", "supports[0].position=0.5:1",
+        expect_refused({"optimize", free_impact_example(), "--vary", "supports[0].position=0.3:1", "--vary", "supports[0].position=0.5:1",
                         "--minimize", "z_max", "--max-evals", "10", "--threads", threads, "--out", out},
                        "--vary supports[0].position=0.5:1: supports[0].position is already varied by --vary "
                        "supports[0].position=0.3:1",
                        out);
     }
     // The next, correct run into that folder goes ahead.
-    const auto r = test::run_vibroimpact({"optimize", free_impact(), "--vary", "supports[0].position=0.3:1", "--minimize", "z_max",
+    const auto r = test::run_vibroimpact({"optimize", free_impact_example(), "--vary", "supports[0].position=0.3:1", "--minimize", "z_max",
                                           "--max-evals", "6", "--threads", "1", "--out", dir + "/out1"});
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_TRUE(fs::exists(dir + "/out1/optimize.json"));
@@ -60,7 +60,7 @@ TEST(RefusedCombinations, OptimizeRefusedOnAnotherRunsJournalLeavesTheFolderAsIt
     const std::string journal = "# vibroimpact optimize journal 1\n# problem 0123456789abcdef\nx,z_max,status\n";
     test::write_text(out + "/optimize.journal", journal);
     for (const bool resume : {false, true}) {
-        std::vector<std::string> args{"optimize", free_impact(), "--vary", "supports[0].position=0.3:1", "--minimize", "z_max",
+        std::vector<std::string> args{"optimize", free_impact_example(), "--vary", "supports[0].position=0.3:1", "--minimize", "z_max",
                                       "--out", out};
         if (resume) args.push_back("--resume");
         expect_refused(args, out + "/optimize.journal: ");
@@ -75,13 +75,13 @@ TEST(RefusedCombinations, OptimizeRefusedOnAnotherRunsJournalLeavesTheFolderAsIt
 TEST(RefusedCombinations, OptionsThatWouldDoNothingAreRefused) {
     const std::string dir = test::make_temp_dir();
     const std::string out = dir + "/out";
-    expect_refused({"optimize", free_impact(), "--vary", "supports[0].position=0.3:1", "--minimize", "z_max", "--max-evals", "10",
+    expect_refused({"optimize", free_impact_example(), "--vary", "supports[0].position=0.3:1", "--minimize", "z_max", "--max-evals", "10",
                     "--global-evals", "20", "--out", out},
                    "--global-evals 20: must be below --max-evals 10", out);
-    expect_refused({"optimize", free_impact(), "--vary", "supports[0].position=0.3:1", "--minimize", "z_max", "--max-evals", "10",
+    expect_refused({"optimize", free_impact_example(), "--vary", "supports[0].position=0.3:1", "--minimize", "z_max", "--max-evals", "10",
                     "--global-evals", "10", "--out", out},
                    "--global-evals 10: must be below --max-evals 10", out);
-    expect_refused({"optimize", free_impact(), "--vary", "supports[0].position=0.3:1", "--minimize", "solver", "--out", out},
+    expect_refused({"optimize", free_impact_example(), "--vary", "supports[0].position=0.3:1", "--minimize", "solver", "--out", out},
                    "--minimize solver: it is text", out);
     for (const std::vector<std::string>& extra : {std::vector<std::string>{"--horizon", "10 us"}, {"--bisections", "5"},
                                                   {"--rel-width", "0.01"}}) {
@@ -89,9 +89,9 @@ TEST(RefusedCombinations, OptionsThatWouldDoNothingAreRefused) {
         args.insert(args.end(), extra.begin(), extra.end());
         expect_refused(args, extra[0] + ": applies to --dynamic", out);
     }
-    expect_refused({"sweep", free_impact(), "--set", "supports[0].position=0.5,1", "--modes", "4", "--out", out},
+    expect_refused({"sweep", free_impact_example(), "--set", "supports[0].position=0.5,1", "--modes", "4", "--out", out},
                    "--modes: applies to --analysis modes", out);
-    expect_refused({"sweep", free_impact(), "--set", "supports[0].position=0.5,1", "--support-model", "spring", "--out", out},
+    expect_refused({"sweep", free_impact_example(), "--set", "supports[0].position=0.5,1", "--support-model", "spring", "--out", out},
                    "--support-model: applies to --analysis modes", out);
     expect_refused({"air-q", switch_case(), "--gap", "2 um", "--out", out}, "--gap 2 um: the case's [[electrodes]]", out);
     expect_refused({"air-q", test::source_path("examples/paper/cantilever.toml"), "--gap", "1e-120 m", "--out", out},

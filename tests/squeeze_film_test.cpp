@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -22,6 +24,7 @@
 #include "report/transient_output.hpp"
 #include "study/air/air_q.hpp"
 #include "support/run_command.hpp"
+#include "support/test_files.hpp"
 
 namespace vi {
 namespace {
@@ -150,6 +153,72 @@ TEST(SqueezeFilm, RefusesAClosedGap) {
     } catch (const std::domain_error& e) {
         EXPECT_NE(std::string(e.what()).find("films[0]"), std::string::npos) << e.what();
     }
+}
+
+// A film over an electrode's dielectric layer ends where the layer (a contact) begins: below
+// kFilmEndGap of its gap, and pressed into the layer, its law is held at that gap instead of failing.
+TEST(SqueezeFilm, EndsOnADielectricLayer) {
+    const std::string text = test::kBaseCase +
+                             "[air]\n[[electrodes]]\nfrom = 0.1\nto = 1.0\ngap = \"2 um\"\ndielectric_thickness = "
+                             "\"0.2 um\"\ndielectric_permittivity = 7.5\nvoltage = \"60 V\"\nwaveform = \"step\"\n";
+    const BuiltProblem b = build_transient_problem(read_case_text(text, "layer.toml"));
+    const SqueezeFilm& f = film_of(b);
+    EXPECT_EQ(f.name(), "electrodes[0].film");
+    EXPECT_TRUE(f.geometry().ends_on_contact);
+    const std::size_t n = f.dofs().size();
+    const double air = 1.8e-6;
+    const auto rigid = [&](double d) {  // every v DOF moved by d (down: negative), rotations 0
+        std::vector<double> q(n, 0.0);
+        for (std::size_t i = 0; i < n; ++i) q[i] = is_v(b, f.dofs()[i]) ? d : 0.0;
+        return q;
+    };
+    std::vector<double> v(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) v[i] = is_v(b, f.dofs()[i]) ? -0.1 : 0.0;
+    const auto power = [&](double d) {
+        const std::vector<double> q = rigid(d);
+        return f.dissipated_power(ElementState{0.0, q.data(), v.data(), nullptr}, 0);
+    };
+    const double at_end = power(-air * (1.0 - kFilmEndGap));
+    EXPECT_GT(at_end, 0.0);
+    // Closer, touching and pressed 1 nm into the layer: the same film as at its end.
+    for (double d : {-air * (1.0 - 1e-5), -air, -air - 1e-9}) EXPECT_NEAR(power(d), at_end, 1e-9 * at_end) << d;
+    // Above its end the film is the gap law's, which grows as the gap closes.
+    EXPECT_LT(power(-air * (1.0 - 10.0 * kFilmEndGap)), at_end);
+}
+
+// The capacitive switch example in air: the stiction check, which lays the beam on its layer and lets
+// it settle, says it sticks (it failed at the film before), and a 60 V step lands it on the layer
+// later than in vacuum (the film slows the approach).
+TEST(SqueezeFilm, TheCapacitiveSwitchLandsAndSticksInAir) {
+    const std::string file = test::source_path("examples/switch/capacitive_stiction.toml");
+    const std::string dir = test::make_temp_dir();
+    std::string text = test::read_text(file);
+    const auto at = text.find("waveform = \"pulse\"");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, std::string("waveform = \"pulse\"").size(), "waveform = \"step\"");
+    for (const char* key : {"\nrise = \"0.5 us\"", "\nhold = \"3 us\"", "\nfall = \"0.5 us\""}) {
+        ASSERT_NE(text.find(key), std::string::npos) << key;
+        text.erase(text.find(key), std::string(key).size());
+    }
+    test::write_text(dir + "/vacuum.toml", text);
+    test::write_text(dir + "/air.toml", text + "\n[air]\n");
+    const auto st = test::run_vibroimpact({"stiction", dir + "/air.toml", "--json"}, 60.0);
+    ASSERT_EQ(st.exit_code, 0) << st.err;
+    const nlohmann::json layer = nlohmann::json::parse(st.out)["layers"][0];
+    EXPECT_EQ(layer["verdict"], "sticks");
+    EXPECT_TRUE(layer["settled"]["stuck"].get<bool>());
+    const auto closing = [&](const std::string& name) {
+        const auto r = test::run_vibroimpact({"simulate", dir + "/" + name, "--json"}, 60.0);
+        EXPECT_EQ(r.exit_code, 0) << name << ": " << r.err;
+        if (r.exit_code != 0) return 0.0;
+        const nlohmann::json sw = nlohmann::json::parse(r.out)["switching"];
+        EXPECT_EQ(sw["state"], "closed") << name;
+        return sw["closing_time_s"].get<double>();
+    };
+    const double vacuum = closing("vacuum.toml"), air = closing("air.toml");
+    std::printf("capacitive switch, 60 V step: lands at %.4g us in vacuum, %.4g us in air\n", vacuum * 1e6, air * 1e6);
+    EXPECT_GT(air, vacuum);
+    EXPECT_LT(air, 20e-6);
 }
 
 // Q of the paper's cantilever (nickel 117 x 30 x 2 um) with a film under the whole beam at a 1 um

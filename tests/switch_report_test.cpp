@@ -1,5 +1,5 @@
 // `vibroimpact switch-report`: the page, its figures and data files agree with what `pullin` and
-// `simulate` give for the same case, and a case without an electrode is refused.
+// `simulate` give for the same case, a negative drive is drawn, and a case without an electrode is refused.
 
 #include <gtest/gtest.h>
 
@@ -55,6 +55,23 @@ TEST(SwitchReport, ACaseWithoutAnElectrodeIsRefused) {
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_NE(r.err.find("electrodes"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(tmp + "/report"));
+    fs::remove_all(tmp);
+}
+
+// A negative drive pulls as a positive one does (the force goes with V^2): the report of the example
+// at -70 V is drawn, its voltage axis below zero, and the voltage column holds -70 V.
+TEST(SwitchReport, ANegativeVoltageIsDrawnOnItsOwnSideOfZero) {
+    std::string text = test::read_text(test::source_path("examples/switch/cantilever_switch.toml"));
+    const std::string volts = "voltage = \"70 V\"";
+    ASSERT_NE(text.find(volts), std::string::npos);
+    text.replace(text.find(volts), volts.size(), "voltage = \"-70 V\"");
+    const std::string tmp = test::make_temp_dir();
+    test::write_text(tmp + "/case.toml", text);
+    const auto r = test::run_vibroimpact({"switch-report", tmp + "/case.toml", "--out", tmp + "/report"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(test::read_text(tmp + "/report/switch_transient.gp").find("set y2range [*:0]"), std::string::npos);
+    EXPECT_NE(test::read_text(tmp + "/report/switch_transient.csv").find(",-70\n"), std::string::npos);
+    EXPECT_TRUE(fs::exists(tmp + "/report/switch_transient.png"));
     fs::remove_all(tmp);
 }
 

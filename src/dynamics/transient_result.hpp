@@ -1,8 +1,11 @@
 #pragma once
 // TransientResult: sampled time history, contact episodes and energy ledger of one transient.
 
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "forces/force_element.hpp"
 
 namespace vi {
 
@@ -85,6 +88,15 @@ struct Extremes {
     double contact_max = 0.0;     // largest v at contact 0 [m]
 };
 
+// A force element that ended the run before the horizon by entering a terminal mode
+// (ForceElement::ends_run): which one, when, and its reading there.
+struct RunEndEvent {
+    int element = -1;      // index among the problem's force elements
+    std::string name;      // its case key, e.g. "electrodes[0]"
+    double t = 0.0;        // [s], the run's t_end
+    RunEnd reading;
+};
+
 struct TransientResult {
     TimeHistory history;
     std::vector<ContactEpisode> episodes;  // in onset order
@@ -92,6 +104,7 @@ struct TransientResult {
     EnergyLedger final_energy;             // at t_end
     Extremes extremes;
     double t_end = 0.0;
+    std::optional<RunEndEvent> ended_by;   // set when an element's terminal mode ended the run
     SolverStats stats;
 };
 

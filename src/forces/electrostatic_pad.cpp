@@ -41,6 +41,27 @@ ElectrostaticPad::ElectrostaticPad(std::string name, std::vector<int> dofs, std:
     // less than its thickness; half its electrical thickness means the layer has failed. A bare
     // face stops the run where the beam reaches it.
     open_above_ = layer_ > 0.0 ? 0.5 * layer_ : 0.0;
+    collapse_gap_ = layer_ > 0.0 ? 0.0 : kCollapseGapFraction * g.gap;
+}
+
+double ElectrostaticPad::switching_function(const ElementState& s, int mode) const {
+    if (mode != 0 || !(collapse_gap_ > 0.0)) return -1.0;
+    return (collapse_gap_ - narrowest(s.q).air_gap) / geometry_.gap;
+}
+
+int ElectrostaticPad::initial_mode(const ElementState& s) const {
+    return switching_function(s, 0) >= 0.0 ? 1 : 0;
+}
+
+RunEnd ElectrostaticPad::run_end(const ElementState& s) const {
+    const Narrowest n = narrowest(s.q);
+    char buf[240];
+    std::snprintf(buf, sizeof buf,
+                  "the beam reached %s at x = %.4g um, t = %.4g us, V = %.4g V: its narrowest air gap fell to %.3g um, "
+                  "%.3g of the %.3g um gap (collapse)",
+                  name_.c_str(), n.x * 1e6, s.t * 1e6, voltage(s.t), n.air_gap * 1e6, n.air_gap / geometry_.gap,
+                  geometry_.gap * 1e6);
+    return RunEnd{"collapsed", n.x, n.air_gap, buf};
 }
 
 void ElectrostaticPad::refuse(const PadPoint& p, double ge) const {

@@ -65,6 +65,17 @@ struct PadGeometry {
 // Vacuum permittivity [F/m] (CODATA 2018).
 inline constexpr double kEpsilon0 = 8.8541878128e-12;
 
+// A bare electrode's collapse: the beam has reached the electrode once its narrowest air gap falls
+// to this fraction of the gap at rest. Why 1 %: there the parallel-plate pull is 10^4 times its value
+// at rest, and an elastic restoring force able to hold the beam would need V below about
+// sqrt(27/4) 0.01 = 2.6 % of the 1-DOF pull-in voltage (k (1 - f) g = eps0 A V^2 / (2 f^2 g^2) at f =
+// 0.01), so a beam that gets there under any working voltage does not come back; the rest of the way,
+// a travel of 1 % of the gap under a force growing like 1/gap^2, takes a vanishing time (the 1-DOF
+// plate's remaining time scales like f^(3/2)). Following it further only makes the integrator creep
+// toward the singular face (docs/electrostatics.md §2). It lies above the squeeze film's guard (1e-3
+// of its gap), so the collapse is found first.
+inline constexpr double kCollapseGapFraction = 0.01;
+
 // Gauss-Legendre points per beam element (or part of one) the pad integrates with.
 inline constexpr int kPadGaussPoints = 8;
 
@@ -98,6 +109,10 @@ std::vector<std::vector<double>> line_load_patterns(const std::vector<PadPoint>&
 // The pad: V(t) = voltage g(t). Stored energy is the electrical co-energy's negative, -C V^2 / 2
 // (its gradient is minus the force, as the force-element contract asks); the source's input power
 // in that ledger is -C V dV/dt (docs/electrostatics.md §3).
+// A bare electrode (no dielectric) has two modes: 0, the beam clear of it, and 1, collapsed, a
+// terminal mode (ForceElement::ends_run) entered when the narrowest air gap falls to
+// kCollapseGapFraction of the gap; the force is the same in both. With a dielectric layer the
+// layer's contact (DielectricContact) stops the beam, and the pad has one mode.
 class ElectrostaticPad final : public ForceElement {
 public:
     ElectrostaticPad(std::string name, std::vector<int> dofs, std::vector<PadPoint> points, PadGeometry geometry,
@@ -106,6 +121,19 @@ public:
     [[nodiscard]] const std::string& name() const override { return name_; }
     [[nodiscard]] std::string kind() const override { return "electrostatic pad"; }
     [[nodiscard]] const std::vector<int>& dofs() const override { return dofs_; }
+    [[nodiscard]] int modes() const override { return collapse_gap_ > 0.0 ? 2 : 1; }
+
+    // Clear: (collapse gap - narrowest air gap) / gap, rising through 0 as the beam reaches the
+    // collapse gap; collapsed: -1 (the run has ended).
+    [[nodiscard]] double switching_function(const ElementState& s, int mode) const override;
+    [[nodiscard]] int mode_after_switch(int /*mode*/) const override { return 1; }
+    // Collapsed from the start when the beam already lies within the collapse gap.
+    [[nodiscard]] int initial_mode(const ElementState& s) const override;
+    [[nodiscard]] bool ends_run(int mode) const override { return mode == 1 && collapse_gap_ > 0.0; }
+    // "collapsed", the place of the narrowest air gap, that gap, and a sentence with the voltage.
+    [[nodiscard]] RunEnd run_end(const ElementState& s) const override;
+    // The air gap at which the beam counts as collapsed onto the electrode [m]; 0 with a dielectric.
+    [[nodiscard]] double collapse_gap() const { return collapse_gap_; }
 
     void add_force(const ElementState& s, int mode, double* f) const override;
     void add_tangent(const ElementState& s, int mode, double* dfdq, double* dfdv) const override;
@@ -116,7 +144,7 @@ public:
     // Acts from t = 0 on: the static state a transient starts from is without voltage.
     [[nodiscard]] bool in_static_state() const override { return false; }
     [[nodiscard]] double force_scale() const override;
-    [[nodiscard]] std::vector<double> breakpoints(double t0, double t1) const override { return time_.breakpoints(t0, t1); }
+    [[nodiscard]] std::vector<double> time_stops(double t0, double t1) const override { return time_.stops(t0, t1); }
     [[nodiscard]] double position() const override { return 0.5 * (geometry_.from + geometry_.to); }
     // A line load over the span that is constant, linear and quadratic in x: the shapes the force
     // takes as the gap closes unevenly, for a reduced-order model's static corrections.
@@ -176,6 +204,7 @@ private:
     double layer_ = 0.0;       // the dielectric's electrical thickness t_d / eps_r [m]
     double rest_gap_ = 0.0;    // g_e at v = 0 [m]
     double open_above_ = 0.0;  // require_open passes for g_e above this [m]
+    double collapse_gap_ = 0.0;  // kCollapseGapFraction of a bare electrode's gap [m]; 0 with a layer
 };
 
 }  // namespace vi

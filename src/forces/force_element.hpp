@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "forces/linear_form.hpp"
+#include "model/time_function.hpp"
 
 namespace vi {
 
@@ -30,6 +31,16 @@ struct ContactReading {
     double penetration = 0.0;
     double force = 0.0;
     double point_velocity = 0.0;
+};
+
+// What a terminal mode (ForceElement::ends_run) answers, read where the element entered it: a
+// one-word outcome ("collapsed"), the place along the beam [m] (negative when none), the value that
+// decided it (for an electrode, the narrowest air gap [m]) and one sentence saying what happened.
+struct RunEnd {
+    std::string outcome;
+    double x = -1.0;
+    double value = 0.0;
+    std::string text;
 };
 
 // Which term of the energy ledger an element's stored energy belongs to: a contact's spring, the
@@ -93,6 +104,13 @@ public:
     // take a contact that touches and moves in (d = 0, dd/dt > 0) as closed.
     [[nodiscard]] virtual int initial_mode(const ElementState& s) const { return static_mode(s); }
 
+    // A terminal mode: entering it ends a transient, because the model stops holding there and the
+    // state reached is itself the answer (the beam collapsing onto a bare electrode's face: its force
+    // grows without bound, and following it further only creeps toward a singularity). The solver
+    // locates the switch into it as any other and ends the run there with run_end's reading.
+    [[nodiscard]] virtual bool ends_run(int /*mode*/) const { return false; }
+    [[nodiscard]] virtual RunEnd run_end(const ElementState& /*s*/) const { return {}; }
+
     // Watch functions: smooth functions whose zero crossings a solver locates because something is
     // reported there (a contact's peak force and penetration) or because a switch could hide between
     // two steps (the maximum of d of an open contact). `directions` like CVODE's root directions.
@@ -122,8 +140,9 @@ public:
     // from t = 0 on, so it does not).
     [[nodiscard]] virtual bool in_static_state() const { return true; }
 
-    // Times in (t0, t1) where the force jumps or kinks in time (a step, table knots), ascending.
-    [[nodiscard]] virtual std::vector<double> breakpoints(double /*t0*/, double /*t1*/) const { return {}; }
+    // Times in (t0, t1) where an integrator must stop for its prescribed force (a step's jump, a
+    // table's corners: TimeFunction::stops), ascending.
+    [[nodiscard]] virtual std::vector<double> time_stops(double /*t0*/, double /*t1*/) const { return {}; }
 
     // The element as the exact solver needs it, or nullopt when its force is not piecewise linear.
     [[nodiscard]] virtual std::optional<LinearForm> linear_form() const { return std::nullopt; }

@@ -13,10 +13,10 @@ const ForceElement* first_nonlinear(const ForceSet& forces) {
     return nullptr;
 }
 
-std::vector<double> breakpoints(const ForceSet& forces, double t0, double t1) {
+std::vector<double> time_stops(const ForceSet& forces, double t0, double t1) {
     std::vector<double> out;
     for (const ForceElementPtr& e : forces) {
-        for (double b : e->breakpoints(t0, t1)) out.push_back(b);
+        for (double b : e->time_stops(t0, t1)) out.push_back(b);
     }
     std::sort(out.begin(), out.end());
     const auto same = [](double a, double b) {

@@ -30,8 +30,8 @@ public:
     [[nodiscard]] double input_power(const ElementState& s, int mode) const override;
     [[nodiscard]] bool in_static_state() const override { return false; }
     [[nodiscard]] double force_scale() const override { return std::abs(amplitude_) * g_.max_abs(); }
-    [[nodiscard]] std::vector<double> breakpoints(double t0, double t1) const override {
-        return g_.breakpoints(t0, t1);
+    [[nodiscard]] std::vector<double> time_stops(double t0, double t1) const override {
+        return g_.stops(t0, t1);
     }
     [[nodiscard]] std::optional<LinearForm> linear_form() const override;
     [[nodiscard]] double position() const override { return x_; }

@@ -60,9 +60,11 @@ SqueezeFilm::SqueezeFilm(std::string name, std::vector<int> dofs, std::vector<Pa
     }
 }
 
-double SqueezeFilm::local_gap(const PadPoint& p, const double* q) const {
+FilmCoefficient SqueezeFilm::coefficient(const PadPoint& p, const double* q) const {
     const double g = geometry_.gap - geometry_.sign * point_displacement(p, q);
-    if (g > 1e-3 * geometry_.gap) return g;
+    const double end = kFilmEndGap * geometry_.gap;
+    if (g > end) return film_coefficient(gas_, geometry_.width, g);
+    if (geometry_.ends_on_contact) return {film_coefficient(gas_, geometry_.width, end).c, 0.0};
     char buf[200];
     std::snprintf(buf, sizeof buf, "the beam closes the film to %.3g nm at x = %.4g um (gap at rest %.3g um)", g * 1e9,
                   p.x * 1e6, geometry_.gap * 1e6);
@@ -80,7 +82,7 @@ void SqueezeFilm::add_force(const ElementState& s, int mode, double* f) const {
 double SqueezeFilm::add_force_and_power(const ElementState& s, int, double* f) const {
     double power = 0.0;
     for (const PadPoint& p : points_) {
-        const double c = film_coefficient(gas_, geometry_.width, local_gap(p, s.q)).c;
+        const double c = coefficient(p, s.q).c;
         const double rate = point_displacement(p, s.v);
         add_point_load(p, -c * rate * p.weight, f);
         power += c * rate * rate * p.weight;
@@ -91,7 +93,7 @@ double SqueezeFilm::add_force_and_power(const ElementState& s, int, double* f) c
 void SqueezeFilm::add_tangent(const ElementState& s, int, double* dfdq, double* dfdv) const {
     const std::size_t n = dofs_.size();
     for (const PadPoint& p : points_) {
-        const FilmCoefficient k = film_coefficient(gas_, geometry_.width, local_gap(p, s.q));
+        const FilmCoefficient k = coefficient(p, s.q);
         // Line force -c(g) v', g = gap - sign v: d/dv' = -c; d/dv = sign c'(g) v'.
         add_point_stiffness(p, -k.c * p.weight, n, dfdv);
         add_point_stiffness(p, geometry_.sign * k.dc * point_displacement(p, s.v) * p.weight, n, dfdq);
@@ -102,7 +104,7 @@ double SqueezeFilm::dissipated_power(const ElementState& s, int) const {
     double power = 0.0;
     for (const PadPoint& p : points_) {
         const double rate = point_displacement(p, s.v);
-        power += film_coefficient(gas_, geometry_.width, local_gap(p, s.q)).c * rate * rate * p.weight;
+        power += coefficient(p, s.q).c * rate * rate * p.weight;
     }
     return power;
 }

@@ -1,6 +1,7 @@
 #include "impacts/dynamic_pullin.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -74,8 +75,9 @@ StepBisection bisect_step_voltage(const std::function<StepTrial(double)>& trial,
     return b;
 }
 
-StepTrial case_step_trial(const Case& c, double voltage, double horizon, PullinCriterion criterion) {
-    const Case k = stepped(c, voltage, horizon, criterion);
+StepTrial case_step_trial(const Case& c, double voltage, double horizon, PullinCriterion criterion, int reduced_modes) {
+    Case k = stepped(c, voltage, horizon, criterion);
+    if (reduced_modes >= 0) k.solver.reduced_modes = reduced_modes;
     const auto limits = check_transient_run(k, false, memory_budget_bytes());
     if (!limits.empty()) throw InputError(limits.front().key + ": " + limits.front().message);
     const BuiltProblem built = build_transient_problem(k);
@@ -83,12 +85,19 @@ StepTrial case_step_trial(const Case& c, double voltage, double horizon, PullinC
     // The first contact answers the question; the bouncing after it (grazing contacts near the
     // threshold chatter for millions of steps) is not needed.
     co.stop_at_first_contact = true;
+    const auto start = std::chrono::steady_clock::now();
     StepTrial t;
     t.voltage = voltage;
     t.how = "open";
+    t.reduced_modes = k.solver.reduced_modes;
     try {
         const TransientResult r = solve_cvode(built.problem, transient_options(k.solver), co);
-        if (!r.episodes.empty()) {
+        if (r.ended_by) {
+            // The beam collapsed onto an electrode (its pad's terminal mode): pulled in.
+            t.closes = true;
+            t.closing_time = r.ended_by->t;
+            t.how = "collapse";
+        } else if (!r.episodes.empty()) {
             t.closes = true;
             t.closing_time = r.episodes.front().t_on;
             t.how = "contact";
@@ -98,7 +107,50 @@ StepTrial case_step_trial(const Case& c, double voltage, double horizon, PullinC
         t.closes = true;
         t.how = "electrode";
     }
+    t.seconds = seconds_since(start);
     return t;
+}
+
+namespace {
+
+// The models a case on its full model is bisected on, coarsest first: the reduced model of n modes,
+// then of 2n, 4n, ... while that stays below half the beam's `modes`, then the full model (0) when
+// `full` (a mesh above kMaxFullModelFieldElements ends on its finest reduced model).
+std::vector<int> model_ladder(int n, int modes, bool full) {
+    std::vector<int> out;
+    for (int k = n; k > 0 && 2 * k <= modes; k *= 2) out.push_back(k);
+    if (full || out.empty()) out.push_back(0);
+    return out;
+}
+
+// Both ends of the bracket b run again on `model` over the whole horizon: true when the lower end
+// still holds and the upper still pulls in there. Appends the trials; `from`, `to` get the bracket
+// the finer model is known to lie in (with the end that disagreed moved out).
+bool confirm_bracket(const std::function<StepTrial(double)>& trial, const StepBisection& b, double lo, double hi,
+                     const StepBisectionOptions& o, std::vector<StepTrial>& trials, double& from, double& to) {
+    check_run();
+    trials.push_back(trial(b.upper));
+    if (o.trial_done) o.trial_done(trials.back());
+    if (!trials.back().closes) {
+        from = b.upper;
+        to = hi;
+        return false;
+    }
+    check_run();
+    trials.push_back(trial(b.lower));
+    if (o.trial_done) o.trial_done(trials.back());
+    if (trials.back().closes) {
+        from = lo;
+        to = b.lower;
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+int most_dynamic_pullin_trials(const DynamicPullinOptions& o) {
+    return most_step_trials(o.lower_fraction, 1.0, o.bisection) + (o.reduced_modes > 0 ? 2 : 0);
 }
 
 DynamicPullinResult dynamic_pullin(const Case& c, double static_voltage, const DynamicPullinOptions& o) {
@@ -111,16 +163,44 @@ DynamicPullinResult dynamic_pullin(const Case& c, double static_voltage, const D
     out.static_voltage = static_voltage;
     out.criterion = o.criterion;
     out.horizon = o.horizon;
-    if (!(out.horizon > 0.0)) {
-        // Ten periods of mode 1: with the voltage on, a beam that is not pulled in within its first
-        // swings is held (its largest travel comes in the first swing, the damping only lowers the later).
-        // omega1 does not depend on the horizon; any positive one builds.
-        const double probe = c.solver.output_step > 0.0 ? c.solver.output_step : 1e-9;
-        const BeamModel m = build_beam_model(stepped(c, static_voltage, probe, o.criterion));
-        out.horizon = 10.0 * 2.0 * std::numbers::pi / m.omega1;
+    // omega1 and the size of the model do not depend on the horizon; any positive one builds.
+    const double probe = c.solver.output_step > 0.0 ? c.solver.output_step : 1e-9;
+    const BeamModel m = build_beam_model(stepped(c, static_voltage, probe, o.criterion));
+    // Ten periods of mode 1: with the voltage on, a beam that is not pulled in within its first
+    // swings is held (its largest travel comes in the first swing, the damping only lowers the later).
+    if (!(out.horizon > 0.0)) out.horizon = 10.0 * 2.0 * std::numbers::pi / m.omega1;
+    const double lo = o.lower_fraction * static_voltage;
+    const auto modes = static_cast<int>(m.M.rows());
+    // On the case's full model, the bisection runs on a reduced model and its bracket is checked on
+    // the next finer one (twice the modes, at last the full model): the bracket stands once a finer
+    // model agrees at both of its ends, a modal convergence check (docs/electrostatics.md §6). A
+    // full model costs far more: an undamped one follows its mesh's top modes at every step.
+    const bool reduce = c.solver.reduced_modes == 0 && o.reduced_modes > 0 && modes > 2 * o.reduced_modes;
+    const bool full = c.beam.elements <= kMaxFullModelFieldElements;
+    const std::vector<int> ladder =
+        reduce ? model_ladder(o.reduced_modes, modes, full) : std::vector<int>{c.solver.reduced_modes};
+    out.reduced_modes = c.solver.reduced_modes;
+    out.bisected_on = ladder.front();
+    const auto on = [&](int model) {
+        return std::function<StepTrial(double)>(
+            [&c, &out, &o, model](double v) { return case_step_trial(c, v, out.horizon, o.criterion, model); });
+    };
+    StepBisection b = bisect_step_voltage(on(ladder.front()), lo, static_voltage, o.bisection);
+    std::vector<StepTrial> trials = b.trials;
+    out.model = ladder.front();
+    for (std::size_t k = 1; k < ladder.size(); ++k) {
+        double from = lo, to = static_voltage;
+        if (confirm_bracket(on(ladder[k]), b, lo, static_voltage, o.bisection, trials, from, to)) {
+            out.confirmed_on = ladder[k];
+            break;
+        }
+        // The finer model parts from the coarser one: it bisects on from what it showed.
+        if (o.more_trials) o.more_trials(most_step_trials(from, to, o.bisection) + (k + 1 < ladder.size() ? 2 : 0));
+        b = bisect_step_voltage(on(ladder[k]), from, to, o.bisection);
+        trials.insert(trials.end(), b.trials.begin(), b.trials.end());
+        out.model = ladder[k];
     }
-    const auto trial = [&](double v) { return case_step_trial(c, v, out.horizon, o.criterion); };
-    const StepBisection b = bisect_step_voltage(trial, o.lower_fraction * static_voltage, static_voltage, o.bisection);
+    b.trials = std::move(trials);
     out.lower = b.lower;
     out.upper = b.upper;
     out.voltage = 0.5 * (b.lower + b.upper);

@@ -48,8 +48,11 @@ ImpactSummary summarize_impacts(const TransientResult& r, const ImpactSettings& 
     ImpactSummary out;
     out.group_gap = !s.group ? 0.0 : s.group_gap > 0.0 ? s.group_gap : 0.25 * 2.0 * std::numbers::pi / s.omega1;
     out.impacts = group_episodes(r.episodes, out.group_gap);
+    // A run that an element ended (the beam collapsing onto an electrode) never settles: T_p has no
+    // value, and its reason is that outcome.
+    const std::string ended = r.ended_by ? r.ended_by->reading.outcome : std::string();
     if (out.impacts.empty()) {
-        out.Tp_reason = "no_impact";
+        out.Tp_reason = ended.empty() ? "no_impact" : ended;
         return out;
     }
     out.cycle_support = out.impacts.front().support;
@@ -98,6 +101,10 @@ ImpactSummary summarize_impacts(const TransientResult& r, const ImpactSettings& 
         out.Tp_reason = "settled";
     } else {
         out.Tp_reason = "horizon";
+    }
+    if (!ended.empty()) {
+        out.Tp.reset();
+        out.Tp_reason = ended;
     }
     if (r.extremes.valid) {
         out.y_max = r.extremes.watched_max - s.tip_equilibrium;

@@ -45,7 +45,8 @@ struct ImpactSummary {
     std::optional<double> T_first, T1_first, T2_first;
     std::optional<double> Tp;           // [s]; empty when the horizon ended first or nothing hit
     std::string Tp_reason;              // "settled", "persistent_contact", "horizon", "no_impact", "at_rest",
-                                        // "below_threshold" (velocity rule: no impact as fast as settle_velocity)
+                                        // "below_threshold" (velocity rule: no impact as fast as settle_velocity),
+                                        // "collapsed" (the beam reached an electrode, which ended the run)
     std::optional<double> y_max, z_max, y_max_contact, watched_min;  // [m], [-], [m], [m]
 };
 

@@ -143,7 +143,8 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
         run.summary.Tp_reason = "at_rest";
     }
     if (!c.electrodes.empty()) {
-        run.switching = switching_ledger(run.result, c.electrodes, run.built.model.omega1, ledger_contacts(c, run.built.model));
+        run.switching = switching_ledger(run.result, c.electrodes, run.built.model.omega1,
+                                         ledger_contacts(c, run.built.model), run.summary.group_gap);
     }
     return run;
 }

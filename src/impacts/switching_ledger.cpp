@@ -154,8 +154,68 @@ std::string layer_reason(const StuckBalance& b, double held_for) {
 
 }  // namespace
 
+namespace {
+
+// The collapse that ended r, if an electrode's terminal mode did.
+std::optional<SwitchingCollapse> collapse_of(const TransientResult& r, const std::vector<Electrode>& electrodes) {
+    if (!r.ended_by || r.ended_by->reading.outcome != "collapsed") return std::nullopt;
+    SwitchingCollapse c{r.ended_by->name, r.ended_by->t, r.ended_by->reading.x, 0.0, r.ended_by->reading.value};
+    for (std::size_t k = 0; k < electrodes.size(); ++k) {
+        if (c.electrode == "electrodes[" + std::to_string(k) + "]") c.voltage = electrodes[k].voltage * electrodes[k].time(c.time);
+    }
+    return c;
+}
+
+// The bounces among L.contacts (a prefix of r.episodes) followed by a flight of at least gap before
+// the next episode, or by none.
+int grouped_bounce_count(const SwitchingLedger& L, const std::vector<ContactEpisode>& eps, double gap) {
+    int n = 0;
+    for (std::size_t i = 0; i < L.contacts.size(); ++i) {
+        const ContactEpisode& e = eps[i];
+        const bool bounce = !e.closed_at_end && !(L.stable_contact && e.t_on >= *L.stable_contact);
+        if (bounce && (i + 1 >= eps.size() || eps[i + 1].t_on - e.t_off >= gap)) ++n;
+    }
+    return n;
+}
+
+}  // namespace
+
+std::string bounce_text(const SwitchingLedger& l) {
+    char buf[200];
+    std::snprintf(buf, sizeof buf, "%d (every separation, chatter included); %d after a flight of at least %.4g us", l.bounces,
+                  l.grouped_bounces, l.group_gap * 1e6);
+    return buf;
+}
+
 SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1,
-                                 const std::vector<LedgerContact>& contacts) {
+                                 const std::vector<LedgerContact>& contacts, double group_gap) {
+    SwitchingLedger L = switching_ledger_to_end(r, electrodes, omega1, contacts);
+    L.group_gap = group_gap > 0.0 ? group_gap : 0.25 * 2.0 * std::numbers::pi / omega1;
+    L.collapse = collapse_of(r, electrodes);
+    if (!L.collapse) {
+        L.grouped_bounces = grouped_bounce_count(L, r.episodes, L.group_gap);
+        return L;
+    }
+    // The run ended at the collapse: no contact after it, none stable, nothing released.
+    L.state = "collapsed";
+    L.reason = r.ended_by->reading.text;
+    L.stable_contact.reset();
+    L.release_time.reset();
+    L.stuck.reset();
+    L.bounces = 0;
+    L.contacts.clear();
+    L.peak_force = 0.0;
+    for (const ContactEpisode& e : r.episodes) {
+        L.contacts.push_back({e.support, e.t_on, e.t_off, e.v_in, e.peak_force, e.closed_at_end});
+        L.peak_force = std::max(L.peak_force, e.peak_force);
+        if (!e.closed_at_end) ++L.bounces;
+    }
+    L.grouped_bounces = grouped_bounce_count(L, r.episodes, L.group_gap);
+    return L;
+}
+
+SwitchingLedger switching_ledger_to_end(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1,
+                                        const std::vector<LedgerContact>& contacts) {
     SwitchingLedger L;
     L.voltage = voltage_window(electrodes);
     const std::vector<ContactEpisode>& eps = r.episodes;

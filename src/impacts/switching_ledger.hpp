@@ -50,18 +50,35 @@ struct StuckBalance {
     std::optional<LayerHold> layer;  // a layer's peel balance
 };
 
+// The beam collapsing onto an electrode: the run ended there (ElectrostaticPad's terminal mode).
+struct SwitchingCollapse {
+    std::string electrode;  // "electrodes[k]"
+    double time = 0.0;      // [s]
+    double x = 0.0;         // where the air gap is narrowest [m]
+    double voltage = 0.0;   // that electrode's V at that time [V]
+    double air_gap = 0.0;   // the narrowest air gap then [m]
+};
+
 struct SwitchingLedger {
     VoltageWindow voltage;
     std::optional<double> closing_time;    // onset of the first contact episode [s]
-    int bounces = 0;                       // contact episodes that opened before stable contact
+    // Contact episodes that opened before stable contact: every separation, the chatter inside one
+    // impact included (a re-closure after a flight shorter than group_gap, DESIGN.md §3).
+    int bounces = 0;
+    // The same bounces grouped as impacts are: those followed by a flight of at least group_gap (or by
+    // no further contact); a separation after a shorter flight is chatter within one impact.
+    int grouped_bounces = 0;
+    double group_gap = 0.0;                // [s]: solver.group_gap, by default a quarter period of mode 1
     std::optional<double> stable_contact;  // onset of the episode that stays closed [s]
     std::vector<SwitchingContact> contacts;  // first contact up to stable contact (or all, without one)
     double peak_force = 0.0;               // largest of those [N]
     std::optional<double> release_time;    // end of the last contact, once the voltage has fallen [s]
     // never_closed, closed (still closed at the horizon), stuck (closed at the horizon after the voltage
     // fell, held by adhesion), released (opened after the voltage fell), opened_before_voltage_off,
-    // bouncing (open at the horizon with the voltage still on).
+    // bouncing (open at the horizon with the voltage still on), collapsed (the beam reached an
+    // electrode, which ended the run: `collapse`; the contacts are those up to then).
     std::string state;
+    std::optional<SwitchingCollapse> collapse;  // with state "collapsed"
     std::optional<StuckBalance> stuck;  // with state "stuck"
     std::string reason;  // one sentence: why that state
 };
@@ -79,6 +96,11 @@ struct LedgerContact {
 // (a contact must last one period 2 pi / omega1 to count as stable) [rad/s]; and every contact, in
 // the order of the result's contacts (ContactEpisode::support, the time history's contact columns).
 SwitchingLedger switching_ledger(const TransientResult& r, const std::vector<Electrode>& electrodes, double omega1,
-                                 const std::vector<LedgerContact>& contacts);
+                                 const std::vector<LedgerContact>& contacts, double group_gap = 0.0);
+// The ledger of a run read to its end as if the horizon ended it (switching_ledger without the collapse).
+SwitchingLedger switching_ledger_to_end(const TransientResult& r, const std::vector<Electrode>& electrodes,
+                                        double omega1, const std::vector<LedgerContact>& contacts);
+// How the bounces are counted, in words, with the grouped count: for the text output and the report.
+std::string bounce_text(const SwitchingLedger& l);
 
 }  // namespace vi

@@ -53,7 +53,7 @@ const std::vector<std::string_view>& dimensionless() {
         "q_ringdown", "unproven_excess", "offset", "permittivity", "tolerance", "rtol",
         "level",  // a two-step drive's first level, a fraction of the voltage
         // text
-        "status", "stage", "kind", "law", "verdict", "reason", "feature", "solver",
+        "status", "stage", "kind", "law", "verdict", "reason", "feature", "solver", "state",
     };
     return d;
 }

@@ -176,6 +176,14 @@ struct Film {
     ParameterSet params;  // values of keys registered for films
 };
 
+// Default bound on the work of one transient (solver.max_steps): CVODE steps cost 10 to 100 us at
+// 50 elements (the switch examples take 6 000 to 164 000 of them at their rtol,
+// capacitive_stiction.toml the most; a grazing contact or a contact damper far above critical
+// 400 000 to 500 000), the exact solver's search evaluations about 1 us (the paper's example over
+// 10 ms takes 63 000), so a run that would go on for hours ends within a few minutes at most,
+// naming the key.
+inline constexpr long kDefaultMaxSteps = 2000000;
+
 // Transient solver settings.
 struct SolverSettings {
     // automatic: the exact solver when every force element is piecewise linear, else CVODE.
@@ -202,7 +210,7 @@ struct SolverSettings {
     double min_search_step = 1e-9;   // exact solver's smallest event-search step [periods of mode 1]
     // Bounds on the work of one transient (docs/case-files.md): reaching one is an error naming it.
     long max_events = 1000000;       // contact switches and load breakpoints over the horizon
-    long max_steps = 50000000;       // exact: event and extremum search evaluations; cvode: internal steps
+    long max_steps = kDefaultMaxSteps;  // exact: event and extremum search evaluations; cvode: internal steps
     int max_static_iterations = 200; // Newton iterations of a static solution (each contact set counts)
     // What happens when the exact solver meets a contact state it cannot decompose (defective
     // eigenvalues): the whole transient is computed again by CVODE (reported), or the run fails.

@@ -119,10 +119,18 @@ SectionSpec solver_section() {
     bind_member(step, &Settings::output_step);
     step.is_set = [](const Case& c, std::size_t) { return c.solver.output_step != 0.0; };
     add_impact_rules(s);
-    bind_member(s.add_key(number_key("rtol", Dimension::dimensionless)).otherwise(1e-10).in(interval(0, true, 1e-3, false))
-                    .means("CVODE relative tolerance; the absolute tolerances follow it (1e-4 rtol times each "
-                           "component's scale): on the paper's transient 1e-8 is within 2e-9 of the exact solver "
-                           "(0.4 s), 1e-10 within 1e-9 (1 s)"),
+    // The floor: below 1e-12 CVODE's error test is asked to resolve the roundoff of the right-hand
+    // side (sums over a hundred modal terms, about 1e-14), while the answers no longer move: the switch
+    // examples' closing times agree to 1e-10 between 1e-12 and 1e-15, and the steps grow 1.4-2 times
+    // per decade (capacitive_stiction.toml: 0.79 M steps at 1e-12, 1.7 M at 1e-13, no end within 60 s
+    // at 1e-14).
+    KeyRange rtol_range = interval(1e-12, false, 1e-3, false);
+    rtol_range.too_low = "must be at least 1e-12: below, CVODE's error test resolves the roundoff of the "
+                         "right-hand side and the steps grow without changing the answer (docs/case-files.md, Limits)";
+    bind_member(s.add_key(number_key("rtol", Dimension::dimensionless)).otherwise(1e-10).in(rtol_range)
+                    .means("CVODE relative tolerance, at least 1e-12 ([Limits](#limits)); the absolute tolerances "
+                           "follow it (1e-4 rtol times each component's scale): on the paper's transient 1e-8 is "
+                           "within 2e-9 of the exact solver (0.4 s), 1e-10 within 1e-9 (1 s)"),
                 &Settings::rtol);
     bind_member(s.add_key(number_key("min_search_step", Dimension::dimensionless, "periods")).otherwise(1e-9)
                     .in(interval(1e-15, false, 1e-3, false, " (periods of the first mode)"))
@@ -133,9 +141,11 @@ SectionSpec solver_section() {
     bounded_count(s, "max_events", 1000000, 1, 1e9, &Settings::max_events)
         .means("bound on the work of one transient: contact switches and load breakpoints over the horizon; "
                "reaching it stops the run with an error that names this key (exit 1)");
-    bounded_count(s, "max_steps", 50000000, 1000, 1e11, &Settings::max_steps)
+    bounded_count(s, "max_steps", static_cast<double>(kDefaultMaxSteps), 1000, 1e11, &Settings::max_steps)
         .means("bound on the work of one transient: the exact solver's event- and extremum-search evaluations, or "
-               "CVODE's internal steps; reaching it stops the run with an error that names this key (exit 1)");
+               "CVODE's internal steps (10 to 100 us each at 50 elements, [Limits](#limits)); reaching it stops the "
+               "run with an error that names this key (exit 1); a periodic drive whose periods over the horizon "
+               "need more (at least 10 steps each) is refused before the run");
     bounded_count(s, "max_static_iterations", 200, 1, 1e6, &Settings::max_static_iterations)
         .means("bound on the Newton iterations of a static solution (each contact set tried counts); reaching it "
                "stops the run with an error that names this key (exit 1)");

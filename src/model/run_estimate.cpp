@@ -69,7 +69,7 @@ RunEstimate estimate_run(const Case& c) {
     e.bending_stiffness = ei / (l * l * l);
 
     // The slowest motions fix nothing; the shortest period to resolve is mode 1's, a contact's with
-    // mode 1's smallest effective mass (rho A l / 4, at a free end), or a harmonic load's.
+    // mode 1's smallest effective mass (rho A l / 4, at a free end), or a harmonic load's or voltage's.
     double tau = e.omega1 > 0.0 ? 2.0 * std::numbers::pi / e.omega1 : 0.0;
     std::string source = "the first free period";
     for (std::size_t k = 0; k < c.supports.size(); ++k) {
@@ -81,12 +81,15 @@ RunEstimate estimate_run(const Case& c) {
             source = "the contact period of supports[" + std::to_string(k) + "]";
         }
     }
-    for (std::size_t k = 0; k < c.loads.size(); ++k) {
-        const TimeFunction& g = c.loads[k].time;
+    const auto drive = [&](const TimeFunction& g, const std::string& what) {
         if (g.kind == TimeFunction::Kind::harmonic && g.frequency_hz > 0.0 && 1.0 / g.frequency_hz < tau) {
             tau = 1.0 / g.frequency_hz;
-            source = "the period of loads[" + std::to_string(k) + "]";
+            source = "the period of " + what;
         }
+    };
+    for (std::size_t k = 0; k < c.loads.size(); ++k) drive(c.loads[k].time, "loads[" + std::to_string(k) + "]");
+    for (std::size_t k = 0; k < c.electrodes.size(); ++k) {
+        drive(c.electrodes[k].time, "electrodes[" + std::to_string(k) + "]'s sine");
     }
     e.time_scale_source = source;
     e.shortest_time_scale = tau;
@@ -110,7 +113,8 @@ double memory_budget_bytes() {
 }
 
 std::vector<CaseProblem> check_transient_run(const Case& c, bool history, double memory_budget) {
-    // In the order of their keys in a case file: beam.elements, solver.horizon, solver.output_step.
+    // In the order of their keys in a case file: beam.elements, the load and voltage tables and
+    // frequencies, solver.horizon, solver.output_step.
     std::vector<CaseProblem> out;
     const RunEstimate e = estimate_run(c);
     const bool cvode = c.solver.method == SolverSettings::Method::cvode;
@@ -121,6 +125,57 @@ std::vector<CaseProblem> check_transient_run(const Case& c, bool history, double
                            (cvode ? "cvode" : "exact") + "\" takes (at most " + std::to_string(most) +
                            ", docs/case-files.md, Limits): its cost grows like n^3 with n = " +
                            std::to_string(static_cast<long>(e.bending_dofs)) + " bending DOFs"});
+    }
+    const bool field = !c.electrodes.empty() || (c.air && c.air->film && !c.films.empty());
+    if (c.solver.method != SolverSettings::Method::exact && field && c.solver.reduced_modes == 0 &&
+        c.beam.elements > kMaxFullModelFieldElements && c.beam.elements <= most) {
+        out.push_back({"beam.elements",
+                       std::to_string(c.beam.elements) + " elements are more than a transient on the full model takes with " +
+                           (c.electrodes.empty() ? "a squeeze film" : "an electrode") + " (at most " +
+                           std::to_string(kMaxFullModelFieldElements) +
+                           ", docs/case-files.md, Limits): its distributed force makes each Newton matrix a dense " +
+                           std::to_string(static_cast<long>(e.bending_dofs)) + " x " +
+                           std::to_string(static_cast<long>(e.bending_dofs)) +
+                           " factorisation; set solver.reduced_modes (e.g. 16) or use fewer elements"});
+    }
+    const auto corners = [&](const std::string& key, const TimeFunction& g, bool exact) {
+        if (g.kind != TimeFunction::Kind::table || c.solver.horizon <= 0.0) return;
+        const std::size_t n = exact ? g.breakpoints(0.0, c.solver.horizon).size() : g.stops(0.0, c.solver.horizon).size();
+        if (n <= kMaxTimeCorners) return;
+        out.push_back({key, std::to_string(n) + " corners within solver.horizon, each a stop of the integrator (at most " +
+                                std::to_string(kMaxTimeCorners) + ", docs/case-files.md, Limits): rows within " +
+                                significant(exact ? kTableExactTolerance : kTableStopTolerance, 2) +
+                                " of the table's peak of the straight line between their neighbours cost nothing; "
+                                "thin or smooth the table, or shorten the horizon"});
+    };
+    for (std::size_t k = 0; k < c.loads.size(); ++k) corners("loads[" + std::to_string(k) + "].table", c.loads[k].time, !cvode);
+    for (std::size_t k = 0; k < c.electrodes.size(); ++k) {
+        corners("electrodes[" + std::to_string(k) + "].table", c.electrodes[k].time, false);
+    }
+    const auto periodic = [&](const std::string& key, const TimeFunction& g, bool integrated) {
+        if (g.kind != TimeFunction::Kind::harmonic || !(g.frequency_hz > 0.0)) return;
+        const double top_hz = e.omega_top / (2.0 * std::numbers::pi);
+        if (g.frequency_hz > top_hz) {
+            out.push_back({key, significant(g.frequency_hz, 3) + " Hz is above every bending frequency of the mesh (at most " +
+                                    significant(top_hz, 3) + " Hz with " + std::to_string(c.beam.elements) +
+                                    " elements; docs/case-files.md, Limits): the model has no motion at that rate; "
+                                    "lower the frequency, or refine the mesh"});
+            return;
+        }
+        const double periods = g.frequency_hz * c.solver.horizon;
+        if (integrated && periods * kMinStepsPerPeriod > static_cast<double>(c.solver.max_steps)) {
+            out.push_back({key, significant(g.frequency_hz, 3) + " Hz over solver.horizon (" + significant(c.solver.horizon, 3) +
+                                    " s) is " + significant(periods, 3) + " periods, each at least " +
+                                    significant(kMinStepsPerPeriod, 2) + " integration steps: more than solver.max_steps = " +
+                                    std::to_string(c.solver.max_steps) +
+                                    " (docs/case-files.md, Limits); shorten the horizon, or raise solver.max_steps"});
+        }
+    };
+    for (std::size_t k = 0; k < c.loads.size(); ++k) {
+        periodic("loads[" + std::to_string(k) + "].frequency", c.loads[k].time, cvode);
+    }
+    for (std::size_t k = 0; k < c.electrodes.size(); ++k) {
+        periodic("electrodes[" + std::to_string(k) + "].frequency", c.electrodes[k].time, true);
     }
     const double tau = e.shortest_time_scale;
     if (tau > 0.0 && c.solver.horizon > kMaxHorizonRatio * tau) {

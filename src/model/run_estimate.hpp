@@ -22,10 +22,26 @@ inline constexpr int kMaxExactElements = 400;
 // then O(n) per step): the paper's transient at rtol 1e-10 takes 2.6 s at m = 100, 4.7 s at 200 and
 // 8.5 s (38 MB) at 400, where roundoff in K already moves T by 7e-7.
 inline constexpr int kMaxCvodeElements = 400;
+// Most elements of a CVODE transient on the full model (solver.reduced_modes = 0) with a
+// distributed force (an electrode or a squeeze film): its tangent couples every DOF it faces, so each
+// Newton matrix is a dense n x n factorisation and projection. The switch example takes 0.3 s at
+// m = 50, 1.3 s at 100, 7 s at 200 and 54 s at 400; on a reduced model of 16 modes 1.7 s at m = 400
+// with the same closing time to 1e-6.
+inline constexpr int kMaxFullModelFieldElements = 100;
 // Most supports: every closed set of two or more is a dense 2n x 2n eigen problem (100 took 42 s, 2 GB).
 inline constexpr std::size_t kMaxSupports = 100;
 // At most this many electrodes: each one is a force element integrated over its span at every step.
 inline constexpr std::size_t kMaxElectrodes = 20;
+// Most corners of one prescribed time function within a transient's horizon (a voltage or load
+// table's rows off the straight line between their neighbours: TimeFunction::stops for CVODE,
+// breakpoints for the exact solver). Each costs CVODE about 18 steps and 7 factorisations where the
+// table is noise (the switch example under a table of 1e4 noisy rows over its 50 us: 8 s), the exact
+// solver a piece (a 1e5-row load table on the paper's example: 15 s).
+inline constexpr std::size_t kMaxTimeCorners = 5000;
+// Fewest CVODE steps one period of a sine drive takes, at any rtol: the switch example under a
+// 10 V sine of 10 MHz took 16 a period at rtol 1e-3, 80 at 1e-8, 180 at 1e-10. A drive whose
+// periods over the horizon need more than solver.max_steps is refused before the run.
+inline constexpr double kMinStepsPerPeriod = 10.0;
 // Largest horizon, in the shortest time scale the solvers must resolve: event times carry a
 // rounding error of a few eps t, 1e-6 of that time scale at 1e9 of it.
 inline constexpr double kMaxHorizonRatio = 1e9;
@@ -70,7 +86,8 @@ RunEstimate estimate_run(const Case& c);
 double memory_budget_bytes();
 
 // Problems of a transient of c that this machine or double precision cannot carry out: too many
-// elements for the method, a horizon beyond kMaxHorizonRatio time scales, more than kMaxSamples
+// elements for the method, more than kMaxTimeCorners corners of a table within the horizon, a sine
+// drive above the mesh's highest bending frequency or of more periods than solver.max_steps allows, a horizon beyond kMaxHorizonRatio time scales, more than kMaxSamples
 // samples or more memory than `memory_budget` bytes (the history counts only when kept: the exact
 // solver keeps none when `history` is false, CVODE always does). Empty when the transient may run.
 std::vector<CaseProblem> check_transient_run(const Case& c, bool history, double memory_budget);

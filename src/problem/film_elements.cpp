@@ -12,6 +12,7 @@ struct FilmSpan {
     double from = 0.0, to = 0.0;
     Side side = Side::below;
     double gap = 0.0;
+    bool on_layer = false;  // over an electrode's dielectric layer, which stops the beam
 };
 
 std::vector<FilmSpan> film_spans(const Case& c) {
@@ -22,7 +23,8 @@ std::vector<FilmSpan> film_spans(const Case& c) {
         std::string name = "electrodes[" + std::to_string(k) + "]";
         name += ".film";
         // The gas fills the air gap only: a dielectric layer on the electrode is solid.
-        out.push_back({{"electrodes", k}, std::move(name), e.from, e.to, e.side, e.gap - e.dielectric_thickness});
+        out.push_back({{"electrodes", k}, std::move(name), e.from, e.to, e.side, e.gap - e.dielectric_thickness,
+                       e.dielectric_thickness > 0.0});
     }
     for (std::size_t k = 0; k < c.films.size(); ++k) {
         const Film& m = c.films[k];
@@ -49,6 +51,7 @@ public:
             g.width = c.beam.width;
             g.from = f.from * s.length;
             g.to = f.to * s.length;
+            g.ends_on_contact = f.on_layer;
             SpanQuadrature q = span_quadrature(s, src.bending_position, g.from, g.to, kFilmGaussPoints);
             if (q.dofs.empty()) continue;
             out.push_back({std::make_shared<const SqueezeFilm>(f.name, std::move(q.dofs), std::move(q.points), g,

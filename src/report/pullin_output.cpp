@@ -109,6 +109,8 @@ nlohmann::json dynamic_pullin_json(const DynamicPullinResult& r) {
         trials.push_back({{"voltage_V", t.voltage},
                           {"pulls_in", t.closes},
                           {"how", t.how},
+                          {"reduced_modes", t.reduced_modes},
+                          {"seconds", t.seconds},
                           {"closing_time_s", t.closing_time ? nlohmann::json(*t.closing_time) : nlohmann::json(nullptr)}});
     }
     return {{"voltage_V", r.voltage},
@@ -119,16 +121,31 @@ nlohmann::json dynamic_pullin_json(const DynamicPullinResult& r) {
             {"upper_closing_time_s",
              r.upper_closing_time ? nlohmann::json(*r.upper_closing_time) : nlohmann::json(nullptr)},
             {"criterion", r.criterion == PullinCriterion::close ? "close" : "electrode"},
+            {"model_reduced_modes", r.model},
+            {"confirmed_on_reduced_modes", r.confirmed_on >= 0 ? nlohmann::json(r.confirmed_on) : nlohmann::json(nullptr)},
+            {"model", dynamic_pullin_model_text(r)},
             {"horizon_s", r.horizon},
             {"trials", trials}};
+}
+
+std::string dynamic_pullin_model_text(const DynamicPullinResult& r) {
+    const auto name = [](int modes) {
+        return modes > 0 ? "the reduced model of " + std::to_string(modes) + " modes" : std::string("the full model");
+    };
+    std::string out = "bracket of " + name(r.model);
+    if (r.model != r.bisected_on) out += " (" + name(r.bisected_on) + " parted from it first)";
+    if (r.confirmed_on >= 0) out += "; " + name(r.confirmed_on) + " agrees at both ends";
+    if (r.model > 0 && r.reduced_modes == r.model) out += " (solver.reduced_modes)";
+    return out;
 }
 
 std::string dynamic_pullin_text(const DynamicPullinResult& r) {
     std::string out = line("Dynamic pull-in V_DPI = %.6g V (= %.4f of static)\n", r.voltage, r.voltage / r.static_voltage);
     out += line("  step bracket %.6g .. %.6g V", r.lower, r.upper);
-    out += line(", %.0f transients of %.4g us each", static_cast<double>(r.trials.size()), r.horizon * 1e6);
+    out += line(", %.0f transients of at most %.4g us", static_cast<double>(r.trials.size()), r.horizon * 1e6);
     out += r.criterion == PullinCriterion::close ? ", criterion: a support closes or the beam reaches the electrode\n"
                                                  : ", criterion: the beam reaches the electrode (supports removed)\n";
+    out += "  " + dynamic_pullin_model_text(r) + "\n";
     return out;
 }
 

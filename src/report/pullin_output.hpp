@@ -23,6 +23,8 @@ OutputFiles pullin_files(const PullinResult& r);
 nlohmann::json dynamic_pullin_json(const DynamicPullinResult& r);
 
 // "Dynamic pull-in V_DPI = ... V (= ... of static)" and the bracket, one line each.
+// Which model the bracket holds for, in one sentence.
+std::string dynamic_pullin_model_text(const DynamicPullinResult& r);
 std::string dynamic_pullin_text(const DynamicPullinResult& r);
 
 }  // namespace vi

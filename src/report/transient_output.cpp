@@ -166,6 +166,9 @@ nlohmann::json switching_json(const SwitchingLedger& l) {
             {"voltage_off_s", opt(l.voltage.off)},
             {"closing_time_s", opt(l.closing_time)},
             {"bounces", l.bounces},
+            {"bounces_count", "every separation, chatter included"},
+            {"grouped_bounces", l.grouped_bounces},
+            {"group_gap_s", l.group_gap},
             {"stable_contact_s", opt(l.stable_contact)},
             {"peak_force_n", l.contacts.empty() ? nlohmann::json(nullptr) : nlohmann::json(l.peak_force)},
             {"release_time_s", opt(l.release_time)},
@@ -174,6 +177,10 @@ nlohmann::json switching_json(const SwitchingLedger& l) {
             {"contacts", contacts}};
     // Only where a support has adhesion, so that the summaries of other cases stay as they were.
     if (l.stuck) j["stuck"] = stuck;
+    if (const auto& c = l.collapse) {
+        j["collapse"] = {{"electrode", c->electrode}, {"time_s", c->time}, {"x_m", c->x},
+                         {"voltage_v", c->voltage}, {"air_gap_m", c->air_gap}};
+    }
     return j;
 }
 
@@ -225,7 +232,10 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
         j["solver"]["initial_projection_error"] = r.stats.initial_projection_error;
     }
     if (!r.stats.fallback_reason.empty()) j["solver"]["fallback_reason"] = r.stats.fallback_reason;
-    if (switching) j["switching"] = switching_json(*switching);
+    if (switching) {
+        j["switching"] = switching_json(*switching);
+        if (switching->collapse) j["switching"]["collapse"]["x_over_l"] = switching->collapse->x / c.beam.length;
+    }
     j["resolved"] = resolved_case_json(c, b, s);
     return j;
 }

@@ -333,6 +333,12 @@ void add_frequencies(const Model& m, const std::vector<State>& open, double top,
 
 PullinModel pullin_model(const Case& c) {
     if (c.electrodes.empty()) throw InputError("electrodes: the case has no [[electrodes]] (pull-in needs one)");
+    if (c.beam.elements > kMaxPullinElements) {
+        throw InputError("beam.elements: " + std::to_string(c.beam.elements) +
+                         " elements are more than the pull-in trace takes (at most " + std::to_string(kMaxPullinElements) +
+                         ", docs/electrostatics.md §4): beyond, K's roundoff moves V_PI more than the mesh does and "
+                         "each Newton step costs the square of the DOFs an electrode faces; use fewer");
+    }
     const BeamModel b = build_beam_model(c);
     Model m;
     m.K = b.K;

@@ -17,6 +17,13 @@
 
 namespace vi {
 
+// Most elements of a pull-in trace: the example switch's V_PI is 58.415739 V at m = 200, 58.415745 at
+// 400, then moves with K's roundoff (5 m^4 eps: 58.415728 at 600, 58.415672 at 800), while the work
+// of each Newton step grows with the square of the DOFs an electrode faces (its dense tangent
+// block) and Newton's steps with the roundoff (317 at m = 200, 952 at 400, 2517 at 800: 0.09, 0.55,
+// 5 s; m = 1000 gave no answer in 120 s).
+inline constexpr int kMaxPullinElements = 400;
+
 struct PullinOptions {
     int steps = 200;          // continuation steps over the electrode's air gap
     int frequency_points = 16; // voltages (0 .. V_PI) at which the lowest modes are computed
@@ -72,13 +79,15 @@ struct PullinModel {
     int max_iterations = 200;                                // Newton iterations per point
 };
 
-// The model of a case: InputError when it has no electrode or its first faces nothing that moves.
+// The model of a case: InputError when it has no electrode, more than kMaxPullinElements elements,
+// or its first electrode faces nothing that moves.
 PullinModel pullin_model(const Case& c);
 
 // Traces m's equilibria from its rest state (the supports' static state at 0 V).
 PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o = {});
 
-// Traces c's equilibria. Throws InputError when c has no electrode, WorkLimitReached when a
+// Traces c's equilibria. Throws InputError when c has no electrode or more than kMaxPullinElements
+// elements, WorkLimitReached when a
 // step takes more than solver.max_static_iterations Newton iterations even at the smallest
 // step, std::runtime_error when the tangent is singular, StopRequested from check_run().
 PullinResult trace_pullin(const Case& c, const PullinOptions& o = {});

@@ -50,6 +50,7 @@ std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes)
         {"y_max_m", "m"},          {"z_max", "-"},  {"y_max_contact_m", "m"}, {"tip_min_m", "m"},
         {"unproven_excess", "-"}, {"solver", ""},
         {"closing_time_s", "s"},   {"bounces", ""},  {"stable_contact_s", "s"}, {"release_time_s", "s"},
+        {"grouped_bounces", ""},   {"switching_state", ""}, {"collapse_time_s", "s"},
     };
     for (int k = 1; k <= kSweepImpactColumns; ++k) {
         const std::string p = impact_prefix(k);
@@ -96,8 +97,11 @@ std::vector<SweepCell> simulate_cells(const SimulationRun& run) {
         cells.push_back(static_cast<std::int64_t>(l->bounces));
         cells.push_back(opt_cell(l->stable_contact));
         cells.push_back(opt_cell(l->release_time));
+        cells.push_back(static_cast<std::int64_t>(l->grouped_bounces));
+        cells.push_back(l->state);
+        cells.push_back(l->collapse ? SweepCell(l->collapse->time) : SweepCell());
     } else {
-        cells.insert(cells.end(), 4, SweepCell());
+        cells.insert(cells.end(), 7, SweepCell());
     }
     for (std::size_t k = 0; k < static_cast<std::size_t>(kSweepImpactColumns); ++k) {
         if (k >= s.impacts.size()) {

@@ -38,7 +38,8 @@ std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes)
 // A transient's values in the order of sweep_result_columns(simulate, ...): omega1_rad_s, impacts,
 // episodes, T_s, T1_s, T2_s, Tp_s, Tp_reason, tau, tau1, tau2, tau_p, y_max_m, z_max,
 // y_max_contact_m, tip_min_m, unproven_excess, closing_time_s, bounces, stable_contact_s,
-// release_time_s (the switching ledger, empty without electrodes), then per impact k = 1..3 impact<k>_support, _t_on_s, _v_in_m_s,
+// release_time_s, grouped_bounces, switching_state, collapse_time_s (the switching ledger, empty
+// without electrodes), then per impact k = 1..3 impact<k>_support, _t_on_s, _v_in_m_s,
 // _peak_force_n, _peak_penetration_m, _duration_s, _episodes.
 std::vector<SweepCell> simulate_cells(const SimulationRun& run);
 

@@ -7,7 +7,7 @@
 namespace vi::validation_detail {
 
 std::string section_elsewhere() {
-    return "## 11. Validated in the test suite (figures in the documents named)\n\n"
+    return "## 12. Validated in the test suite (figures in the documents named)\n\n"
            "These checks run in `ctest`; their measured figures are in the documents named, not recomputed here.\n\n"
            "- **Beams held at both ends** (`tests/axial_stress_test.cpp`; docs/electrostatics.md §8): frequencies "
            "under residual stress against the pinned-pinned closed form omega_n = (n pi / l)^2 sqrt(EI / (rho A)) "

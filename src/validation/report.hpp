@@ -11,17 +11,21 @@
 #include <vector>
 
 #include "validation/reference_problems.hpp"
+#include "validation/switch_collapse_reference.hpp"
 #include "dynamics/piecewise_linear_problem.hpp"
 #include "model/case.hpp"
 
 namespace vi {
 
 struct ValidationOptions {
-    // Skips section 7 (CVODE on the whole example) and the m = 200 row of section 8, and runs the
-    // undamped CVODE energy check on m = 2 instead of m = 10: a document in seconds, for tests.
+    // Skips section 7 (CVODE on the whole example), the m = 200 row of section 8 and the thresholds
+    // of section 11, and runs the undamped CVODE energy check on m = 2 instead of m = 10: a document
+    // in seconds, for tests.
     bool quick = false;
     Case example;                // the default example, examples/paper/free_impact_tip.toml
     std::string example_path;    // how the document names it
+    Case switch_example;         // the switch of section 11, examples/switch/cantilever_switch.toml
+    std::string switch_example_path;
     // Called with one line after each step that takes noticeable time (the command prints it on
     // stderr); may be empty.
     std::function<void(const std::string&)> progress;
@@ -72,7 +76,11 @@ std::string section_exact_vs_cvode(const ValidationOptions& o);
 std::string section_mesh(const ValidationOptions& o);
 std::string section_loads(const ValidationOptions& o);
 std::string section_electrostatics(const ValidationOptions& o);
-// Section 11: the checks that run in the test suite only, with their references (static text).
+std::string section_switch_collapse(const ValidationOptions& o);
+// The independent reduced-order model's description of a cantilever switch case (one electrode,
+// one stop at the free end, damping from two ratios at modes 1 and 2).
+CantileverSwitchSpec switch_spec(const Case& c);
+// Section 12: the checks that run in the test suite only, with their references (static text).
 std::string section_elsewhere();
 
 void report_progress(const ValidationOptions& o, const std::string& line);

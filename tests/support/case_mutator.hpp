@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace vi::test {
@@ -13,6 +14,7 @@ namespace vi::test {
 struct Mutant {
     std::string text;
     std::vector<std::string> steps;  // one line per mutation, e.g. "value of line 12 -> 1e308"
+    std::vector<std::pair<std::string, std::string>> files;  // files beside the case: name, text
 };
 
 // Deterministic: the same seed and index always give the same mutant of the same text.

@@ -2,6 +2,7 @@
 
 #include <fcntl.h>
 #include <poll.h>
+#include <sys/resource.h>
 #include <pty.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -86,6 +87,11 @@ double now_s() {
 
 constexpr auto kPoll = std::chrono::milliseconds(2);
 
+double cpu_of(const rusage& u) {
+    const auto s = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+    return s(u.ru_utime) + s(u.ru_stime);
+}
+
 }  // namespace
 
 bool wait_until(const std::function<bool()>& ready, double limit_s) {
@@ -128,6 +134,21 @@ ChildProcess::~ChildProcess() {
 
 double ChildProcess::seconds() const { return now_s() - started_; }
 
+double ChildProcess::cpu_seconds() const {
+    if (reaped_) return cpu_;
+    // /proc/<pid>/stat: "pid (comm) state ..." then utime, stime, cutime, cstime as fields 14-17.
+    const std::string stat = read_text("/proc/" + std::to_string(pid_) + "/stat");
+    const std::size_t close = stat.rfind(')');
+    if (close == std::string::npos) return 0.0;
+    std::istringstream rest(stat.substr(close + 1));
+    std::string field;
+    double ticks = 0.0;
+    for (int k = 3; k <= 17 && rest >> field; ++k) {
+        if (k >= 14) ticks += std::strtod(field.c_str(), nullptr);
+    }
+    return ticks / static_cast<double>(sysconf(_SC_CLK_TCK));
+}
+
 void ChildProcess::signal(int sig) {
     if (signalled_ < 0.0) signalled_ = now_s();
     kill(pid_, sig);
@@ -160,10 +181,12 @@ int ChildProcess::signal_children(int sig) {
 
 bool ChildProcess::running() {
     if (reaped_) return false;
-    const pid_t got = waitpid(pid_, &status_, WNOHANG);
+    rusage use{};
+    const pid_t got = wait4(pid_, &status_, WNOHANG, &use);
     if (got == pid_ || got < 0) {
         reaped_ = true;
         ended_ = now_s();
+        if (got == pid_) cpu_ = cpu_of(use);
     }
     return !reaped_;
 }
@@ -174,9 +197,11 @@ CommandResult ChildProcess::wait(double limit_s) {
         r.hung = true;
         if (own_group_) kill(-pid_, SIGKILL);
         kill(pid_, SIGKILL);
-        waitpid(pid_, &status_, 0);
+        rusage use{};
+        wait4(pid_, &status_, 0, &use);
         reaped_ = true;
         ended_ = now_s();
+        cpu_ = cpu_of(use);
     }
     r.exit_code = WIFEXITED(status_) ? WEXITSTATUS(status_) : 128 + WTERMSIG(status_);
     r.term_signal = WIFSIGNALED(status_) ? WTERMSIG(status_) : 0;
@@ -186,6 +211,7 @@ CommandResult ChildProcess::wait(double limit_s) {
         r.err += "\n[test: killed after " + std::to_string(limit_s) + " s: counted as a hang]\n";
     }
     r.seconds = ended_ - started_;
+    r.cpu_seconds = cpu_;
     if (signalled_ >= 0.0) r.after_signal = ended_ - signalled_;
     return r;
 }

@@ -17,6 +17,7 @@ struct CommandResult {
     std::string err;  // standard error
     bool hung = false;          // outlived its limit and was killed (SIGKILL): a hang
     double seconds = 0.0;       // wall time from start to end [s]
+    double cpu_seconds = 0.0;   // CPU time of the process, user and system, its reaped children included [s]
     double after_signal = -1.0; // wall time from the first ChildProcess::signal() to the end [s], or -1
 };
 
@@ -58,6 +59,8 @@ public:
     [[nodiscard]] std::string stderr_path() const { return dir_ + "/stderr"; }
     // Seconds since the child started.
     [[nodiscard]] double seconds() const;
+    // CPU seconds the child has used so far, user and system (its reaped children included).
+    [[nodiscard]] double cpu_seconds() const;
     // Sends sig to the child (the first call starts the clock of CommandResult::after_signal).
     void signal(int sig);
     // Sends sig to the child's process group (needs own_group).
@@ -77,6 +80,7 @@ private:
     bool own_group_ = false;
     bool reaped_ = false;
     int status_ = 0;          // wait status, once reaped
+    double cpu_ = 0.0;        // CPU seconds, once reaped
     double started_ = 0.0;    // steady clock [s]
     double signalled_ = -1.0; // steady clock of the first signal [s], or -1
     double ended_ = 0.0;      // steady clock when reaped [s]

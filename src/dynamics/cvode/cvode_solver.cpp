@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -130,12 +131,16 @@ private:
     void record(double t, const double* y);
     double handle_roots(double tret);
     [[nodiscard]] bool contact_closed() const;  // some contact element is in its contact mode
+    // Whether some element is in a terminal mode (ForceElement::ends_run); if so, records it as what
+    // ended the run at t.
+    bool ended_by_element(double t);
     double locate_missed_switch(int e, double tret);
     void toggle(double t, const std::vector<int>& which);
     void restart(double t);
     void add_counters();
     // What a time limit reached during the integration reports (model/run_control.hpp).
     [[nodiscard]] std::string progress() const;
+    [[nodiscard]] std::string step_limit_message(double t) const;
 
     const TransientProblem& p_;
     TransientOptions o_;
@@ -147,7 +152,7 @@ private:
     int close_root_restarts_ = 0;  // restarts after CVODE's "root found at and very near t"
     TransientResult r_;
     Eigen::VectorXd y0_;                 // the state at t = 0
-    std::vector<double> stops_;          // element breakpoints in (0, t_end), then t_end
+    std::vector<double> stops_;          // element time stops in (0, t_end), then t_end
     std::size_t samples_ = 0, next_sample_ = 0;
     std::vector<int> modes_;             // each element's mode
     cvode_detail::EpisodeRecorder episodes_{sys_, r_};
@@ -332,6 +337,15 @@ bool Driver::contact_closed() const {
     return false;
 }
 
+bool Driver::ended_by_element(double t) {
+    for (int e = 0; e < sys_.elements(); ++e) {
+        if (!sys_.element(e).ends_run(modes_[static_cast<std::size_t>(e)])) continue;
+        r_.ended_by = RunEndEvent{e, sys_.element(e).name(), t, sys_.run_end(e, t, N_VGetArrayPointer(s_.y))};
+        return true;
+    }
+    return false;
+}
+
 void Driver::add_counters() {
     long nst = 0, nsetups = 0;
     check(CVodeGetNumSteps(s_.mem, &nst), "CVodeGetNumSteps");
@@ -356,7 +370,7 @@ void Driver::restart(double t) {
 // element's mode at t = 0.
 std::vector<int> Driver::prepare() {
     const std::size_t nc = sys_.contacts().size();
-    stops_ = breakpoints(p_.forces, 0.0, p_.t_end);
+    stops_ = time_stops(p_.forces, 0.0, p_.t_end);
     stops_.push_back(p_.t_end);
     samples_ = p_.output_step > 0.0 ? static_cast<std::size_t>(std::floor(p_.t_end / p_.output_step * (1.0 + 1e-12))) + 1
                                     : 2;
@@ -414,11 +428,7 @@ std::optional<double> Driver::step(double t, double t_stop) {
     check(flag, "CVode");
     long nst = 0;
     check(CVodeGetNumSteps(s_.mem, &nst), "CVodeGetNumSteps");
-    if (steps_done_ + nst > o_.max_steps) {
-        throw WorkLimitReached("solve_cvode: more than solver.max_steps = " + std::to_string(o_.max_steps) +
-                               " steps before the horizon (at t = " + std::to_string(tret * 1e6) +
-                               " us; raise solver.max_steps, or loosen solver.rtol)");
-    }
+    if (steps_done_ + nst > o_.max_steps) throw WorkLimitReached(step_limit_message(tret));
     check_run();
     if (flag == CV_ROOT_RETURN) {
         const int events_before = r_.stats.events;
@@ -436,7 +446,7 @@ std::optional<double> Driver::step(double t, double t_stop) {
         } else {
             stalled_roots_ = 0;
         }
-        if (c_.stop_at_first_contact && contact_closed()) {
+        if (ended_by_element(t) || (c_.stop_at_first_contact && contact_closed())) {
             sample_until(t, false);
             t_final_ = t;
             return std::nullopt;
@@ -449,6 +459,23 @@ std::optional<double> Driver::step(double t, double t_stop) {
     }
     t_done_ = t;
     return t;
+}
+
+// solver.max_steps reached at t: what raises it, and why the steps were many when the model keeps
+// undamped modes far above the physics (every mode of the mesh, at most 1e-3 of critical damping
+// at the top: CVODE follows them at every step once an impact or a step of voltage excites them).
+std::string Driver::step_limit_message(double t) const {
+    std::string m = "solve_cvode: more than solver.max_steps = " + std::to_string(o_.max_steps) +
+                    " steps before the horizon (at t = " + significant(t, 6) + " s of " + significant(p_.t_end, 6) + " s";
+    const ModalBasis& b = sys_.basis();
+    const Eigen::Index top = b.omega.size() - 1;
+    if (b.full && top >= 0 && sys_.rayleigh()[top] <= 2e-3 * b.omega[top]) {
+        return m + "): the full model without damping keeps its highest mode (" +
+               significant(b.omega[top] / (2.0 * std::numbers::pi), 3) +
+               " Hz) ringing and CVODE follows it; set solver.reduced_modes (e.g. 16) or add [damping], or raise "
+               "solver.max_steps";
+    }
+    return m + "; raise solver.max_steps, shorten solver.horizon, or loosen solver.rtol)";
 }
 
 // The time reached, CVODE's steps so far and its last step, and the closest contact gap at that
@@ -469,16 +496,20 @@ std::string Driver::progress() const {
     return out;
 }
 
-// From t = 0 to the horizon, stop by stop (element breakpoints, each a restart).
+// From t = 0 to the horizon, stop by stop (element time stops, each a restart), or to the
+// element that ends the run.
 void Driver::integrate() {
     double t = 0.0;
     std::size_t seg = 0;
     const ProgressNote note([this] { return progress(); });
-    for (;;) {
+    if (ended_by_element(0.0)) t_final_ = 0.0;
+    while (!r_.ended_by) {
         const double t_stop = stops_[seg];
-        if (t >= t_stop || same_time(t, t_stop)) {  // reached a stop: the end, or a breakpoint
+        if (t >= t_stop || same_time(t, t_stop)) {  // reached a stop: the end, a step or a corner
             sample_until(t_stop, false);
             if (seg + 1 == stops_.size()) return;
+            // The step history describes the right-hand side before the stop: carried across a
+            // corner, CVODE's error test failed there without end at rtol 1e-12 (a ramp from rest).
             sys_.set_segment_end(stops_[++seg]);
             restart(t);
             continue;

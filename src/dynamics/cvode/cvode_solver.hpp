@@ -31,8 +31,8 @@ struct CvodeOptions {
 
 // Integrates p from 0 to p.t_end (TransientSolver's rules; max_steps counts CVODE's internal steps,
 // max_events the switches). Elements switch only at located events (their switching functions
-// crossing zero upward), each followed by a restart of CVODE; element breakpoints (load steps, table
-// knots) are integration stops with a restart too. The energy ledger's integrals and each contact's
+// crossing zero upward), each followed by a restart of CVODE; an element's time stops (a load step, a
+// table's corners: TimeFunction::stops) are integration stops with a restart too. The energy ledger's integrals and each contact's
 // impulse are extra CVODE states. Without o.energy only the initial and final ledgers are kept, and
 // each sample saves a pass over every element (6 % of the switch example's transient). Its own
 // failure: std::runtime_error when CVODE fails.

@@ -197,6 +197,10 @@ ContactReading ModalSystem::reading(int e, double t, const double* y) const {
     return element(e).contact_reading(own_state(e, element_time(t), y));
 }
 
+RunEnd ModalSystem::run_end(int e, double t, const double* y) const {
+    return element(e).run_end(own_state(e, element_time(t), y));
+}
+
 double ModalSystem::stored_energy(int e, int mode, double t, const double* y) const {
     return element(e).stored_energy(own_state(e, element_time(t), y), mode);
 }
@@ -217,6 +221,9 @@ std::vector<int> ModalSystem::initial_modes(const double* y) const {
         // solver's event search closes it: CVODE holds a root function that is zero at the start
         // inactive, and would let the beam pass into the support (tests/cases/starts_in_contact.toml).
         if (el.is_contact() && start == el.contact_mode()) modes[ue] = start;
+        // A state the model no longer holds at t = 0 (the beam already within an electrode's
+        // collapse gap) ends the run at once.
+        if (el.ends_run(start)) modes[ue] = start;
     }
     return modes;
 }

@@ -142,11 +142,18 @@ FigureSpec transient_figure(const SwitchStudy& s) {
     const Electrode& e = s.c.electrodes.front();
     CsvTable t;
     t.header = {"t_us", "watched_um", "contact_force_un", "voltage_v"};
+    double v_min = 0.0, v_max = 0.0;
     for (std::size_t i = 0; i < h.t.size(); ++i) {
         double force = 0.0;
         for (const auto& f : h.contact_force) force += f[i];
-        t.add_row({h.t[i] * 1e6, h.watched_v[i] * 1e6, force * 1e6, e.voltage * e.time(h.t[i])});
+        const double v = e.voltage * e.time(h.t[i]);
+        v_min = std::min(v_min, v);
+        v_max = std::max(v_max, v);
+        t.add_row({h.t[i] * 1e6, h.watched_v[i] * 1e6, force * 1e6, v});
     }
+    // The voltage axis starts at 0 on the side the drive never crosses (a negative drive pulls as a
+    // positive one does; a fixed [0:*] would leave gnuplot no point to draw); all at 0: autoscaled.
+    const char* y2range = v_min < 0.0 ? (v_max > 0.0 ? "[*:*]" : "[*:0]") : (v_max > 0.0 ? "[0:*]" : "[*:*]");
     FigureSpec f;
     f.name = "switch_transient";
     f.title = "Switching transient";
@@ -163,8 +170,8 @@ FigureSpec transient_figure(const SwitchStudy& s) {
         p << "set object " << obj++ << " rect from first " << c.t_on * 1e6 << ", graph 0 to first " << c.t_off * 1e6
           << ", graph 1 fillcolor rgb '#e8e8e8' fillstyle solid noborder behind\n";
     }
-    p << "set ylabel 'displacement  [μm]'\nset y2label 'voltage  [V]'\nset y2tics\nset ytics nomirror\nset y2range [0:*]\n"
-         "set title '(a) watched point (x/l = " << gp_number(s.pullin.watched_x) << ") and voltage'\n"
+    p << "set ylabel 'displacement  [μm]'\nset y2label 'voltage  [V]'\nset y2tics\nset ytics nomirror\nset y2range "
+      << y2range << "\nset title '(a) watched point (x/l = " << gp_number(s.pullin.watched_x) << ") and voltage'\n"
          "plot 'switch_transient.csv' using 1:2 with lines lw 1.5 lc rgb '#1f77b4' title 'displacement', "
          "'' using 1:4 axes x1y2 with lines lw 1 dt 2 lc rgb '#7f7f7f' title 'voltage'\n"
          "unset object\nunset y2label\nunset y2tics\nset ytics mirror\n"

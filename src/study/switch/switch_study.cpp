@@ -7,6 +7,7 @@
 #include <map>
 
 #include "model/input_error.hpp"
+#include "model/run_estimate.hpp"
 #include "model/run_control.hpp"
 #include "plot/chart_json.hpp"
 #include "report/pullin_output.hpp"
@@ -57,6 +58,10 @@ std::vector<std::vector<std::string>> episode_rows(const SwitchStudy& s) {
 
 SwitchStudy run_switch_study(const Case& c) {
     if (c.electrodes.empty()) throw InputError("electrodes: the case has no [[electrodes]] (a switch report needs one)");
+    // Both parts' limits before either runs: the transient's (check_transient_run) would otherwise
+    // come only after the pull-in trace.
+    const auto limits = check_transient_run(c, true, memory_budget_bytes());
+    if (!limits.empty()) throw InputError(limits.front().key + ": " + limits.front().message);
     SwitchStudy s;
     s.c = c;
     auto t0 = std::chrono::steady_clock::now();
@@ -102,7 +107,7 @@ ReportDocument switch_report(const SwitchStudy& s, const std::string& command) {
         const auto us = [](const std::optional<double>& t) { return t ? formatted("%.5g us", *t * 1e6) : std::string("-"); };
         d.heading(3, "Switching ledger");
         d.table({"closing time", "bounces", "stable contact from", "peak contact force [uN]", "release time", "state"},
-                {{us(w.closing_time), std::to_string(w.bounces), us(w.stable_contact), formatted("%.4g", w.peak_force * 1e6),
+                {{us(w.closing_time), bounce_text(w), us(w.stable_contact), formatted("%.4g", w.peak_force * 1e6),
                   us(w.release_time), w.state}});
         d.paragraph(w.reason);
     }
