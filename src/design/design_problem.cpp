@@ -11,11 +11,7 @@ namespace vi {
 namespace {
 
 // Columns that hold text (why T_p ended, which support an impact hit), not numbers.
-// Text cells (a reason, the solver, a list of nodal points) and support indices are no quantity.
-bool is_text_column(const std::string& name) {
-    return name.ends_with("_reason") || name == "solver" || name.rfind("nodes_supported_", 0) == 0 ||
-           (name.rfind("impact", 0) == 0 && name.size() > 8 && name.ends_with("_support"));
-}
+bool is_text_column(const std::string& name) { return sweep_column_is_text(name); }
 
 }  // namespace
 

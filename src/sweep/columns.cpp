@@ -12,6 +12,11 @@ std::optional<double> numeric_cell(const SweepCell& cell) {
     if (const std::int64_t* n = std::get_if<std::int64_t>(&cell)) return static_cast<double>(*n);
     return std::nullopt;
 }
+bool sweep_column_is_text(const std::string& name) {
+    return name.ends_with("_reason") || name == "solver" || name.rfind("nodes_supported_", 0) == 0 ||
+           (name.rfind("impact", 0) == 0 && name.size() > 8 && name.ends_with("_support"));
+}
+
 namespace {
 
 SweepCell opt_cell(const std::optional<double>& v) { return v ? SweepCell(*v) : SweepCell(); }

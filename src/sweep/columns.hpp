@@ -39,6 +39,10 @@ struct SweepColumn {
 // points).
 using SweepCell = std::variant<std::monostate, double, std::int64_t, std::string>;
 
+// True for a column whose cells are text (a reason, the solver, a list of nodal points) or a
+// support's index: no quantity to optimise, fit or spread.
+bool sweep_column_is_text(const std::string& name);
+
 // A cell's number (a count as a double), or nullopt for an empty or text cell.
 std::optional<double> numeric_cell(const SweepCell& cell);
 
