@@ -137,6 +137,14 @@ TEST(UqIntervals, MeanAndQuantileIntervalsCoverTheTruth) {
     std::sort(few.begin(), few.end());
     EXPECT_FALSE(quantile_interval(few, 0.01, 0.95).has_value());
     EXPECT_TRUE(quantile_interval(few, 0.05, 0.95).has_value());
+    // The least n for each: (1 - p)^n <= 0.025, so 368 for 1 % and 99 %, 72 for 5 %, 6 for the median.
+    for (const auto& [p, least] : {std::pair{0.01, 368}, std::pair{0.99, 368}, std::pair{0.05, 72}, std::pair{0.5, 6}}) {
+        std::vector<double> x(static_cast<std::size_t>(least - 1));
+        for (std::size_t i = 0; i < x.size(); ++i) x[i] = static_cast<double>(i);
+        EXPECT_FALSE(quantile_interval(x, p, 0.95).has_value()) << p;
+        x.push_back(static_cast<double>(x.size()));
+        EXPECT_TRUE(quantile_interval(x, p, 0.95).has_value()) << p;
+    }
 }
 
 // The percentile bootstrap of the standard deviation is close to its nominal coverage for a normal
