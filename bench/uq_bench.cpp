@@ -1,7 +1,9 @@
 // Wall and CPU time of three spread studies on the example cantilever switch (m = 50) on 2 worker
 // threads, as `vibroimpact uq` runs them: 1000 pull-in samples; 1000 switching transients of the
 // reduced model (10 modes); Saltelli's runs for Sobol indices of 4 inputs with 512 base samples
-// (3072 reduced-model transients). Each prints the runs' time and the estimators' time apart.
+// (3072 reduced-model transients; gaps are not varied there: a stop gap drawn wider than the
+// electrode's lets the beam collapse onto it, which this model grinds through until the point
+// timeout). Each prints the runs' time and the estimators' time apart.
 // VI_UQ_BENCH_SCALE=F runs F times the samples (quick checks). A timing program: no pass or fail.
 
 #include <sys/resource.h>
@@ -42,7 +44,7 @@ void study(const char* title, const vi::Case& base, vi::SweepAnalysis analysis, 
     const int threads = 2;
     vi::SweepSettings settings;
     settings.analysis = analysis;
-    settings.point_timeout = 0.0;
+    settings.point_timeout = 60.0;  // as uq's default: a run that grinds is a failed run, counted
     const std::vector<vi::UqInput> inputs = vi::parse_uq_inputs(vary, base);
     const vi::SampleDesign design = vi::make_sample_design(inputs, n, vi::SamplingMethod::sobol, 1, sensitivity);
     const auto columns = vi::sweep_result_columns(analysis, settings.modes);
@@ -86,8 +88,8 @@ int main() {
           {"supports[0].stiffness=lognormal:1000:0.2", "supports[0].damping_ratio=uniform:0.1:0.3"}, scaled(1000), false);
     study("Sobol indices, 4 inputs x 512 base samples (switching transients, reduced model)", reduced,
           vi::SweepAnalysis::simulate,
-          {"beam.thickness=normal:2um:0.05um", "electrodes[0].gap=normal:2um:0.05um",
-           "supports[0].gap=normal:1.5um:0.05um", "supports[0].stiffness=lognormal:1000:0.2"},
+          {"beam.thickness=normal:2um:0.05um", "electrodes[0].voltage=normal:70:2",
+           "supports[0].stiffness=lognormal:1000:0.2", "supports[0].damping_ratio=uniform:0.1:0.3"},
           scaled(512), true);
     return 0;
 }
