@@ -2,7 +2,9 @@
 // fabrication tolerances, the yield against specs and the Sobol indices of each tolerance, on the
 // sweep's engine (threads, MPI ranks, journal, resume, point timeout); docs/uq.md.
 
+#include <algorithm>
 #include <cstdio>
+#include <stdexcept>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -10,6 +12,8 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "figure_output.hpp"
+#include "study/uq/uq_figures.hpp"
 #include "io/case_reader.hpp"
 #include "io/output_files.hpp"
 #include "io/text_file.hpp"
@@ -28,7 +32,8 @@ namespace {
 
 struct UqCommandOptions {
     std::string case_path;
-    std::vector<std::string> vary, specs;
+    std::vector<std::string> vary, specs, plots;
+    std::string gnuplot = "gnuplot";
     std::string analysis = "simulate";
     int modes = 3;
     std::string support_model = "pin";
@@ -51,6 +56,7 @@ SamplingMethod method_of(const std::string& m) {
 struct UqPlan {
     SampleDesign design;
     UqSettings settings;
+    std::vector<std::string> plots;  // columns with figures
 };
 
 PointRunPlan make_plan(const UqCommandOptions& o, UqPlan& uq) {
@@ -84,6 +90,18 @@ PointRunPlan make_plan(const UqCommandOptions& o, UqPlan& uq) {
     uq.settings.seed = o.seed;
     uq.settings.resamples = o.resamples;
     for (const std::string& s : o.specs) uq.settings.specs.push_back(parse_yield_spec(s, numeric));
+    // Figures of the columns the specs name and of --plot's.
+    for (const YieldSpec& s : uq.settings.specs) {
+        if (std::find(uq.plots.begin(), uq.plots.end(), s.column) == uq.plots.end()) uq.plots.push_back(s.column);
+    }
+    for (const std::string& c : o.plots) {
+        if (std::find(numeric.begin(), numeric.end(), c) == numeric.end()) {
+            std::string names;
+            for (const std::string& n : numeric) names += (names.empty() ? "" : ", ") + n;
+            throw InputError("--plot " + c + ": no numeric column '" + c + "' in this analysis (one of: " + names + ")");
+        }
+        if (std::find(uq.plots.begin(), uq.plots.end(), c) == uq.plots.end()) uq.plots.push_back(c);
+    }
     uq.design = make_sample_design(inputs, o.samples, uq.settings.method, o.seed, o.sensitivity);
     p.grid = uq.design.grid;
     // The rows depend on the case, the analysis and every run's values (the identity holds them
@@ -137,18 +155,35 @@ int finish_on_root(const UqCommandOptions& o, const UqPlan& uq, SweepStore& stor
     j["case"] = o.case_path;
     j["case_name"] = info.case_name;
     const std::string json = j.dump(2) + "\n";
+    OutputFiles files = {{"uq.json", json}, {"samples.csv", csv}};
+    // Figures never cost the results: without gnuplot, or when it fails, the files are written and
+    // the exit code says the figures are missing.
+    std::string figure_trouble;
+    const std::vector<FigureSpec> figures = uq_figures(j, table, uq.design, uq.settings.specs, uq.plots);
+    if (!figures.empty()) {
+        try {
+            const std::string gnuplot = require_gnuplot(o.gnuplot, "the histograms and Sobol charts");
+            for (auto& [name, text] : figure_files(figures, render_figures(gnuplot, figures, 1))) files[name] = std::move(text);
+        } catch (const std::runtime_error& e) {
+            figure_trouble = e.what();
+        }
+    }
     {
         const CommitSection commit;
-        store.finish_with(o.out_dir, {{"uq.json", json}, {"samples.csv", csv}});
+        store.finish_with(o.out_dir, files);
     }
     if (o.json) {
         std::fputs(json.c_str(), stdout);
     } else {
         print_summary(j, uq.settings);
         std::printf("Computed %zu runs in %.3g s on %d threads x %d processes (%zu from the journal); written to %s/ "
-                    "(uq.json, samples.csv)\n",
+                    "(uq.json, samples.csv%s)\n",
                     info.computed_this_run, info.wall_s, info.threads, info.processes, info.from_journal,
-                    o.out_dir.c_str());
+                    o.out_dir.c_str(), figures.empty() || !figure_trouble.empty() ? "" : ", figures");
+    }
+    if (!figure_trouble.empty()) {
+        std::fprintf(stderr, "vibroimpact: uq: results written without their figures: %s\n", figure_trouble.c_str());
+        return kExitFailure;
     }
     const std::size_t failed = j["failed"].get<std::size_t>();
     if (failed > 0) {
@@ -217,6 +252,11 @@ CommandBody add_uq_command(CLI::App& app) {
         ->check(CLI::Range(0, 4096))
         ->capture_default_str();
     sub->add_flag("--json", opt->json, "Print uq.json on stdout instead of the text summary");
+    sub->add_option("--plot", opt->plots,
+                    "A column to draw (histogram, and Sobol chart with --sensitivity) besides those the specs name; "
+                    "repeat for more")
+        ->allow_extra_args(false);
+    sub->add_option("--gnuplot", opt->gnuplot, "gnuplot executable (name on PATH or path)")->capture_default_str();
     sub->footer("See docs/uq.md for the estimators, their intervals and how many samples a confidence needs.");
     return [opt]() { return run_uq(*opt); };
 }

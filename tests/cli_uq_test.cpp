@@ -180,6 +180,38 @@ TEST(CliUq, FailedSamplesAreCountedAndReported) {
     fs::remove_all(dir);
 }
 
+// The figures of the columns the specs and --plot name: a histogram holding every value, the specs'
+// bounds drawn, and the Sobol chart's inputs by falling total index.
+TEST(CliUq, HistogramsAndSobolChartsOfTheNamedColumns) {
+    const std::string dir = test::make_temp_dir();
+    const CommandResult r = run_vibroimpact(uq_args(dir + "/out", {"--samples", "32", "--sensitivity", "--spec",
+                                                                   "pullin_voltage_v<=60", "--plot", "pullin_travel_m"}));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    for (const char* stem : {"hist_pullin_voltage_v", "sobol_pullin_voltage_v", "hist_pullin_travel_m", "sobol_pullin_travel_m"}) {
+        for (const char* ext : {".png", ".svg", ".gp", ".csv"}) {
+            EXPECT_TRUE(fs::exists(dir + "/out/" + stem + ext)) << stem << ext;
+        }
+    }
+    EXPECT_FALSE(fs::exists(dir + "/out/hist_rest_capacitance_f.png"));
+    // The histogram's counts add up to the base runs (A and B: 64).
+    std::istringstream hist(read_text(dir + "/out/hist_pullin_voltage_v.csv"));
+    std::string line;
+    std::getline(hist, line);
+    EXPECT_EQ(line, "from_pullin_voltage_v,to_pullin_voltage_v,samples");
+    long total = 0;
+    while (std::getline(hist, line)) total += std::stol(line.substr(line.rfind(',') + 1));
+    EXPECT_EQ(total, 64);
+    EXPECT_NE(read_text(dir + "/out/hist_pullin_voltage_v.gp").find("set arrow from 60, graph 0 to 60, graph 1"),
+              std::string::npos);
+    // The gap's total index is the larger (0.64 against 0.36): it comes first.
+    const std::string sobol = read_text(dir + "/out/sobol_pullin_voltage_v.csv");
+    EXPECT_LT(sobol.find("electrodes[0].gap"), sobol.find("beam.thickness")) << sobol;
+    const CommandResult bad = run_vibroimpact(uq_args(dir + "/bad", {"--plot", "pullin_volts"}));
+    EXPECT_EQ(bad.exit_code, 2);
+    EXPECT_EQ(bad.err.rfind("vibroimpact: error: --plot pullin_volts: no numeric column 'pullin_volts'", 0), 0u) << bad.err;
+    fs::remove_all(dir);
+}
+
 TEST(CliUq, BadInputIsExit2WithOneLineAndNothingWritten) {
     const std::string dir = test::make_temp_dir();
     const std::string out = dir + "/out";
