@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -15,6 +16,7 @@
 #include "commands.hpp"
 #include "figure_output.hpp"
 #include "fit_report.hpp"
+#include "progress.hpp"
 #include "io/case_reader.hpp"
 #include "io/number_text.hpp"
 #include "io/output_files.hpp"
@@ -36,6 +38,7 @@ struct FitCommandOptions {
     std::string out = "out/fit";
     std::string gnuplot = "gnuplot";
     bool json = false;
+    ProgressSettings progress;
 };
 
 // A case key's error located in the case file; an error that already names its file or option as is.
@@ -60,23 +63,31 @@ std::string command_line(const FitCommandOptions& o) {
 int finish(const FitCommandOptions& o, const nlohmann::json& j, OutputFiles files, const std::vector<FigureSpec>& figures,
            const std::string& gnuplot, const std::string& text, const std::vector<const FitResult*>& results) {
     files["fit.json"] = j.dump(2) + "\n";
-    write_with_figures(o.out, std::move(files), figures, gnuplot);
+    const std::optional<std::string> figure_failed = write_with_figures(o.out, std::move(files), figures, gnuplot);
     if (o.json) {
         std::printf("%s\n", j.dump(2).c_str());
     } else {
         std::printf("%sWritten to %s/\n", text.c_str(), o.out.c_str());
     }
+    const std::string figure_note =
+        figure_failed ? "; the figure was not drawn (" + *figure_failed + "), fit.json and fit_residuals.csv are written" : "";
     for (const FitResult* r : results) {
         if (!r->converged) {
-            std::fprintf(stderr, "vibroimpact: fit: did not converge (%s); fit.json holds the last estimate\n", r->message.c_str());
+            std::fprintf(stderr, "vibroimpact: fit: did not converge (%s); fit.json holds the last estimate%s\n", r->message.c_str(),
+                         figure_note.c_str());
             return kExitFailure;
         }
+    }
+    if (figure_failed) {
+        std::fprintf(stderr, "vibroimpact: fit: the figure was not drawn (%s); fit.json and fit_residuals.csv are written in %s\n",
+                     figure_failed->c_str(), o.out.c_str());
+        return kExitFailure;
     }
     return kExitOk;
 }
 
 int run_features(const FitCommandOptions& o, const Case& c, const std::vector<FitParameter>& params, const std::string& gnuplot,
-                 const FitOptions& fo) {
+                 const FitOptions& fo, Progress& progress) {
     if (o.time_shift || o.scale || o.two_stage) {
         throw InputError(std::string(o.time_shift ? "--time-shift" : o.scale ? "--scale" : "--two-stage") +
                          ": works on a trajectory (--data), not on features");
@@ -89,6 +100,7 @@ int run_features(const FitCommandOptions& o, const Case& c, const std::vector<Fi
     } catch (const InputError& e) {
         throw in_case(c, e, o.features);
     }
+    progress.finish();
     nlohmann::json j = fit_result_json(params, r);
     j["command"] = command_line(o);
     j["features"] = {{"file", data.file}, {"count", data.features.size()}};
@@ -113,7 +125,7 @@ int run_features(const FitCommandOptions& o, const Case& c, const std::vector<Fi
 }
 
 int run_trajectory(const FitCommandOptions& o, const Case& c, std::vector<FitParameter> params, const std::string& gnuplot,
-                   const FitOptions& fo) {
+                   const FitOptions& fo, Progress& progress) {
     const std::string column = o.column.empty() ? watched_point_name(c) + "_m" : o.column;
     check_trajectory_column(c, column);
     std::size_t extra = (o.time_shift ? 1 : 0) + (o.scale ? 1 : 0);
@@ -135,6 +147,7 @@ int run_trajectory(const FitCommandOptions& o, const Case& c, std::vector<FitPar
     } catch (const InputError& e) {
         throw in_case(c, e, o.data);
     }
+    progress.finish();
     if (o.two_stage) {
         std::vector<FitParameter> p1, p2;
         for (std::size_t i : two.stage1_params) p1.push_back(params[i]);
@@ -218,6 +231,7 @@ CommandBody add_fit_command(CLI::App& app) {
     sub->add_option("--out,-o", opt->out, "Folder for fit.json, fit_residuals.csv and the figure")->capture_default_str();
     sub->add_option("--gnuplot", opt->gnuplot, "gnuplot executable (name on PATH or path)")->capture_default_str();
     sub->add_flag("--json", opt->json, "Print fit.json on stdout instead of text");
+    add_progress_options(*sub, opt->progress);
 
     return [opt]() {
         const FitCommandOptions& o = *opt;
@@ -225,13 +239,24 @@ CommandBody add_fit_command(CLI::App& app) {
         if (!o.time_shift && !o.time_shift_range.empty()) throw InputError("--time-shift-range: needs --time-shift");
         if (!o.scale && !o.scale_range.empty()) throw InputError("--scale-range: needs --scale");
         if (!o.features.empty() && !o.column.empty()) throw InputError("--column: works on a trajectory (--data)");
+        const ProgressStyle style = progress_style(o.progress);
         const std::string gnuplot = require_gnuplot(o.gnuplot, "the fit figure");
         const Case c = read_case_file(o.case_path);
         std::vector<FitParameter> params;
         for (const std::string& f : o.fit) params.push_back(parse_fit_parameter(f, c));
         check_distinct(params);
-        const FitOptions fo{o.max_iterations, o.starts, o.threads};
-        return o.data.empty() ? run_features(o, c, params, gnuplot, fo) : run_trajectory(o, c, params, gnuplot, fo);
+        // Iterations of the budget: a start that converges early counts the rest of its share as done,
+        // outside the rate (so the time left is that of the budget at the rate of real iterations).
+        const int budget = (o.two_stage ? 2 : 1) * o.starts * o.max_iterations;
+        Progress progress("fit", "iterations", static_cast<std::size_t>(budget), 0, style, o.progress.interval_s, true);
+        const FitOptions fo{o.max_iterations, o.starts, o.threads,
+                            [&progress](int iterations, int unused) {
+                                progress.advance(static_cast<std::size_t>(iterations));
+                                progress.skip(static_cast<std::size_t>(unused));
+                            }};
+        const ProgressTicker ticker(progress);
+        return o.data.empty() ? run_features(o, c, params, gnuplot, fo, progress)
+                              : run_trajectory(o, c, params, gnuplot, fo, progress);
     };
 }
 

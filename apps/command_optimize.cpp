@@ -4,8 +4,11 @@
 #include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <set>
 #include <nlohmann/json.hpp>
 #include <stdexcept>
 #include <string>
@@ -13,6 +16,7 @@
 
 #include "commands.hpp"
 #include "figure_output.hpp"
+#include "progress.hpp"
 #include "design/design_journal.hpp"
 #include "design/optimizer.hpp"
 #include "io/case_reader.hpp"
@@ -130,6 +134,7 @@ struct OptimizeCommandOptions {
     std::string gnuplot = "gnuplot";
     bool json = false;
     bool resume = false;
+    ProgressSettings progress;
 };
 
 std::string command_text(const OptimizeCommandOptions& o, const DesignProblem& p) {
@@ -175,18 +180,54 @@ DesignProblem read_problem(const OptimizeCommandOptions& o, const std::string& c
     p.settings = with_study_analyses(p.settings);
     check_sweep_analysis(p.base, p.settings);
     p.columns = sweep_result_columns(p.settings.analysis, p.settings.modes);
-    for (const std::string& v : o.vary) p.variables.push_back(parse_design_variable(v, p.base));
+    for (const std::string& v : o.vary) {
+        DesignVariable variable = parse_design_variable(v, p.base);
+        for (const DesignVariable& earlier : p.variables) {
+            if (earlier.path.text() == variable.path.text()) {
+                throw InputError("--vary " + v + ": " + variable.path.text() + " is already varied by --vary " + earlier.setting);
+            }
+        }
+        p.variables.push_back(std::move(variable));
+    }
     p.maximize = !o.maximize.empty();
     p.objective = quantity_column(p.maximize ? o.maximize : o.minimize, p.columns, p.maximize ? "--maximize" : "--minimize");
     for (const std::string& c : o.constraints) p.constraints.push_back(parse_design_constraint(c, p.columns));
     return p;
 }
 
+// The search, reported as it goes: designs used of --max-evals (the search may end sooner), those
+// of the journal not in the rate, and the best objective so far.
+OptimizeResult search(const DesignProblem& p, const OptimizeOptions& o, ProgressStyle style, double interval_s) {
+    std::set<std::vector<std::uint64_t>> journal;
+    for (const ComputedDesign& d : o.known) journal.insert(design_key(d.x));
+    Progress progress("optimize", "designs", static_cast<std::size_t>(o.max_evaluations), 0, style, interval_s, true);
+    const ProgressTicker ticker(progress);
+    const std::string& q = p.columns[p.objective].name;
+    return optimize_design(p, o, [&](const DesignEvaluation& e) {
+        if (journal.count(design_key(e.x)) > 0) {
+            progress.skip();
+        } else {
+            progress.advance();
+        }
+        if (e.best) {
+            char best[64];
+            std::snprintf(best, sizeof best, "%.6g", *e.best);
+            progress.set_note("best " + q + " " + best);
+        }
+    });
+}
+
 // The search with its journal, then the files all together; a stop keeps the journal and says how
 // to go on.
 int run_optimize(const OptimizeCommandOptions& opt) {
     if (opt.minimize.empty() == opt.maximize.empty()) throw InputError("optimize: give one of --minimize or --maximize");
+    if (opt.global_evals >= opt.max_evals) {
+        throw InputError("--global-evals " + std::to_string(opt.global_evals) + ": must be below --max-evals " +
+                         std::to_string(opt.max_evals) +
+                         " (it is the global stage's share of them; the local stage needs one at least)");
+    }
     const std::string gnuplot = require_gnuplot(opt.gnuplot, "the convergence figure");
+    const ProgressStyle style = progress_style(opt.progress);
     std::string reason;
     const auto case_text = file_text(opt.case_path, reason);
     if (!case_text) throw InputError(one_line(opt.case_path + ": cannot read file (" + reason + ")"));
@@ -201,28 +242,38 @@ int run_optimize(const OptimizeCommandOptions& opt) {
 
     OptimizeResult r;
     nlohmann::json j;
+    std::optional<std::string> figure_failed;
     const auto t0 = std::chrono::steady_clock::now();
     try {
-        r = optimize_design(p, o);
+        r = search(p, o, style, opt.progress.interval_s);
         const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         j = result_json(p, r, command_text(opt, p));
         j["run"] = run_json(r, wall_s);
         OutputFiles files;
         files["optimize.json"] = j.dump(2) + "\n";
         files["evaluations.csv"] = evaluations_csv(p, r);
-        write_with_figures(opt.out, std::move(files), {convergence_figure(p, r)}, gnuplot);
+        figure_failed = write_with_figures(opt.out, std::move(files), {convergence_figure(p, r)}, gnuplot);
         journal.remove();
         if (opt.json) {
             std::printf("%s\n", j.dump(2).c_str());
         } else {
             print_result(opt, p, r, wall_s);
         }
+    } catch (const InputError&) {
+        // A refusal leaves nothing behind: a journal this run started goes with it.
+        if (journal.started_here()) journal.remove();
+        throw;
     } catch (const StopRequested& s) {
         std::fprintf(stderr,
                      "vibroimpact: optimize interrupted: %zu designs computed, kept in %s; run the same command with "
                      "--resume to go on\n",
                      journal.size(), journal.path().c_str());
         return kExitStoppedBase + (s.signal() > 0 ? s.signal() : SIGINT);
+    }
+    if (figure_failed) {
+        std::fprintf(stderr, "vibroimpact: optimize: the convergence figure was not drawn (%s); optimize.json and "
+                             "evaluations.csv are written in %s\n", figure_failed->c_str(), opt.out.c_str());
+        return kExitFailure;
     }
     if (!r.best) {
         std::fprintf(stderr, "vibroimpact: optimize: no design met the constraints and ran to the end in %zu evaluations "
@@ -267,6 +318,7 @@ CommandBody add_optimize_command(CLI::App& app) {
                   "again, and the result is the one of an uninterrupted run");
     sub->add_option("--gnuplot", opt->gnuplot, "gnuplot executable (name on PATH or path)")->capture_default_str();
     sub->add_flag("--json", opt->json, "Print optimize.json on stdout instead of text");
+    add_progress_options(*sub, opt->progress);
 
     return [opt]() { return run_optimize(*opt); };
 }

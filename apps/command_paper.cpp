@@ -12,6 +12,7 @@
 #include "study/paper/claims.hpp"
 #include "study/paper/study.hpp"
 #include "commands.hpp"
+#include "progress.hpp"
 #include "model/input_error.hpp"
 #include "io/output_files.hpp"
 #include "io/units.hpp"
@@ -61,6 +62,7 @@ CommandBody add_paper_command(CLI::App& app) {
         std::string examples;
         std::string gnuplot = "gnuplot";
         bool quiet = false;
+        ProgressSettings progress;
     };
     auto opt = std::make_shared<PaperCommandOptions>();
     CLI::App* sub = app.add_subcommand(
@@ -84,14 +86,20 @@ CommandBody add_paper_command(CLI::App& app) {
                     "Read cantilever.toml, free_impact_tip.toml and free_impact_prestress.toml from this folder instead of "
                     "the built-in copies of examples/paper/");
     sub->add_option("--gnuplot", opt->gnuplot, "gnuplot executable (a name on PATH or a path)")->capture_default_str();
-    sub->add_flag("--quiet,-q", opt->quiet, "No progress lines on stderr");
+    CLI::Option* quiet = sub->add_flag("--quiet,-q", opt->quiet, "No progress on stderr (--progress none)");
+    quiet->excludes(add_progress_options(*sub, opt->progress));
 
     return [opt]() {
         using Clock = std::chrono::steady_clock;
         const auto t0 = Clock::now();
         auto elapsed = [t0]() { return std::chrono::duration<double>(Clock::now() - t0).count(); };
-        auto progress = [opt, elapsed](const std::string& line) {
-            if (!opt->quiet) std::fprintf(stderr, "paper: [%5.1f s] %s\n", elapsed(), line.c_str());
+        // The study's jobs counted, and a line as each part of it (and each later stage) ends.
+        Progress jobs("paper", "jobs", 0, 0, opt->quiet ? ProgressStyle::none : progress_style(opt->progress),
+                      opt->progress.interval_s);
+        auto progress = [&jobs, elapsed](const std::string& line) {
+            char at[32];
+            std::snprintf(at, sizeof at, "[%5.1f s] ", elapsed());
+            jobs.say("paper: " + std::string(at) + line);
         };
         double scan_horizon = 0.0;
         try {
@@ -115,7 +123,18 @@ CommandBody add_paper_command(CLI::App& app) {
         so.position_horizon = scan_horizon;
         so.threads = opt->threads;
         so.progress = progress;
-        const PaperStudy study = run_paper_study(so);
+        so.jobs_done = [&jobs](std::size_t done, std::size_t total) {
+            if (done == 0) {
+                jobs.set_total(total);
+            } else {
+                jobs.advance();
+            }
+        };
+        const PaperStudy study = [&] {
+            const ProgressTicker ticker(jobs);
+            return run_paper_study(so);
+        }();
+        jobs.finish();
         progress("study done: " + std::to_string(study.timing.transients) + " transients on " + std::to_string(study.timing.threads) +
                  " threads");
 

@@ -5,8 +5,10 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "commands.hpp"
+#include "progress.hpp"
 #include "statics/pullin.hpp"
 #include "impacts/dynamic_pullin.hpp"
 #include "io/case_reader.hpp"
@@ -16,6 +18,25 @@
 #include "report/pullin_output.hpp"
 
 namespace vi::cli {
+namespace {
+
+// The dynamic pull-in's transients run over a horizon the command sets (--horizon, or ten periods
+// of mode 1), not the case file's: a check that refuses it names the option, or says where the
+// default came from, rather than the case file's solver.horizon line.
+InputError blame_horizon(const Case& c, const InputError& e, const std::string& horizon_option) {
+    const std::string what = e.what();
+    const std::string horizon = "solver.horizon: ", step = "solver.output_step: ";
+    const std::string option =
+        horizon_option.empty() ? "--horizon (default: ten periods of mode 1)" : "--horizon " + horizon_option;
+    if (what.rfind(horizon, 0) == 0) return InputError(option + ": " + what.substr(horizon.size()));
+    // The case's output step against the command's horizon: both named, the option first.
+    if (what.rfind(step, 0) == 0 && what.find("horizon") != std::string::npos) {
+        return InputError(option + ": the case's " + locate_in_case(c, e).what());
+    }
+    return locate_in_case(c, e);
+}
+
+}  // namespace
 
 CommandBody add_pullin_command(CLI::App& app) {
     struct PullinCommandOptions {
@@ -26,6 +47,7 @@ CommandBody add_pullin_command(CLI::App& app) {
         bool dynamic = false;
         std::string horizon;
         DynamicPullinOptions dyn;
+        ProgressSettings progress;
     };
     auto opt = std::make_shared<PullinCommandOptions>();
     CLI::App* sub = app.add_subcommand(
@@ -35,16 +57,23 @@ CommandBody add_pullin_command(CLI::App& app) {
         ->check(CLI::Range(10, 100000));
     sub->add_flag("--dynamic", opt->dynamic,
                   "Also the dynamic (step) pull-in voltage, by bisection on transients (docs/electrostatics.md)");
-    sub->add_option("--horizon", opt->horizon, "--dynamic: length of each transient (default 10 periods of mode 1)");
-    sub->add_option("--bisections", opt->dyn.bisection.bisections, "--dynamic: most transients after the bracket")
-        ->check(CLI::Range(1, 200));
-    sub->add_option("--rel-width", opt->dyn.bisection.rel_width, "--dynamic: relative width of the final bracket")
-        ->check(CLI::Range(1e-12, 0.5));
+    const std::vector<CLI::Option*> dynamic_only{
+        sub->add_option("--horizon", opt->horizon, "--dynamic: length of each transient (default 10 periods of mode 1)"),
+        sub->add_option("--bisections", opt->dyn.bisection.bisections, "--dynamic: most transients after the bracket")
+            ->check(CLI::Range(1, 200)),
+        sub->add_option("--rel-width", opt->dyn.bisection.rel_width, "--dynamic: relative width of the final bracket")
+            ->check(CLI::Range(1e-12, 0.5))};
     sub->add_flag("--json", opt->json, "Print one JSON document on stdout instead of text");
     sub->add_option("--out,-o", opt->out_dir, "Folder for pullin.json, pullin_branch.csv, pullin_frequencies.csv");
+    add_progress_options(*sub, opt->progress);
 
-    return [opt]() {
-        // Bad options are refused before any work.
+    return [opt, dynamic_only]() {
+        // Bad options are refused before any work, and so are options that would do nothing.
+        for (const CLI::Option* o : dynamic_only) {
+            if (o->count() > 0 && !opt->dynamic) {
+                throw InputError(o->get_name() + ": applies to --dynamic (the step pull-in), which is not asked for");
+            }
+        }
         double horizon = 0.0;
         if (!opt->horizon.empty()) {
             try {
@@ -54,10 +83,20 @@ CommandBody add_pullin_command(CLI::App& app) {
             }
             if (!(horizon > 0.0)) throw InputError("--horizon: must be positive (e.g. \"100 us\")");
         }
+        const ProgressStyle style = progress_style(opt->progress);
         const Case c = read_case_file(opt->case_path);
         PullinResult r;
         try {
-            r = trace_pullin(c, opt->pullin);
+            // The branch in step lengths of the air gap, then the frequency points.
+            PullinOptions po = opt->pullin;
+            Progress progress("pullin", "steps", static_cast<std::size_t>(po.steps + po.frequency_points), 0, style,
+                              opt->progress.interval_s);
+            po.progress = [&progress](int units, int unused) {
+                progress.advance(static_cast<std::size_t>(units));
+                progress.skip(static_cast<std::size_t>(unused));
+            };
+            const ProgressTicker ticker(progress);
+            r = trace_pullin(c, po);
         } catch (const InputError& e) {
             throw locate_in_case(c, e);
         }
@@ -70,10 +109,16 @@ CommandBody add_pullin_command(CLI::App& app) {
             }
             DynamicPullinOptions o = opt->dyn;
             o.horizon = horizon;
+            // Transients of the bisection, at most (it ends once the bracket is narrow enough).
+            Progress progress("pullin --dynamic", "transients",
+                              static_cast<std::size_t>(most_step_trials(o.lower_fraction, 1.0, o.bisection)), 0, style,
+                              opt->progress.interval_s, true);
+            o.bisection.trial_done = [&progress](const StepTrial&) { progress.advance(); };
+            const ProgressTicker ticker(progress);
             try {
                 dyn = dynamic_pullin(c, r.pullin->voltage, o);
             } catch (const InputError& e) {
-                throw locate_in_case(c, e);
+                throw blame_horizon(c, e, opt->horizon);
             }
         }
         nlohmann::json j = pullin_json(r);

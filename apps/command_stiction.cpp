@@ -41,6 +41,11 @@ CommandBody add_stiction_command(CLI::App& app) {
         try {
             r = stiction_check(c);
         } catch (const InputError& e) {
+            // The element count --elements gave is the option's, not the case file's line.
+            const std::string what = e.what(), key = "beam.elements: ";
+            if (opt->elements > 0 && what.rfind(key, 0) == 0) {
+                throw InputError("--elements " + std::to_string(opt->elements) + ": " + what.substr(key.size()));
+            }
             throw locate_in_case(c, e);
         }
         if (!opt->out_dir.empty()) write_output_files(opt->out_dir, stiction_files(r));

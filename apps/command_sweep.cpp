@@ -11,6 +11,7 @@
 #include "io/text_file.hpp"
 #include "model/input_error.hpp"
 #include "point_runs.hpp"
+#include "progress.hpp"
 #include "stop_signals.hpp"
 #include "study/analyses/sweep_analyses.hpp"
 #include "support_model_option.hpp"
@@ -33,6 +34,7 @@ struct SweepCommandOptions {
     bool resume = false;
     bool retry_failed = false;
     double point_timeout = 60.0;
+    ProgressSettings progress;
 };
 
 PointRunPlan make_plan(const SweepCommandOptions& o) {
@@ -86,6 +88,9 @@ int run_sweep(const SweepCommandOptions& o) {
     run.resume = o.resume;
     run.retry_failed = o.retry_failed;
     run.threads = o.threads;
+    run.progress = o.progress;
+    run.what = "sweep";
+    run.unit = "points";
     return run_points_on_ranks(
         run, [&] { return make_plan(o); },
         [&](const PointRunPlan& plan, SweepStore& store, const SweepRunInfo& info) {
@@ -130,10 +135,10 @@ CommandBody add_sweep_command(CLI::App& app) {
                     "Print the result columns of an analysis with their units and meanings, and exit")
         ->check(CLI::IsMember({"simulate", "modes", "pullin", "stiction", "air-q"}))
         ->type_name("ANALYSIS");
-    sub->add_option("--modes", opt->modes, "Bending modes per point of a modes sweep")
-        ->check(CLI::Range(1, 100))
-        ->capture_default_str();
-    add_support_model_option(*sub, opt->support_model);
+    CLI::Option* modes = sub->add_option("--modes", opt->modes, "Bending modes per point of a modes sweep")
+                             ->check(CLI::Range(1, 100))
+                             ->capture_default_str();
+    CLI::Option* support_model = add_support_model_option(*sub, opt->support_model);
     sub->add_option("--out,-o", opt->out_dir,
                     "Folder for sweep.csv and sweep.json, and for the journal of finished points (otherwise the CSV "
                     "goes to stdout and an interrupted sweep is lost)");
@@ -150,11 +155,20 @@ CommandBody add_sweep_command(CLI::App& app) {
                     "quota; under MPI, shared among the ranks that may use the same CPUs)")
         ->check(CLI::Range(0, 4096))
         ->capture_default_str();
+    add_progress_options(*sub, opt->progress);
     sub->footer(paths_help());
-    return [opt]() {
+    return [opt, modes, support_model]() {
         if (!opt->list_columns.empty()) {
             std::fputs(sweep_column_text(parse_sweep_analysis(opt->list_columns)).c_str(), stdout);
             return kExitOk;
+        }
+        // Options only a modes sweep uses are refused rather than ignored.
+        if (opt->analysis != "modes") {
+            for (const CLI::Option* o : {modes, support_model}) {
+                if (o->count() > 0) {
+                    throw InputError(o->get_name() + ": applies to --analysis modes, not to a " + opt->analysis + " sweep");
+                }
+            }
         }
         return run_sweep(*opt);
     };

@@ -19,6 +19,7 @@
 #include "io/text_file.hpp"
 #include "model/input_error.hpp"
 #include "point_runs.hpp"
+#include "progress.hpp"
 #include "stop_signals.hpp"
 #include "study/analyses/sweep_analyses.hpp"
 #include "support_model_option.hpp"
@@ -46,6 +47,7 @@ struct UqCommandOptions {
     bool resume = false, retry_failed = false, json = false;
     double point_timeout = 60.0;
     int threads = 0;
+    ProgressSettings progress;
 };
 
 SamplingMethod method_of(const std::string& m) {
@@ -200,6 +202,9 @@ int run_uq(const UqCommandOptions& o) {
     run.resume = o.resume;
     run.retry_failed = o.retry_failed;
     run.threads = o.threads;
+    run.progress = o.progress;
+    run.what = "uq";
+    run.unit = "runs";
     UqPlan uq;
     return run_points_on_ranks(
         run, [&] { return make_plan(o, uq); },
@@ -257,6 +262,7 @@ CommandBody add_uq_command(CLI::App& app) {
                     "repeat for more")
         ->allow_extra_args(false);
     sub->add_option("--gnuplot", opt->gnuplot, "gnuplot executable (name on PATH or path)")->capture_default_str();
+    add_progress_options(*sub, opt->progress);
     sub->footer("See docs/uq.md for the estimators, their intervals and how many samples a confidence needs.");
     return [opt]() { return run_uq(*opt); };
 }

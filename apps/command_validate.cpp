@@ -9,6 +9,7 @@
 
 #include "validation/report.hpp"
 #include "commands.hpp"
+#include "progress.hpp"
 #include "io/case_reader.hpp"
 #include "model/input_error.hpp"
 #include "io/output_files.hpp"
@@ -25,6 +26,7 @@ CommandBody add_validate_command(CLI::App& app) {
         bool quiet = false;
         int threads = 0;
         std::string example = "examples/paper/free_impact_tip.toml";
+        ProgressSettings progress;
     };
     auto opt = std::make_shared<ValidateCommandOptions>();
     CLI::App* sub = app.add_subcommand(
@@ -34,7 +36,8 @@ CommandBody add_validate_command(CLI::App& app) {
     sub->add_flag("--paper-parameters", opt->paper_parameters,
                   "Write docs/paper-parameters.md instead: the parameters the paper does not give, and the Kc scan");
     sub->add_option("--case", opt->example, "The default example the transient sections run")->capture_default_str();
-    sub->add_flag("--quiet,-q", opt->quiet, "No progress lines on stderr");
+    CLI::Option* quiet = sub->add_flag("--quiet,-q", opt->quiet, "No progress on stderr (--progress none)");
+    quiet->excludes(add_progress_options(*sub, opt->progress));
     sub->add_option("--threads,-j", opt->threads, "Worker threads for the sections (0: every CPU this process may use)")
         ->check(CLI::Range(0, 1024))
         ->capture_default_str();
@@ -51,12 +54,26 @@ CommandBody add_validate_command(CLI::App& app) {
         auto elapsed = [t0]() {
             return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         };
-        if (!opt->quiet) {
-            vo.progress = [elapsed](const std::string& line) {
-                std::fprintf(stderr, "validate: [%6.1f s] %s\n", elapsed(), line.c_str());
-            };
-        }
-        const std::string text = opt->paper_parameters ? paper_parameters_report(vo) : validation_report(vo);
+        // The document's sections counted, and a line after each step that takes noticeable time.
+        Progress sections("validate", "sections", 0, 0, opt->quiet ? ProgressStyle::none : progress_style(opt->progress),
+                          opt->progress.interval_s);
+        vo.progress = [&sections, elapsed](const std::string& line) {
+            char at[32];
+            std::snprintf(at, sizeof at, "[%6.1f s] ", elapsed());
+            sections.say("validate: " + std::string(at) + line);
+        };
+        vo.sections_done = [&sections](std::size_t done, std::size_t total) {
+            if (done == 0) {
+                sections.set_total(total);
+            } else {
+                sections.advance();
+            }
+        };
+        const std::string text = [&] {
+            const ProgressTicker ticker(sections);
+            return opt->paper_parameters ? paper_parameters_report(vo) : validation_report(vo);
+        }();
+        sections.finish();
         // Last chance to stop: from here the document is complete and goes out whole.
         check_run();
         if (opt->out.empty()) {
@@ -67,7 +84,9 @@ CommandBody add_validate_command(CLI::App& app) {
             write_output_files(dir.string(), {{out_path.filename().string(), text}});
             std::printf("Written to %s\n", opt->out.c_str());
         }
-        if (!opt->quiet) std::fprintf(stderr, "validate: done in %.1f s\n", elapsed());
+        char done[64];
+        std::snprintf(done, sizeof done, "validate: done in %.1f s", elapsed());
+        sections.say(done);
         return kExitOk;
     };
 }

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "io/text_file.hpp"
 #include "model/run_control.hpp"
 #include "stop_signals.hpp"
 
@@ -16,12 +17,25 @@ std::string require_gnuplot(const std::string& requested, const std::string& wha
     return *found;
 }
 
-void write_with_figures(const std::string& dir, OutputFiles files, const std::vector<FigureSpec>& figures,
-                        const std::string& gnuplot) {
-    for (auto& [name, text] : figure_files(figures, render_figures(gnuplot, figures, 1))) files[name] = std::move(text);
+std::optional<std::string> write_with_figures(const std::string& dir, OutputFiles files, const std::vector<FigureSpec>& figures,
+                                              const std::string& gnuplot) {
+    std::optional<std::string> failure;
+    try {
+        for (auto& [name, text] : figure_files(figures, render_figures(gnuplot, figures, 1))) files[name] = std::move(text);
+    } catch (const std::runtime_error& e) {
+        // The numbers were computed at a cost a picture must not throw away: they are written
+        // without the images, with each figure's data and script (gnuplot NAME.gp in the folder
+        // draws it), and the caller says what failed.
+        failure = one_line(e.what());
+        for (const FigureSpec& f : figures) {
+            for (const auto& [name, text] : f.data) files[name] = text;
+            files[f.name + ".gp"] = gnuplot_script(f);
+        }
+    }
     check_run();
     const CommitSection commit;
     write_output_files(dir, files);
+    return failure;
 }
 
 }  // namespace vi::cli

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "io/csv_writer.hpp"
+#include "study/run_plots/plot_style.hpp"
 
 namespace vi::cli {
 namespace {
@@ -17,10 +18,18 @@ std::string format(const char* f, double v) {
     return buf;
 }
 
-// "low" or "high" when the estimate sits on a bound (within 1e-6 of the parameter's scale), else "".
+// Whether x lies on `bound`: within 1e-6 of the parameter's scale and within 1e-6 of the values'
+// own size. The second keeps a wide range (10:1e10, a scale of 1e10) from calling an estimate of
+// 1000 "on its lower bound" 10; Ceres puts an estimate it holds at a bound exactly on it.
+bool on_bound(const FitParameter& p, double x, double bound) {
+    const double gap = std::abs(x - bound);
+    return gap <= 1e-6 * p.scale() && gap <= 1e-6 * std::max(std::abs(x), std::abs(bound));
+}
+
+// "low" or "high" when the estimate sits on a bound, else "".
 std::string at_bound(const FitParameter& p, double x) {
-    if (p.low && std::abs(x - *p.low) <= 1e-6 * p.scale()) return "low";
-    if (p.high && std::abs(x - *p.high) <= 1e-6 * p.scale()) return "high";
+    if (p.low && on_bound(p, x, *p.low)) return "low";
+    if (p.high && on_bound(p, x, *p.high)) return "high";
     return "";
 }
 
@@ -116,7 +125,19 @@ FigureSpec trajectory_figure(const MeasuredTrajectory& data, const FitResult& r)
     f.name = "fit";
     f.title = "Measured and fitted " + data.column;
     f.caption = "The data (points) and the fitted model (line) against time, and the residual (model - data) below.";
-    f.data = {{"fit.csv", trajectory_residuals_csv(data, r)}};
+    // A long record is drawn from the samples that shape it (plot's thinning: in each slice the
+    // first, the last and each column's extremes), so a million samples make a figure gnuplot draws
+    // in seconds and the tool can read back; fit_residuals.csv keeps every sample.
+    const std::vector<std::size_t> rows = rows_to_draw({&data.value, &r.model, &r.residual}, data.t.size());
+    CsvTable t;
+    t.header = {"t_s", "data_" + data.column, "model_" + data.column, "residual_" + data.column};
+    for (std::size_t k : rows) t.add_row({data.t[k], data.value[k], r.model[k], r.residual[k]});
+    if (rows.size() < data.t.size()) {
+        f.caption += " Drawn from " + std::to_string(rows.size()) + " of the " + std::to_string(data.t.size()) +
+                     " samples (in each slice of the record the first, the last and each column's extremes); "
+                     "fit_residuals.csv holds them all.";
+    }
+    f.data = {{"fit.csv", t.str()}};
     f.height = 800;
     f.plot = "set datafile separator ','\nset multiplot layout 2,1\nset key top right\nset xlabel 't [us]'\nset ylabel " +
              gp_quote(data.column) + " noenhanced\nplot 'fit.csv' using ($1*1e6):2 every ::1 with points pt 7 ps 0.4 title 'data', "

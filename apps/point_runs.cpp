@@ -4,6 +4,7 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -14,7 +15,6 @@
 #include "model/run_control.hpp"
 #include "stop_signals.hpp"
 #include "sweep/ranks.hpp"
-#include "sweep_progress.hpp"
 
 #ifdef VI_HAVE_MPI
 #include "sweep/mpi.hpp"
@@ -105,7 +105,11 @@ int run_points_on_ranks(const PointRunOptions& o, const std::function<PointRunPl
     std::string message;
 
     PointRunPlan plan;
-    int code = attempt([&] { plan = make_plan(); }, message);
+    ProgressStyle style = ProgressStyle::none;
+    int code = attempt([&] {
+        style = progress_style(o.progress);
+        plan = make_plan();
+    }, message);
     if ((code = agree(*ranks, code, message)) != kExitOk) return code;
 
     std::optional<SweepStore> store;
@@ -121,7 +125,9 @@ int run_points_on_ranks(const PointRunOptions& o, const std::function<PointRunPl
     const int threads = worker_threads(o, *ranks);
     const std::size_t result_columns = plan.columns.size();
 
-    SweepProgress progress(plan.grid.size(), root ? store->done() : 0, root && stderr_is_terminal());
+    // Only the root reports: the other ranks' points reach it as they finish.
+    Progress progress(o.what, o.unit, plan.grid.size(), root ? store->done() : 0, root ? style : ProgressStyle::none,
+                      o.progress.interval_s);
     RunningPoints running;
     const LocalRun local = [&](const PointSink& emit, const std::atomic<bool>& stop) {
         run_sweep_points(
@@ -131,13 +137,19 @@ int run_points_on_ranks(const PointRunOptions& o, const std::function<PointRunPl
     };
     const PointSink sink = [&](const FinishedPoint& p) {
         store->add(p);
-        progress.point_done();
+        progress.advance();
     };
 
     const auto t0 = std::chrono::steady_clock::now();
     {
         // The line keeps moving while a point is slow: redrawn twice a second with the slowest point.
-        const ProgressTicker ticker(progress, running);
+        const ProgressTicker ticker(progress, [&] {
+            const auto [index, seconds] = running.slowest();
+            // A point is named once it has run 2 s: the usual points pass too fast to be worth it.
+            progress.set_note(index != SIZE_MAX && seconds >= 2.0
+                                  ? "slowest: point " + std::to_string(index) + ", " + duration_text(seconds) + " running"
+                                  : "");
+        });
         code = attempt([&] { ranks->collect(local, sink, stop_flag()); }, message);
     }
     progress.finish();

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "model/case.hpp"
+#include "progress.hpp"
 #include "sweep/columns.hpp"
 #include "sweep/grid.hpp"
 #include "sweep/runner.hpp"
@@ -31,6 +32,9 @@ struct PointRunOptions {
     bool resume = false;
     bool retry_failed = false;
     int threads = 0;      // per process; 0: the CPUs this process may use, shared among ranks
+    ProgressSettings progress;    // --progress, --progress-interval
+    std::string what = "sweep";   // the command, as the progress report names it
+    std::string unit = "points";  // what it counts
 };
 
 // The root's last step with the store of every row (complete, or not when the run was stopped) and
@@ -38,8 +42,9 @@ struct PointRunOptions {
 using FinishOnRoot = std::function<int(const PointRunPlan& plan, SweepStore& store, const SweepRunInfo& info)>;
 
 // Starts the ranks (MPI under a launcher), makes the plan on every rank (make_plan may throw
-// InputError: exit 2 on every rank, printed once), opens the store on the root, computes every
-// point not done yet with a progress line, then calls finish on the root. Every rank returns the
+// InputError: exit 2 on every rank, printed once; so may a bad --progress), opens the store on the
+// root, computes every point not done yet with the root's progress report, then calls finish on
+// the root. Every rank returns the
 // root's exit code.
 int run_points_on_ranks(const PointRunOptions& o, const std::function<PointRunPlan()>& make_plan,
                         const FinishOnRoot& finish);

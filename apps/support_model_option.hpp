@@ -8,8 +8,8 @@
 
 namespace vi::cli {
 
-inline void add_support_model_option(CLI::App& sub, std::string& value) {
-    sub.add_option("--support-model", value, "How supports act in the supported modes: pin or spring (Kc)")
+inline CLI::Option* add_support_model_option(CLI::App& sub, std::string& value) {
+    return sub.add_option("--support-model", value, "How supports act in the supported modes: pin or spring (Kc)")
         ->check(CLI::IsMember({"pin", "spring"}));
 }
 

@@ -201,7 +201,7 @@ TEST_F(StopCli, PaperStopsDuringItsStudyAndLeavesAnEarlierOutputAlone) {
     const std::string out = dir_ + "/paper";
     fs::create_directories(out);
     write_text(out + "/report.html", "earlier\n");
-    test::ChildProcess child(command({"paper", "--out", out, "--positions", "400"}));
+    test::ChildProcess child(command({"paper", "--out", out, "--positions", "400", "--progress", "lines"}));
     const std::string err = child.stderr_path();
     const CommandResult r =
         stop_when(child, [&] { return read_text(err).find("paper: [") != std::string::npos; }, SIGTERM);
@@ -220,7 +220,7 @@ TEST_F(StopCli, ValidateStopsInAnySectionAndWritesNoDocument) {
                                        {SIGINT, "section 9:"}, {SIGTERM, "section 6: CVODE undamped"}}) {
         SCOPED_TRACE(section);
         const std::string out = dir_ + "/validation.md";
-        test::ChildProcess child(command({"validate", "--quick", "--case", example, "--out", out}));
+        test::ChildProcess child(command({"validate", "--quick", "--case", example, "--out", out, "--progress", "lines"}));
         const std::string err = child.stderr_path();
         const CommandResult r =
             stop_when(child, [&] { return read_text(err).find(section) != std::string::npos; }, sig);

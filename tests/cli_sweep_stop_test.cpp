@@ -316,12 +316,45 @@ TEST_F(SweepStop, PointTimeoutMarksTheSlowPointAndTheSweepGoesOn) {
     // Every result the point did not reach is the missing-value marker.
     std::string missing;
     for (std::size_t k = 2; k < cell_count(csv_header()); ++k) missing += ",nan";
-    EXPECT_EQ(lines[kSlow + 1], value + missing + ",timeout: more than 0.5 s of wall time (raise --point-timeout)")
-        << lines[kSlow + 1];
+    // The status says what the point was doing: where the exact solver had got to, its last piece
+    // and the closest contact gap (no comma: the cell needs no quotes).
+    const std::string timed_out = value + missing + ",timeout: more than 0.5 s of wall time (raise --point-timeout); "
+                                                    "the exact solver had reached t = ";
+    EXPECT_EQ(lines[kSlow + 1].substr(0, timed_out.size()), timed_out) << lines[kSlow + 1];
+    EXPECT_NE(lines[kSlow + 1].find(" s of 0.1 s in "), std::string::npos) << lines[kSlow + 1];
+    EXPECT_NE(lines[kSlow + 1].find(" pieces; last piece "), std::string::npos) << lines[kSlow + 1];
+    EXPECT_NE(lines[kSlow + 1].find("; closest contact gap "), std::string::npos) << lines[kSlow + 1];
     const json summary = json::parse(read_text(out_ + "/sweep.json"));
     EXPECT_EQ(summary["failed"], 1);
     ASSERT_EQ(summary["failures"].size(), 1u);
     EXPECT_EQ(summary["failures"][0]["index"], kSlow);
+}
+
+// The same slow point integrated by CVODE: its timeout says the time CVODE had reached, its steps,
+// its last step and the closest contact gap.
+TEST_F(SweepStop, PointTimeoutInCvodeSaysWhereTheIntegratorWas) {
+    std::string text = read_text(*case_);
+    const std::string method = "method = \"exact\"";
+    const auto at = text.find(method);
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, method.size(), "method = \"cvode\"");
+    // CVODE's sweep points keep their samples: one every 1 us over 0.1 s stays within the history's limit.
+    const std::string step = "output_step = \"10 ns\"";
+    ASSERT_NE(text.find(step), std::string::npos);
+    text.replace(text.find(step), step.size(), "output_step = \"1 us\"");
+    write_text(*dir_ + "/undamped_cvode.toml", text);
+    const CommandResult r = test::run_vibroimpact({"sweep", *dir_ + "/undamped_cvode.toml", "--set", "solver.horizon=0.1",
+                                                   "--point-timeout", "0.5", "--threads", "1"});
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const auto lines = lines_of(r.out);
+    ASSERT_EQ(lines.size(), 2u) << r.out;
+    const std::string status = lines[1].substr(lines[1].find(",timeout: ") + 1);
+    std::printf("%s\n", status.c_str());
+    EXPECT_EQ(status.rfind("timeout: more than 0.5 s of wall time (raise --point-timeout); CVODE had reached t = ", 0), 0u)
+        << status;
+    EXPECT_NE(status.find(" s of 0.1 s in "), std::string::npos) << status;
+    EXPECT_NE(status.find(" steps; last step "), std::string::npos) << status;
+    EXPECT_NE(status.find("; closest contact gap "), std::string::npos) << status;
 }
 
 // A journal whose slow point timed out: --resume keeps it as it is and computes only the points

@@ -11,6 +11,7 @@
 #include "impacts/simulation.hpp"
 #include "model/case_checks.hpp"
 #include "model/input_error.hpp"
+#include "model/number_format.hpp"
 #include "sweep/case_paths.hpp"
 #include "sweep/columns.hpp"
 
@@ -132,8 +133,9 @@ FitResult fit_features(const Case& base, const std::vector<FitParameter>& params
     }
     std::vector<double> x0;
     for (const FitParameter& p : params) x0.push_back(p.start);
+    std::vector<double> m0;
     try {
-        (void)model_features(base, params, x0, data);
+        m0 = model_features(base, params, x0, data);
     } catch (const FeatureMissing& e) {
         const std::string what = e.what();
         std::size_t line = 0;
@@ -141,6 +143,16 @@ FitResult fit_features(const Case& base, const std::vector<FitParameter>& params
             if (what.rfind(f.name + ":", 0) == 0) line = f.line;
         }
         throw InputError(data.file + ":" + std::to_string(line) + ": " + what + " (at the case's values, the start)");
+    }
+    // A misfit that squares past double's range (a sigma in the wrong unit) would reach Ceres as an
+    // infinite cost: refused at the start, naming the feature.
+    std::vector<double> w;
+    for (std::size_t k = 0; k < m0.size(); ++k) w.push_back((m0[k] - data.features[k].value) / data.features[k].sigma);
+    if (const std::size_t k = overflowing_residual(w); k < w.size()) {
+        const MeasuredFeature& f = data.features[k];
+        throw InputError(data.file + ":" + std::to_string(f.line) + ": " + f.name + ": (model - value) / sigma = " +
+                         significant(w[k], 3) + " at the start values: the misfit's sum of squares is not a finite "
+                         "number in double precision; check the value's unit and its sigma");
     }
     LeastSquaresProblem p;
     p.params = params;

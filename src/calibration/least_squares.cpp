@@ -1,10 +1,13 @@
 #include "calibration/least_squares.hpp"
 
 #include <ceres/ceres.h>
+#include <glog/logging.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
+#include <mutex>
 #include <numeric>
 #include <stdexcept>
 
@@ -13,6 +16,21 @@
 
 namespace vi {
 namespace {
+
+// Ceres logs through glog, which writes every warning to stderr before InitGoogleLogging ("Logging
+// before InitGoogleLogging() is written to STDERR", then a residual block's whole dump) and to
+// files under /tmp after it. The fit reports its own outcome in one line, so glog is initialised
+// here with everything below FATAL dropped and to stderr only (no log files). Someone who wants
+// Ceres' log asks glog for it through its own environment variables (GLOG_minloglevel=0
+// GLOG_logtostderr=1 ...): a variable that is set is left as it is.
+void quiet_solver_logging() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        if (!google::IsGoogleLoggingInitialized()) google::InitGoogleLogging("vibroimpact");
+        if (std::getenv("GLOG_minloglevel") == nullptr) FLAGS_minloglevel = google::GLOG_FATAL;
+        if (std::getenv("GLOG_logtostderr") == nullptr && std::getenv("GLOG_log_dir") == nullptr) FLAGS_logtostderr = true;
+    });
+}
 
 // The residuals for Ceres, in scaled parameters z (x = z * scale).
 class Residual {
@@ -26,7 +44,9 @@ public:
         ++calls_;
         try {
             p_.evaluate(x, r);
-            return true;
+            // A residual that is not a finite number is a design the model cannot answer for: a
+            // failed step, said here rather than by Ceres (which would dump the block to its log).
+            return std::all_of(r, r + p_.residuals, [](double v) { return std::isfinite(v); });
         } catch (const StopRequested&) {
             stopped_ = true;  // Ceres is told by the iteration callback; nothing may unwind through it
             return false;
@@ -44,15 +64,24 @@ private:
     mutable int calls_ = 0;
 };
 
+// Ends the solve on a stop, and counts the iterations to the fit's progress (Ceres reports the
+// start's evaluation as iteration 0: not one of the budget's).
 class StopCallback final : public ceres::IterationCallback {
 public:
-    explicit StopCallback(const Residual& r) : r_(r) {}
-    ceres::CallbackReturnType operator()(const ceres::IterationSummary&) override {
+    StopCallback(const Residual& r, const std::function<void(int, int)>& progress) : r_(r), progress_(progress) {}
+    ceres::CallbackReturnType operator()(const ceres::IterationSummary& it) override {
+        if (it.iteration > 0 && progress_) {
+            ++counted_;
+            progress_(1, 0);
+        }
         return r_.stopped() || stop_flag().load() ? ceres::SOLVER_ABORT : ceres::SOLVER_CONTINUE;
     }
+    [[nodiscard]] int counted() const { return counted_; }
 
 private:
     const Residual& r_;
+    const std::function<void(int, int)>& progress_;
+    int counted_ = 0;
 };
 
 // A Ceres problem over z with p's residuals (central differences) and bounds; the cost function is
@@ -63,6 +92,7 @@ struct CeresSetup {
 };
 
 void set_up(CeresSetup& s, const LeastSquaresProblem& p, std::vector<double>& z) {
+    quiet_solver_logging();
     const int n = static_cast<int>(p.params.size());
     s.residual = new Residual(p);
     auto* cost = new ceres::DynamicNumericDiffCostFunction<Residual, ceres::CENTRAL>(s.residual, ceres::TAKE_OWNERSHIP);
@@ -76,13 +106,14 @@ void set_up(CeresSetup& s, const LeastSquaresProblem& p, std::vector<double>& z)
     }
 }
 
-StartRun solve_from(const LeastSquaresProblem& p, const std::vector<double>& start, int max_iterations) {
+StartRun solve_from(const LeastSquaresProblem& p, const std::vector<double>& start, int max_iterations,
+                    const std::function<void(int, int)>& progress) {
     const std::size_t n = p.params.size();
     std::vector<double> z(n);
     for (std::size_t i = 0; i < n; ++i) z[i] = start[i] / p.params[i].scale();
     CeresSetup s;
     set_up(s, p, z);
-    StopCallback stop(*s.residual);
+    StopCallback stop(*s.residual, progress);
     ceres::Solver::Options so;
     so.linear_solver_type = ceres::DENSE_QR;
     so.max_num_iterations = max_iterations;
@@ -99,6 +130,7 @@ StartRun solve_from(const LeastSquaresProblem& p, const std::vector<double>& sta
     ceres::Solver::Summary summary;
     ceres::Solve(so, &s.problem, &summary);
     if (s.residual->stopped() || stop_flag().load()) throw StopRequested(stop_signal());
+    if (progress && max_iterations > stop.counted()) progress(0, max_iterations - stop.counted());
     StartRun run;
     run.start = start;
     run.converged = summary.termination_type == ceres::CONVERGENCE;
@@ -181,27 +213,18 @@ Eigen::MatrixXd scaled_jacobian(const LeastSquaresProblem& p, const std::vector<
     return J;
 }
 
-// The estimate's uncertainty from the Jacobian there.
-void add_uncertainty(const LeastSquaresProblem& p, FitResult& r) {
-    const int n = static_cast<int>(p.params.size());
-    const int samples = p.residuals;
-    std::vector<double> res;
-    const Eigen::MatrixXd J = scaled_jacobian(p, r.estimate, res, r.simulations);
-    r.cost = 0.0;
-    for (double v : res) r.cost += 0.5 * v * v;
-    double ssr_scaled = 0.0;
-    for (double v : res) ssr_scaled += v * v;
-    // The covariance s2 (J^T J)^-1 does not depend on how the residuals were scaled.
-    const double s2 = p.sigma_known ? 1.0 : ssr_scaled / std::max(1, samples - n);
+const char* const kTooWeakly = "the data fix it too weakly (a singular value below 1e-3 of the largest)";
 
-    // Undetermined parameters: the directions of J (in parameters scaled to their range or start)
-    // whose singular value is below 1e-3 of the largest (or that J does not reach: fewer residuals
-    // than parameters), and the parameters that take part in them. Not roundoff: the Jacobian comes
-    // from central differences of simulations whose trajectories carry a relative noise near 1e-10
-    // (the modes are recomputed for every stiffness), so an exact trade-off (E and nu through
-    // E / (1 - nu^2)) shows up near 1e-4 (measured), never at 1e-16; the determined ones of the
-    // tests lie above 2e-2.
-    r.undetermined.assign(static_cast<std::size_t>(n), "");
+// Why the data cannot fix each parameter ("" when they can): the directions of J (in parameters
+// scaled to their range or start) whose singular value is below 1e-3 of the largest (or that J does
+// not reach: fewer residuals than parameters), and the parameters that take part in them. Not
+// roundoff: the Jacobian comes from central differences of simulations whose trajectories carry a
+// relative noise near 1e-10 (the modes are recomputed for every stiffness), so an exact trade-off (E
+// and nu through E / (1 - nu^2)) shows up near 1e-4 (measured), never at 1e-16; the determined ones of
+// the tests lie above 2e-2.
+std::vector<std::string> undetermined_by(const Eigen::MatrixXd& J, const std::vector<FitParameter>& params) {
+    const int n = static_cast<int>(params.size());
+    std::vector<std::string> out(static_cast<std::size_t>(n));
     const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
     const Eigen::VectorXd sv = svd.singularValues();
     const double top = sv.size() > 0 ? sv[0] : 0.0;
@@ -215,25 +238,86 @@ void add_uncertainty(const LeastSquaresProblem& p, FitResult& r) {
             if (why != "the data do not depend on it") {
                 std::string with;
                 for (int k = 0; k < n; ++k) {
-                    if (k != i && std::abs(svd.matrixV()(k, j)) >= 0.1) with.append(" ").append(p.params[static_cast<std::size_t>(k)].name());
+                    if (k != i && std::abs(svd.matrixV()(k, j)) >= 0.1) with.append(" ").append(params[static_cast<std::size_t>(k)].name());
                 }
-                why = with.empty() ? "the data fix it too weakly (a singular value below 1e-3 of the largest)" : why + with;
+                why = with.empty() ? kTooWeakly : why + with;
             }
-            std::string& slot = r.undetermined[static_cast<std::size_t>(i)];
-            if (slot.empty() || slot == "the data fix it too weakly (a singular value below 1e-3 of the largest)") slot = why;
+            std::string& slot = out[static_cast<std::size_t>(i)];
+            if (slot.empty() || slot == kTooWeakly) slot = why;
         }
     }
-    std::vector<int> kept;
-    for (int i = 0; i < n; ++i) {
-        if (r.undetermined[static_cast<std::size_t>(i)].empty()) kept.push_back(i);
+    return out;
+}
+
+const char* const kNotFinite = "the residuals or their Jacobian at the estimate are not finite numbers";
+const char* const kNoNoiseEstimate =
+    "the residuals are zero to double precision, so they estimate no noise level and no uncertainty (a sigma column "
+    "in the data gives one)";
+const char* const kVarianceNotFinite =
+    "its variance is not a finite positive number in double precision (the data's dependence on it underflows or "
+    "overflows)";
+
+// The covariance s2 (Jk^T Jk)^-1 of the parameters still determined (r.undetermined empty), in
+// scaled parameters; their indices in `kept`. A variance that comes out not finite or not positive
+// (a Jacobian column that underflows: J^T J rounds to zero), with s2 > 0, is no uncertainty: that
+// parameter is marked undetermined and the rest computed again (at most once per parameter).
+Eigen::MatrixXd determined_covariance(const Eigen::MatrixXd& J, double s2, FitResult& r, std::vector<int>& kept) {
+    const int n = static_cast<int>(J.cols());
+    for (int round = 0; round <= n; ++round) {
+        kept.clear();
+        for (int i = 0; i < n; ++i) {
+            if (r.undetermined[static_cast<std::size_t>(i)].empty()) kept.push_back(i);
+        }
+        const int m = static_cast<int>(kept.size());
+        Eigen::MatrixXd Jk(J.rows(), m);
+        for (int a = 0; a < m; ++a) Jk.col(a) = J.col(kept[static_cast<std::size_t>(a)]);
+        const Eigen::MatrixXd cov = s2 * (Jk.transpose() * Jk).ldlt().solve(Eigen::MatrixXd::Identity(m, m));
+        int bad = -1;
+        for (int a = 0; a < m && bad < 0; ++a) {
+            const double v = cov(a, a);
+            if (!std::isfinite(v) || !(v > 0.0)) bad = a;
+        }
+        if (bad < 0) return cov;
+        r.undetermined[static_cast<std::size_t>(kept[static_cast<std::size_t>(bad)])] = kVarianceNotFinite;
     }
-    const int m = static_cast<int>(kept.size());
-    Eigen::MatrixXd Jk(samples, m);
-    for (int a = 0; a < m; ++a) Jk.col(a) = J.col(kept[static_cast<std::size_t>(a)]);
-    const Eigen::MatrixXd cov = s2 * (Jk.transpose() * Jk).ldlt().solve(Eigen::MatrixXd::Identity(m, m));
+    kept.clear();
+    return Eigen::MatrixXd(0, 0);
+}
+
+// The estimate's uncertainty from the Jacobian there.
+void add_uncertainty(const LeastSquaresProblem& p, FitResult& r) {
+    const int n = static_cast<int>(p.params.size());
+    const int samples = p.residuals;
+    std::vector<double> res;
+    const Eigen::MatrixXd J = scaled_jacobian(p, r.estimate, res, r.simulations);
+    r.cost = 0.0;
+    for (double v : res) r.cost += 0.5 * v * v;
     const double nan = std::numeric_limits<double>::quiet_NaN();
     r.std_error.assign(static_cast<std::size_t>(n), nan);
     r.correlation = Eigen::MatrixXd::Constant(n, n, nan);
+    r.ci_low.assign(static_cast<std::size_t>(n), nan);
+    r.ci_high.assign(static_cast<std::size_t>(n), nan);
+    if (!J.allFinite() || !std::isfinite(r.cost)) {
+        // Nothing can be said about any parameter: the fit reports that, never an interval.
+        r.undetermined.assign(static_cast<std::size_t>(n), kNotFinite);
+        r.converged = false;
+        r.message = std::string(kNotFinite) + ", so no parameter's uncertainty can be given";
+        return;
+    }
+    // The covariance s2 (J^T J)^-1 does not depend on how the residuals were scaled.
+    double ssr_scaled = 0.0;
+    for (double v : res) ssr_scaled += v * v;
+    const double s2 = p.sigma_known ? 1.0 : ssr_scaled / std::max(1, samples - n);
+    if (!(s2 >= std::numeric_limits<double>::min())) {
+        // Residuals that vanish (or underflow) estimate no noise: a zero interval would claim a
+        // perfect estimate the data cannot give.
+        r.undetermined.assign(static_cast<std::size_t>(n), kNoNoiseEstimate);
+        return;
+    }
+    r.undetermined = undetermined_by(J, p.params);
+    std::vector<int> kept;
+    const Eigen::MatrixXd cov = determined_covariance(J, s2, r, kept);
+    const int m = static_cast<int>(kept.size());
     for (int a = 0; a < m; ++a) {
         const int i = kept[static_cast<std::size_t>(a)];
         r.std_error[static_cast<std::size_t>(i)] = std::sqrt(cov(a, a)) * p.params[static_cast<std::size_t>(i)].scale();
@@ -241,12 +325,10 @@ void add_uncertainty(const LeastSquaresProblem& p, FitResult& r) {
             r.correlation(i, kept[static_cast<std::size_t>(b)]) = cov(a, b) / std::sqrt(cov(a, a) * cov(b, b));
         }
     }
-    r.ci_low.clear();
-    r.ci_high.clear();
     for (int i = 0; i < n; ++i) {
         const std::size_t u = static_cast<std::size_t>(i);
-        r.ci_low.push_back(r.estimate[u] - 1.96 * r.std_error[u]);
-        r.ci_high.push_back(r.estimate[u] + 1.96 * r.std_error[u]);
+        r.ci_low[u] = r.estimate[u] - 1.96 * r.std_error[u];
+        r.ci_high[u] = r.estimate[u] + 1.96 * r.std_error[u];
     }
 }
 
@@ -257,6 +339,16 @@ Eigen::MatrixXd jacobian_at(const LeastSquaresProblem& p, const std::vector<doub
     Eigen::MatrixXd J = scaled_jacobian(p, x, res, calls);
     for (std::size_t i = 0; i < p.params.size(); ++i) J.col(static_cast<Eigen::Index>(i)) /= p.params[i].scale();
     return J;
+}
+
+std::size_t overflowing_residual(const std::vector<double>& weighted) {
+    double sum = 0.0;
+    std::size_t largest = 0;
+    for (std::size_t k = 0; k < weighted.size(); ++k) {
+        sum += weighted[k] * weighted[k];
+        if (!(std::abs(weighted[k]) <= std::abs(weighted[largest]))) largest = k;
+    }
+    return std::isfinite(sum) ? weighted.size() : largest;
 }
 
 Eigen::MatrixXd covariance(const FitResult& r) {
@@ -317,7 +409,7 @@ FitResult fit_least_squares(const LeastSquaresProblem& p, const FitOptions& o) {
     const std::vector<std::vector<double>> starts = start_points(p.params, std::max(1, o.starts));
     std::vector<StartRun> runs(starts.size());
     parallel_for(starts.size(), starts.size() == 1 ? 1 : o.threads,
-                 [&](std::size_t k) { runs[k] = solve_from(p, starts[k], o.max_iterations); });
+                 [&](std::size_t k) { runs[k] = solve_from(p, starts[k], o.max_iterations, o.progress); });
     if (stop_flag().load()) throw StopRequested(stop_signal());
     std::size_t best = 0;
     for (std::size_t k = 1; k < runs.size(); ++k) {

@@ -30,6 +30,10 @@ struct FitOptions {
     int max_iterations = 50;   // Levenberg-Marquardt iterations per start (--max-iterations)
     int starts = 1;            // starting points (--starts): the case's values first
     int threads = 0;           // threads for the starts (--threads); 0: the CPUs the process may use
+    // Sees the work as it goes, in iterations of the budget starts x max_iterations: (1, 0) after
+    // each iteration of a start, and (0, the rest of its share) when a start ends sooner. Called from
+    // the starts' threads, possibly at once.
+    std::function<void(int iterations, int unused)> progress;
 };
 
 // One local solve from one start.
@@ -78,6 +82,11 @@ FitResult fit_least_squares(const LeastSquaresProblem& p, const FitOptions& o);
 // The Jacobian d r / d x of p's residuals at x [residual unit / SI] by central differences; adds the
 // model runs to `calls`. Throws std::runtime_error when a difference step cannot run.
 Eigen::MatrixXd jacobian_at(const LeastSquaresProblem& p, const std::vector<double>& x, int& calls);
+
+// The index of the weighted residual (model - data) / sigma with the largest magnitude when their
+// sum of squares is not a finite number (the misfit overflows double precision, or a residual is
+// not finite), else weighted.size(). A fit checks its start with it before Ceres sees the problem.
+std::size_t overflowing_residual(const std::vector<double>& weighted);
 
 // The covariance of r's estimate [SI^2] from its standard errors and correlations (NaN for the
 // undetermined parameters), and back: set_covariance replaces the standard errors, intervals and

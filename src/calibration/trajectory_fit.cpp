@@ -7,7 +7,9 @@
 #include "dynamics/transient_start.hpp"
 #include "impacts/simulation.hpp"
 #include "model/case_checks.hpp"
+#include "io/text_file.hpp"
 #include "model/input_error.hpp"
+#include "model/number_format.hpp"
 
 namespace vi {
 namespace {
@@ -48,14 +50,19 @@ double lowest_shift(const std::vector<FitParameter>& params, const TrajectoryFix
     return low;
 }
 
-// The least-squares problem of a trajectory: residual (model - data) / sigma_k, or / max |data|
-// without a sigma column (Ceres' tolerances are absolute, and a record in metres, 1e-6, would look
-// converged at the start).
-LeastSquaresProblem trajectory_problem(const Case& base, const std::vector<FitParameter>& params,
-                                       const MeasuredTrajectory& data, const TrajectoryFixed& fixed) {
+// What a residual is divided by without a sigma column: max |data| (Ceres' tolerances are absolute,
+// and a record in metres, 1e-6, would look converged at the start).
+double residual_unit(const MeasuredTrajectory& data) {
     double unit = 0.0;
     for (double v : data.value) unit = std::max(unit, std::abs(v));
-    if (!(unit > 0.0)) unit = 1.0;
+    return unit > 0.0 ? unit : 1.0;
+}
+
+// The least-squares problem of a trajectory: residual (model - data) / sigma_k, or / max |data|
+// without a sigma column.
+LeastSquaresProblem trajectory_problem(const Case& base, const std::vector<FitParameter>& params,
+                                       const MeasuredTrajectory& data, const TrajectoryFixed& fixed) {
+    const double unit = residual_unit(data);
     LeastSquaresProblem p;
     p.params = params;
     p.residuals = static_cast<int>(data.t.size());
@@ -65,6 +72,65 @@ LeastSquaresProblem trajectory_problem(const Case& base, const std::vector<FitPa
         for (std::size_t k = 0; k < m.size(); ++k) r[k] = (m[k] - data.value[k]) / (data.sigma.empty() ? unit : data.sigma[k]);
     };
     return p;
+}
+
+// "FILE:LINE" of a sample (the file alone when the lines are not known: data made in code).
+std::string sample_place(const MeasuredTrajectory& data, std::size_t k) {
+    return k < data.line.size() ? data.file + ":" + std::to_string(data.line[k]) : data.file;
+}
+
+// The trajectory model sets two solver settings itself: the horizon always (the last data time less
+// the lowest allowed time shift) and the output step when the case gives none that fits (the data's
+// smallest spacing). A case check that refuses one of them is about the data, not about a line of
+// the case file: the message names the data file, the sample that sets it and the value derived.
+InputError blame_derived_setting(const InputError& e, const Case& base, const std::vector<FitParameter>& params,
+                                 const MeasuredTrajectory& data, const TrajectoryFixed& fixed) {
+    const std::string what = e.what();
+    const double low = lowest_shift(params, fixed, fixed.time_shift);
+    const double horizon = std::max(fixed.min_horizon, data.t.back() - low);
+    const bool step_derived = base.solver.output_step <= 0.0 || base.solver.output_step > horizon;
+    const std::string shifted = low < 0.0 ? " less the lowest allowed time shift, " + significant(low, 6) + " s" : "";
+    if (what.rfind("solver.horizon: ", 0) == 0) {
+        return InputError(one_line(sample_place(data, data.t.size() - 1) + ": t_s: the record's last time, " +
+                                   significant(data.t.back(), 6) + " s" + shifted + ", makes the model's horizon " +
+                                   significant(horizon, 6) + " s: " + what.substr(16)));
+    }
+    if (what.rfind("solver.output_step: ", 0) == 0 && step_derived) {
+        std::size_t at = 1;
+        for (std::size_t k = 2; k < data.t.size(); ++k) {
+            if (data.t[k] - data.t[k - 1] < data.t[at] - data.t[at - 1]) at = k;
+        }
+        const double spacing = data.t.size() > 1 ? data.t[at] - data.t[at - 1] : horizon;
+        return InputError(one_line(sample_place(data, std::min(at, data.t.size() - 1)) +
+                                   ": t_s: the samples' smallest spacing, " + significant(spacing, 6) +
+                                   " s, is the model's output step (the case gives none): " + what.substr(20)));
+    }
+    return e;
+}
+
+// The start must run and its misfit must be a number: a case that cannot run is the user's to fix,
+// not Ceres' to step around, and data whose (model - data) / sigma squares past double's range
+// (a sigma in the wrong unit) would reach Ceres as an infinite cost.
+void check_start(const Case& base, const std::vector<FitParameter>& params, const MeasuredTrajectory& data,
+                 const TrajectoryFixed& fixed) {
+    std::vector<double> x0;
+    for (const FitParameter& p : params) x0.push_back(p.start);
+    std::vector<double> m0;
+    try {
+        m0 = model_trajectory(base, params, x0, data.t, data.column, fixed);
+    } catch (const InputError& e) {
+        throw blame_derived_setting(e, base, params, data, fixed);
+    }
+    const double unit = residual_unit(data);
+    std::vector<double> w(m0.size());
+    for (std::size_t k = 0; k < m0.size(); ++k) w[k] = (m0[k] - data.value[k]) / (data.sigma.empty() ? unit : data.sigma[k]);
+    const std::size_t k = overflowing_residual(w);
+    if (k == w.size()) return;
+    const std::string over = data.sigma.empty() ? "max |" + data.column + "|" : "sigma";
+    throw InputError(one_line(sample_place(data, k) + ": " + (data.sigma.empty() ? data.column : std::string("sigma")) +
+                              ": (model - data) / " + over + " = " + significant(w[k], 3) +
+                              " at the start values: the misfit's sum of squares is not a finite number in double "
+                              "precision; check the units of " + data.column + " and sigma"));
 }
 
 }  // namespace
@@ -121,10 +187,7 @@ FitResult fit_trajectory(const Case& base, const std::vector<FitParameter>& para
     if (!shifted && fixed.time_shift == 0.0 && data.t.front() < 0.0) {
         throw InputError(data.file + ": t_s: the record must start at t >= 0 (the model's t = 0), or fit --time-shift");
     }
-    // The start must run: a case that cannot is the user's to fix, not Ceres' to step around.
-    std::vector<double> x0;
-    for (const FitParameter& p : params) x0.push_back(p.start);
-    (void)model_trajectory(base, params, x0, data.t, data.column, fixed);
+    check_start(base, params, data, fixed);
 
     const LeastSquaresProblem p = trajectory_problem(base, params, data, fixed);
     FitResult r = fit_least_squares(p, o);
@@ -168,7 +231,12 @@ TwoStageFit fit_two_stage(const Case& base, const std::vector<FitParameter>& par
     SimulationOptions so;
     so.history = false;
     so.energy = false;
-    const SimulationRun run = run_simulation(start, so);
+    SimulationRun run;
+    try {
+        run = run_simulation(start, so);
+    } catch (const InputError& e) {
+        throw blame_derived_setting(e, base, params, data, at_start);
+    }
     if (run.result.episodes.empty()) {
         throw InputError("--two-stage: the model at the start values has no impact within the record; fit in one stage");
     }

@@ -120,6 +120,7 @@ DesignJournal::DesignJournal(const std::string& dir, bool resume, const std::str
     : p_(p), header_(header_of(p)) {
     namespace fs = std::filesystem;
     path_ = (fs::path(dir) / kFileName).string();
+    lock_.emplace(dir);
     std::error_code ec;
     const bool exists = fs::exists(path_, ec);
     if (exists && !resume) {
@@ -135,12 +136,9 @@ DesignJournal::DesignJournal(const std::string& dir, bool resume, const std::str
         if (!file_) throw std::runtime_error(path_ + ": cannot open the journal (" + std::strerror(errno) + ")");
         return;
     }
-    fs::create_directories(dir, ec);
-    if (ec || !fs::is_directory(dir)) {
-        throw InputError("--out " + dir + ": cannot create the folder" + (ec ? " (" + ec.message() + ")" : ""));
-    }
     file_.reset(std::fopen(path_.c_str(), "wbx"));
     if (!file_) throw std::runtime_error(path_ + ": cannot create the journal (" + std::strerror(errno) + ")");
+    started_here_ = true;
     const std::string head = std::string(kMagic) + "\n# problem " + fingerprint_of(identity) + "\n" + header_ + "\n";
     if (std::fwrite(head.data(), 1, head.size(), file_.get()) != head.size() || std::fflush(file_.get()) != 0) {
         throw std::runtime_error(path_ + ": cannot write the journal (" + std::strerror(errno) + ")");

@@ -4,12 +4,14 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "design/design_problem.hpp"
 #include "design/design_store.hpp"
+#include "sweep/folder_lock.hpp"
 
 namespace vi {
 
@@ -31,11 +33,13 @@ public:
     // The file name inside the output folder.
     static constexpr const char* kFileName = "optimize.journal";
 
-    // The journal of folder `dir` (created if needed). A journal there is read with `resume`
-    // (its designs in designs()) and is an InputError without it; with `resume` and no journal a
-    // new one starts. Throws InputError naming the file (and line) for a journal of another
-    // problem or a damaged line; a last line without its newline (a killed process) is dropped.
-    // std::runtime_error when the file cannot be written.
+    // The journal of folder `dir` (created if needed), locked for this run (sweep/folder_lock.hpp)
+    // until the journal is destroyed. A journal there is read with `resume` (its designs in
+    // designs()) and is an InputError without it; with `resume` and no journal a new one starts.
+    // Throws InputError when another run holds the folder, and naming the file (and line) for a
+    // journal of another problem or a damaged line (a refusal leaves nothing behind); a last line
+    // without its newline (a killed process) is dropped. std::runtime_error when the file cannot
+    // be written.
     DesignJournal(const std::string& dir, bool resume, const std::string& identity, const DesignProblem& p);
 
     [[nodiscard]] const std::vector<ComputedDesign>& designs() const { return designs_; }
@@ -47,8 +51,11 @@ public:
     // a power cut). Throws std::runtime_error when the write fails.
     void append(const ComputedDesign& d);
 
-    // Closes the file and deletes it (once the final files are written).
+    // Closes the file and deletes it (once the final files are written, or when a run that started
+    // it is refused: it then leaves nothing).
     void remove();
+    // Whether this run started the journal (rather than resuming one).
+    [[nodiscard]] bool started_here() const { return started_here_; }
 
 private:
     struct Closer {
@@ -61,6 +68,8 @@ private:
     std::vector<ComputedDesign> designs_;
     std::size_t complete_bytes_ = 0;
     std::size_t lines_ = 0;
+    bool started_here_ = false;
+    std::optional<FolderLock> lock_;  // before the file: released after it is closed
     std::unique_ptr<std::FILE, Closer> file_;
 };
 

@@ -10,7 +10,7 @@
 namespace vi {
 namespace {
 
-// Columns that hold text (why T_p ended, which support an impact hit), not numbers.
+// Columns that hold text (why T_p ended, which solver ran, which support an impact hit), not numbers.
 bool is_text_column(const std::string& name) { return sweep_column_is_text(name); }
 
 }  // namespace

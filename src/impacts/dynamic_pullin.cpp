@@ -1,5 +1,6 @@
 #include "impacts/dynamic_pullin.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -39,6 +40,13 @@ Case stepped(const Case& c, double voltage, double horizon, PullinCriterion crit
 
 }  // namespace
 
+int most_step_trials(double lo, double hi, const StepBisectionOptions& o) {
+    // One more than the halvings to the width rel_width * lo: the midpoints round.
+    const double halvings = std::ceil(std::log2((hi - lo) / (o.rel_width * lo))) + 1.0;
+    if (!(halvings >= 0.0)) return 2 + std::max(o.bisections, 0);
+    return 2 + static_cast<int>(std::min(halvings, static_cast<double>(std::max(o.bisections, 0))));
+}
+
 StepBisection bisect_step_voltage(const std::function<StepTrial(double)>& trial, double lo, double hi,
                                   const StepBisectionOptions& o) {
     if (!(lo > 0.0) || !(hi > lo)) throw std::invalid_argument("bisect_step_voltage: need 0 < lower < upper");
@@ -46,6 +54,7 @@ StepBisection bisect_step_voltage(const std::function<StepTrial(double)>& trial,
     const auto run = [&](double v) {
         check_run();
         b.trials.push_back(trial(v));
+        if (o.trial_done) o.trial_done(b.trials.back());
         return b.trials.back().closes;
     };
     if (run(lo)) throw std::runtime_error("dynamic pull-in: the lower end of the bracket, " + volts(lo) + ", already pulls in");

@@ -24,7 +24,13 @@ struct StepBisectionOptions {
     // Stop when (upper - lower) <= rel_width * upper. Finer brackets drive the trials onto the grazing
     // contact at the threshold, where CVODE can take minutes (docs/electrostatics.md §6).
     double rel_width = 1e-3;
+    std::function<void(const StepTrial&)> trial_done;  // sees each transient as it ends
 };
+
+// The transients bisect_step_voltage runs at most between lo and hi: the two bracket checks and the
+// bisections that bring the width to rel_width of the lower end (the stop's width is relative to
+// the upper end, never below lo), within o.bisections. Depends on hi / lo only.
+int most_step_trials(double lo, double hi, const StepBisectionOptions& o);
 
 // The bracket at the end: `lower` does not pull in, `upper` does (upper - lower <= rel_width upper).
 struct StepBisection {

@@ -3,6 +3,7 @@
 // (run folders, figure data, measured trajectories, the Python module).
 
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -21,6 +22,14 @@ struct CsvRow {
 // skipped, and with `comments` so are lines starting with '#'. Throws InputError("FILE:LINE: a
 // quoted cell is not closed") naming `file`.
 std::vector<CsvRow> split_csv(std::string_view text, const std::string& file, bool comments = false);
+
+// Reads the CSV file at `path` block by block (never the whole file at once, and without the
+// whole-file readers' 64 MiB limit: a run's history of a million samples is some 200 MB) and hands
+// each row to `row` in order, with its line in the file, as split_csv splits them. Throws
+// InputError("FILE: cannot read: reason") for a file that cannot be opened or is neither a regular
+// file nor a pipe, "FILE:LINE: ..." for a quoted cell not closed or a row longer than 64 MiB (no table the
+// tool writes has one); what `row` throws passes through.
+void for_each_csv_row(const std::string& path, bool comments, const std::function<void(const CsvRow&)>& row);
 
 // A cell as a number: any decimal or "inf" text std::from_chars reads (a leading '+' allowed), and the
 // missing-value marker "nan" or an empty cell as NaN; nullopt for text that is not a number, or whose

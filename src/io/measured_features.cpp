@@ -1,11 +1,13 @@
 #include "io/measured_features.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "io/csv_reader.hpp"
 #include "io/range_spec.hpp"
 #include "io/text_file.hpp"
 #include "model/input_error.hpp"
+#include "model/run_estimate.hpp"
 
 namespace vi {
 namespace {
@@ -72,6 +74,10 @@ MeasuredFeatures read_measured_features(const std::string& path) {
             const std::string& s = row[static_cast<std::size_t>(k)];
             const std::optional<double> v = finite_number(s);
             if (!v) throw fail(f.name + ": " + col + " '" + s + "' is not a finite number");
+            if (*v != 0.0 && !(std::abs(*v) >= 1.0 / kMagnitudeLimit && std::abs(*v) <= kMagnitudeLimit)) {
+                throw fail(f.name + ": " + col + " " + s + " is outside the magnitudes the fit computes with (1e-100 to " +
+                           "1e100 in SI units; docs/case-files.md, Limits)");
+            }
             return *v;
         };
         f.value = number(iv, "value");

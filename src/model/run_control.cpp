@@ -21,6 +21,18 @@ double now_s() {
 thread_local double t_deadline = 0.0;
 thread_local double t_seconds = 0.0;
 thread_local std::string t_setting;
+// The innermost ProgressNote of this thread, or null.
+thread_local const std::function<std::string()>* t_note = nullptr;
+
+// What the innermost note says, or "" (a note that fails to say is left out: the timeout matters more).
+std::string progress_text() {
+    if (t_note == nullptr || !*t_note) return "";
+    try {
+        return (*t_note)();
+    } catch (...) {
+        return "";
+    }
+}
 
 }  // namespace
 
@@ -58,6 +70,12 @@ ScopedTimeLimit::~ScopedTimeLimit() {
     t_setting = std::move(previous_setting_);
 }
 
+ProgressNote::ProgressNote(std::function<std::string()> describe) : describe_(std::move(describe)), previous_(t_note) {
+    t_note = &describe_;
+}
+
+ProgressNote::~ProgressNote() { t_note = previous_; }
+
 double time_limit_elapsed() { return t_deadline > 0.0 ? now_s() - (t_deadline - t_seconds) : 0.0; }
 
 void check_run() {
@@ -65,8 +83,9 @@ void check_run() {
     if (t_deadline > 0.0 && now_s() > t_deadline) {
         char buf[64];
         std::snprintf(buf, sizeof buf, "%g", t_seconds);
-        throw TimeLimitReached("timeout: more than " + std::string(buf) + " s of wall time (raise " + t_setting +
-                               ")");
+        const std::string doing = progress_text();
+        throw TimeLimitReached("timeout: more than " + std::string(buf) + " s of wall time (raise " + t_setting + ")" +
+                               (doing.empty() ? "" : "; " + doing));
     }
 }
 

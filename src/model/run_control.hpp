@@ -4,6 +4,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <functional>
 #include <stdexcept>
 #include <string>
 
@@ -22,7 +23,8 @@ private:
 };
 
 // Thrown by check_run() when this thread's wall-clock limit (ScopedTimeLimit) has passed; the
-// message names the limit and the setting that raises it.
+// message names the limit and the setting that raises it, and what the work was doing when a
+// ProgressNote says.
 class TimeLimitReached : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
@@ -67,6 +69,23 @@ private:
     double previous_deadline_;
     double previous_seconds_;
     std::string previous_setting_;
+};
+
+// While it lives, a time limit reached on this thread says what the work was doing: describe()'s
+// text is added to the TimeLimitReached message ("the exact solver had reached t = ..."). It is
+// called only then, on this thread, from inside the work (check_run), so it may read the work's
+// state as it is at that moment and compute what it reports; the work pays nothing until then.
+// Notes nest: the inner one speaks while it lives.
+class ProgressNote {
+public:
+    explicit ProgressNote(std::function<std::string()> describe);
+    ~ProgressNote();
+    ProgressNote(const ProgressNote&) = delete;
+    ProgressNote& operator=(const ProgressNote&) = delete;
+
+private:
+    std::function<std::string()> describe_;
+    const std::function<std::string()>* previous_;
 };
 
 // Seconds since this thread's current time limit began, or 0 without one.

@@ -38,6 +38,20 @@ std::string slurp(const fs::path& p) {
     return file_text(p.string(), reason).value_or(std::string());
 }
 
+// An image gnuplot wrote, read back; throws std::runtime_error saying why when there is none or it
+// cannot be read (larger than the readers' limit: a figure of too many points).
+std::string read_image(const fs::path& p, const std::string& script) {
+    std::string reason;
+    std::error_code ec;
+    if (!fs::exists(p, ec)) throw std::runtime_error(script + ": gnuplot wrote no image " + p.filename().string());
+    std::optional<std::string> bytes = file_text(p.string(), reason);
+    if (!bytes || bytes->empty()) {
+        throw std::runtime_error(script + ": the image gnuplot wrote, " + p.filename().string() + ", cannot be read back (" +
+                                 (bytes ? std::string("empty") : reason) + ")");
+    }
+    return std::move(*bytes);
+}
+
 void put(const fs::path& p, const std::string& text) {
     std::ofstream out(p, std::ios::binary);
     out << text;
@@ -198,9 +212,8 @@ std::vector<RenderedFigure> render_figures(const std::string& gnuplot, const std
             if (log.find("warning") != std::string::npos) throw std::runtime_error("gnuplot: " + first_line(log));
         });
         for (std::size_t i = 0; i < figures.size(); ++i) {
-            out[i].png = slurp(dir / (figures[i].name + ".png"));
-            out[i].svg = slurp(dir / (figures[i].name + ".svg"));
-            if (out[i].png.empty() || out[i].svg.empty()) throw std::runtime_error(figures[i].name + ".gp: gnuplot wrote no image");
+            out[i].png = read_image(dir / (figures[i].name + ".png"), figures[i].name + ".gp");
+            out[i].svg = read_image(dir / (figures[i].name + ".svg"), figures[i].name + ".gp");
         }
     } catch (...) {
         std::error_code ec;

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 #include "statics/bordered_solver.hpp"
 #include "problem/electrode_elements.hpp"
@@ -252,10 +254,12 @@ State locate(const Model& m, State a, State b, bool fix_modes, int& iterations, 
     return b;
 }
 
+// The frequencies at o.frequency_points voltages of the open branch; `point_done` after each.
 void add_frequencies(const Model& m, const std::vector<State>& open, double top, const PullinOptions& o,
-                     PullinResult& r) {
+                     PullinResult& r, const std::function<void()>& point_done) {
     if (open.empty() || o.frequency_points < 2) return;
     for (int i = 0; i < o.frequency_points; ++i) {
+        if (i > 0) point_done();
         const double target = top * i / (o.frequency_points - 1);
         const State* best = &open.front();
         for (const State& s : open) {
@@ -277,6 +281,24 @@ void add_frequencies(const Model& m, const std::vector<State>& open, double top,
         }
         if (r.frequencies.empty() || r.frequencies.back().voltage != f.voltage) r.frequencies.push_back(std::move(f));
     }
+    point_done();
+}
+
+// Why the branch ends at s when the beam reaches a bare electrode's face, else "": a dielectric
+// layer is a contact (DielectricContact) the beam lands on and the branch goes on; a bare
+// electrode's face is not, so the branch ends before it.
+std::string collapse_end(const Model& m, const State& s, double voltage) {
+    std::string end;
+    for (const PadPtr& pad : m.pads) {
+        if (pad->geometry().dielectric_thickness > 0.0) continue;
+        const std::vector<double> qe = gather(*pad, s.q);
+        const ElectrostaticPad::Narrowest narrow = pad->narrowest(qe.data());
+        if (narrow.air_gap <= 5e-3 * (pad->geometry().gap - pad->geometry().dielectric_thickness)) {
+            end = "the beam collapses onto " + pad->name() +
+                  text(" (it touches it at x = %.4g um, V = %.6g V on the unstable branch)", narrow.x * 1e6, voltage);
+        }
+    }
+    return end;
 }
 
 }  // namespace
@@ -336,7 +358,13 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
     open.push_back(s);
     r.branch.push_back(describe(m, s, ls));
 
-    const double full = o.steps > 0 ? m.air_gap / o.steps : m.air_gap / 200;
+    const int budget_steps = o.steps > 0 ? o.steps : 200;
+    const double full = m.air_gap / budget_steps;
+    int reported = 0;  // units of the progress budget (steps, then frequency points) reported
+    const auto report = [&](int units, int unused) {
+        if (o.progress && units + unused > 0) o.progress(units, unused);
+        reported += units + unused;
+    };
     double step = full;
     State previous = s;
     const long max_points = 8L * std::max(o.steps, 1) + 200;
@@ -410,18 +438,8 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
         // Release: the lowest voltage at which a closed support still holds the beam stably.
         if (p.contact && p.stable) r.release_voltage = std::min(r.release_voltage.value_or(p.voltage), p.voltage);
         r.branch.push_back(p);
-
-        for (const PadPtr& pad : m.pads) {
-            // A dielectric layer is a contact (DielectricContact): the beam lands on it and the
-            // branch goes on; a bare electrode's face is not, so the branch ends before it.
-            if (pad->geometry().dielectric_thickness > 0.0) continue;
-            const std::vector<double> qe = gather(*pad, s.q);
-            const ElectrostaticPad::Narrowest narrow = pad->narrowest(qe.data());
-            if (narrow.air_gap <= 5e-3 * (pad->geometry().gap - pad->geometry().dielectric_thickness)) {
-                r.end = "the beam collapses onto " + pad->name() +
-                        text(" (it touches it at x = %.4g um, V = %.6g V on the unstable branch)", narrow.x * 1e6, p.voltage);
-            }
-        }
+        report(std::max(0, std::min(budget_steps, static_cast<int>(s.tau / full)) - reported), 0);
+        r.end = collapse_end(m, s, p.voltage);
         if (!r.end.empty()) break;
         if (s.lambda > lambda_limit) {
             r.end = "the voltage passed 4 times the pull-in (or touch-down) voltage on the closed branch";
@@ -434,7 +452,9 @@ PullinResult trace_pullin(const PullinModel& m, const PullinOptions& o) {
         if (!r.pullin || x.tau <= r.pullin->travel) stable_open.push_back(x);
     }
     const double top = r.pullin ? r.pullin->voltage : r.touchdown ? r.touchdown->voltage : r.branch.back().voltage;
-    add_frequencies(m, stable_open, top, o, r);
+    report(0, budget_steps - reported);
+    add_frequencies(m, stable_open, top, o, r, [&] { report(1, 0); });
+    report(0, budget_steps + o.frequency_points - reported);
     r.lu_fallbacks = ls.fallbacks();
     return r;
 }

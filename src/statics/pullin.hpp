@@ -5,6 +5,7 @@
 // (docs/electrostatics.md §4).
 
 #include <Eigen/Dense>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +21,10 @@ struct PullinOptions {
     int steps = 200;          // continuation steps over the electrode's air gap
     int frequency_points = 16; // voltages (0 .. V_PI) at which the lowest modes are computed
     int frequency_count = 3;   // modes per voltage
+    // Sees the work as it goes, in units of the budget steps + frequency_points: (n, 0) as the mean
+    // travel passes n more step lengths (air gap / steps) and after each frequency point, and
+    // (0, the rest) when the branch ends before the gap.
+    std::function<void(int units, int unused)> progress;
 };
 
 // One equilibrium: all electrodes at `voltage`.

@@ -14,6 +14,9 @@ SweepStore::SweepStore(const std::string& out_dir, bool resume, std::size_t poin
     if (out_dir.empty()) return;
     namespace fs = std::filesystem;
     journal_path_ = (fs::path(out_dir) / SweepJournal::kFileName).string();
+    // Locked before the journal is looked at: a journal another run is writing is not an
+    // interrupted sweep's, and two resumes must not compute the same points.
+    lock_.emplace(out_dir);
     std::error_code ec;
     const bool exists = fs::exists(journal_path_, ec);
     if (exists && !resume) {
@@ -31,10 +34,6 @@ SweepStore::SweepStore(const std::string& out_dir, bool resume, std::size_t poin
         from_journal_ = done_;
         journal_.emplace(SweepJournal::reopen(journal_path_, contents));
         return;
-    }
-    fs::create_directories(out_dir, ec);
-    if (ec || !fs::is_directory(out_dir)) {
-        throw InputError("--out " + out_dir + ": cannot create the folder" + (ec ? " (" + ec.message() + ")" : ""));
     }
     journal_.emplace(SweepJournal::create(journal_path_, fingerprint, points, csv_header_));
 }

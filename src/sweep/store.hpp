@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "sweep/folder_lock.hpp"
 #include "sweep/ranks.hpp"
 #include "io/output_files.hpp"
 #include "io/sweep_journal.hpp"
@@ -21,10 +22,12 @@ public:
     static constexpr const char* kCsvName = "sweep.csv";
     static constexpr const char* kJsonName = "sweep.json";
 
-    // out_dir empty: rows kept in memory only. Otherwise the folder gets a journal: a new one, or
-    // with `resume` the one an interrupted run left (whose points are then done). Throws InputError
-    // when a journal is there without `resume`, when it belongs to another sweep, or when the
-    // folder cannot be made; std::runtime_error when the journal cannot be written. With
+    // out_dir empty: rows kept in memory only. Otherwise the folder is locked for this run
+    // (sweep/folder_lock.hpp) and gets a journal: a new one, or with `resume` the one an
+    // interrupted run left (whose points are then done). Throws InputError when another run holds
+    // the folder, when a journal is there without `resume`, when it belongs to another sweep, or
+    // when the folder cannot be made (a refusal leaves nothing behind); std::runtime_error when the
+    // journal cannot be written. With
     // `retry_failed`, the journal's failed points (error or timeout) are left to compute again.
     SweepStore(const std::string& out_dir, bool resume, std::size_t points, const std::string& fingerprint,
                std::string csv_header, bool retry_failed = false);
@@ -58,6 +61,7 @@ private:
     std::size_t done_ = 0;
     std::size_t from_journal_ = 0;
     std::string journal_path_;
+    std::optional<FolderLock> lock_;  // before the journal: released after it is closed
     std::optional<SweepJournal> journal_;
 };
 

@@ -92,8 +92,8 @@ std::string validation_report(const ValidationOptions& o) {
     // The sections are independent: they run on worker threads (the slowest first, so that two
     // threads finish together) and are written in document order.
     ValidationOptions shared = o;
+    auto lock = std::make_shared<std::mutex>();
     if (o.progress) {
-        auto lock = std::make_shared<std::mutex>();
         shared.progress = [lock, print = o.progress](const std::string& line) {
             const std::lock_guard<std::mutex> guard(*lock);
             print(line);
@@ -106,9 +106,18 @@ std::string validation_report(const ValidationOptions& o) {
                                         section_electrostatics};
     const std::vector<std::size_t> slowest_first = {6, 7, 5, 9, 8, 3, 1, 2, 4, 0};
     std::vector<std::string> text(order.size());
+    std::size_t ended = 0;  // under lock
+    if (o.sections_done) o.sections_done(0, order.size());
     parallel_for(
         order.size(), resolve_thread_count(o.threads),
-        [&](std::size_t k) { text[slowest_first[k]] = order[slowest_first[k]](shared); }, &stop_flag());
+        [&](std::size_t k) {
+            text[slowest_first[k]] = order[slowest_first[k]](shared);
+            if (o.sections_done) {
+                const std::lock_guard<std::mutex> guard(*lock);
+                o.sections_done(++ended, order.size());
+            }
+        },
+        &stop_flag());
     check_run();
     for (const std::string& t : text) s << t;
     s << section_elsewhere();

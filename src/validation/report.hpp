@@ -4,6 +4,7 @@
 // the paper leaves out, and the contact-stiffness scan). Every number is computed when the document
 // is generated; nothing depends on the date or on timing, so a regeneration is reproducible.
 
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
@@ -24,6 +25,9 @@ struct ValidationOptions {
     // Called with one line after each step that takes noticeable time (the command prints it on
     // stderr); may be empty.
     std::function<void(const std::string&)> progress;
+    // Called with (0, sections) before the document's sections start and (done, sections) as each
+    // ends, one call at a time; may be empty.
+    std::function<void(std::size_t done, std::size_t sections)> sections_done;
     int threads = 0;             // worker threads for the sections (0: every usable CPU)
 };
 

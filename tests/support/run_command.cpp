@@ -35,13 +35,21 @@ pid_t spawn(const std::vector<std::string>& args, const std::vector<std::string>
     std::vector<char*> argv;
     for (auto& a : argv_store) argv.push_back(a.data());
     argv.push_back(nullptr);
-    // The extra entries replace variables of the same name.
-    std::vector<std::string> env_store = env;
+    // The extra entries replace variables of the same name. A command's progress report is off
+    // unless the test asks for it (--progress, or this variable among the extra entries): a run
+    // that happens to last longer than the report's interval on a loaded machine must not change
+    // what the test reads on stderr.
+    std::vector<std::string> extra = env;
+    const std::string progress = "VIBROIMPACT_PROGRESS=";
+    bool progress_given = false;
+    for (const std::string& x : env) progress_given = progress_given || x.compare(0, progress.size(), progress) == 0;
+    if (!progress_given) extra.push_back(progress + "none");
+    std::vector<std::string> env_store = extra;
     for (char** e = environ; *e; ++e) {
         const std::string entry = *e;
         const std::string name = entry.substr(0, entry.find('=') + 1);
         bool replaced = false;
-        for (const std::string& x : env) replaced = replaced || x.compare(0, name.size(), name) == 0;
+        for (const std::string& x : extra) replaced = replaced || x.compare(0, name.size(), name) == 0;
         if (!replaced) env_store.push_back(entry);
     }
     std::vector<char*> envp;
@@ -194,6 +202,8 @@ CommandResult run_on_terminal(const std::vector<std::string>& argv, double limit
     if (pid == 0) {
         signal(SIGINT, SIG_DFL);
         signal(SIGTERM, SIG_DFL);
+        // What a user's terminal shows: the progress report at its default.
+        unsetenv("VIBROIMPACT_PROGRESS");
         execvp(args[0], args.data());
         _exit(127);
     }

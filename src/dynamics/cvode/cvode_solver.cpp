@@ -18,6 +18,7 @@
 #include "dynamics/cvode/cvode_system.hpp"
 #include "dynamics/cvode/fast_nvector.hpp"
 #include "dynamics/piecewise_linear_form.hpp"
+#include "model/number_format.hpp"
 #include "model/run_control.hpp"
 
 namespace vi {
@@ -135,6 +136,8 @@ private:
     void toggle(double t, const std::vector<int>& which);
     void restart(double t);
     void add_counters();
+    // What a time limit reached during the integration reports (model/run_control.hpp).
+    [[nodiscard]] std::string progress() const;
 
     const TransientProblem& p_;
     CvodeOptions o_;
@@ -349,6 +352,24 @@ void Driver::restart(double t) {
     t_restart_ = t;
 }
 
+// The time reached, CVODE's steps so far and its last step, and the closest contact gap at that
+// time (negative: a penetration): computed only when a time limit is reached.
+std::string Driver::progress() const {
+    std::string out = "CVODE had reached t = " + significant(t_done_, 6) + " s of " + significant(p_.t_end, 6) + " s";
+    long steps = 0;
+    double h = 0.0;
+    if (s_.mem != nullptr && CVodeGetNumSteps(s_.mem, &steps) == CV_SUCCESS) {
+        out += " in " + std::to_string(steps_done_ + steps) + " steps";
+    }
+    if (s_.mem != nullptr && CVodeGetLastStep(s_.mem, &h) == CV_SUCCESS && h > 0.0) {
+        out += "; last step " + significant(h, 3) + " s";
+    }
+    double gap = std::numeric_limits<double>::infinity();
+    for (const int e : sys_.contacts()) gap = std::min(gap, -sys_.reading(e, t_done_, N_VGetArrayPointer(s_.y)).penetration);
+    if (std::isfinite(gap)) out += "; closest contact gap " + significant(gap, 3) + " m (negative: penetration)";
+    return out;
+}
+
 TransientResult Driver::run() {
     const auto t_setup = Clock::now();
     const std::size_t nc = sys_.contacts().size();
@@ -396,6 +417,7 @@ TransientResult Driver::run() {
 
     double t = 0.0;
     std::size_t seg = 0;
+    const ProgressNote note([this] { return progress(); });
     for (;;) {
         const double t_stop = stops_[seg];
         if (t >= t_stop || same_time(t, t_stop)) {  // reached a stop: the end, or a breakpoint

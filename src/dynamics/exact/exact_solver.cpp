@@ -15,6 +15,7 @@
 #include "dynamics/exact/exact_state.hpp"
 #include "dynamics/piecewise_linear_form.hpp"
 #include "dynamics/exact/state_modes.hpp"
+#include "model/number_format.hpp"
 #include "model/run_control.hpp"
 
 namespace vi {
@@ -105,6 +106,18 @@ std::optional<Tangency> resolve_tangency(const ExpSignal& F, const ExpSignal& d,
         if (at == span) break;
     }
     return std::nullopt;
+}
+
+// The time reached, the pieces so far and the last one's length, and the closest contact gap at the
+// current piece's start (negative: a penetration): computed only when a time limit is reached.
+std::string exact_progress(double t, double t_end, long pieces, double last_piece, const PieceSolution* piece, int contacts) {
+    std::string out = "the exact solver had reached t = " + significant(t, 6) + " s of " + significant(t_end, 6) + " s in " +
+                      std::to_string(pieces) + " pieces";
+    if (std::isfinite(last_piece)) out += "; last piece " + significant(last_piece, 3) + " s";
+    double gap = std::numeric_limits<double>::infinity();
+    for (int c = 0; piece != nullptr && c < contacts; ++c) gap = std::min(gap, -piece->penetration(c).value(0.0));
+    if (std::isfinite(gap)) out += "; closest contact gap " + significant(gap, 3) + " m (negative: penetration)";
+    return out;
 }
 
 // What to change when contact states repeat at one instant (see the caller).
@@ -204,6 +217,10 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions&
         if (o.energy) res.initial_energy = first.energy_at(0.0, ledger);
     }
 
+    // A time limit reached in here says how far the transient got (model/run_control.hpp).
+    const PieceSolution* piece = nullptr;
+    double last_piece = std::numeric_limits<double>::quiet_NaN();
+    const ProgressNote note([&] { return exact_progress(t, p.t_end, pieces, last_piece, piece, nc); });
     while (t < p.t_end) {
         check_run();
         if (++pieces > o.max_events) {
@@ -215,7 +232,9 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions&
         const double piece_end = bit == breaks.end() ? p.t_end : std::min(p.t_end, *bit);
         const auto t_piece = Clock::now();
         const double dec_before = model.decomposition_seconds();
+        piece = nullptr;  // the last piece's solution may leave the cache while the next is made
         const PieceSolution& s = piece_at(model, active, x, t, piece_end);
+        piece = &s;
         res.stats.propagation_s += seconds_since(t_piece) - (model.decomposition_seconds() - dec_before);
         const double span = piece_end - t;
         // At rest: with nothing left to change the forcing, a motion whose energy about this piece's
@@ -323,6 +342,7 @@ TransientResult solve_exact(const PiecewiseLinearProblem& p, const ExactOptions&
         res.stats.propagation_s += seconds_since(t_prop);
         ++res.stats.steps;
         t += tau_e;
+        last_piece = tau_e;
         if (tau_e <= cs.t_tol) {
             // Only a contact set that keeps switching at one instant, with every tangency resolved,
             // comes here 50 times: two contacts whose states decide each other, or one whose damper

@@ -200,12 +200,18 @@ PaperStudy run_paper_study(const PaperStudyOptions& options) {
         const std::lock_guard<std::mutex> lock(report_mutex);
         options.progress(line);
     };
+    std::size_t jobs_ended = 0;  // under report_mutex
+    if (options.jobs_done) options.jobs_done(0, jobs.size());
     const int threads = resolve_thread_count(options.threads);
     parallel_for(jobs.size(), threads, [&](std::size_t k) {
         const double start = thread_cpu_seconds();
         jobs[k].run();
         Part& p = parts[jobs[k].part];
         p.cpu_us += static_cast<long long>(1e6 * (thread_cpu_seconds() - start));
+        if (options.jobs_done) {
+            const std::lock_guard<std::mutex> lock(report_mutex);
+            options.jobs_done(++jobs_ended, jobs.size());
+        }
         if (--p.left == 0) {
             char buf[160];
             std::snprintf(buf, sizeof buf, "%s: done (%.2f s of CPU), %.2f s since start", p.name.c_str(), p.cpu_us.load() * 1e-6,

@@ -3,6 +3,7 @@
 // the modes of the free cantilever, a typical free-impact transient, the transients and the modes as
 // the support moves along the beam, and the transients as the support is prestressed.
 
+#include <cstddef>
 #include <functional>
 #include <optional>
 #include <string>
@@ -32,6 +33,9 @@ struct PaperStudyOptions {
     int threads = 0;                   // 0: every CPU this process may use
     // Called with one line as each part finishes (the command prints it); may be empty.
     std::function<void(const std::string&)> progress;
+    // Called with (0, jobs) before the computations start and (done, jobs) as each ends, one call
+    // at a time; may be empty.
+    std::function<void(std::size_t done, std::size_t jobs)> jobs_done;
 };
 
 // One impact of a transient as the figures need it.

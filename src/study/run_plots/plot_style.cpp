@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <limits>
 #include <sstream>
 #include <utility>
@@ -97,12 +98,22 @@ std::vector<std::size_t> rows_to_draw(const std::vector<const std::vector<double
         if (a >= b) continue;
         std::vector<std::size_t> part{a, b - 1};
         for (const auto* c : columns) {
-            std::size_t lo = a, hi = a;
+            // Extremes among the finite values (a NaN compares false with everything, so a slice
+            // that began with one would otherwise keep no peak), and the first row of a gap: a
+            // missing value stays a break in the line.
+            std::optional<std::size_t> lo, hi, gap;
             for (std::size_t i = a; i < b; ++i) {
-                if ((*c)[i] < (*c)[lo]) lo = i;
-                if ((*c)[i] > (*c)[hi]) hi = i;
+                const double v = (*c)[i];
+                if (!std::isfinite(v)) {
+                    if (!gap) gap = i;
+                    continue;
+                }
+                if (!lo || v < (*c)[*lo]) lo = i;
+                if (!hi || v > (*c)[*hi]) hi = i;
             }
-            part.insert(part.end(), {lo, hi});
+            for (const auto& kept : {lo, hi, gap}) {
+                if (kept) part.push_back(*kept);
+            }
         }
         std::sort(part.begin(), part.end());
         part.erase(std::unique(part.begin(), part.end()), part.end());

@@ -47,8 +47,9 @@ std::string gp_range(const std::string& axis, double lo, double hi);
 void finite_range(const std::vector<const std::vector<double>*>& columns, double& lo, double& hi);
 
 // The rows worth drawing of a long table: all of them up to `limit`, otherwise in each of limit/4
-// equal slices of the rows the first, the last and those where a column has its minimum or maximum,
-// so that every peak (an impact's force spike) survives.
+// equal slices of the rows the first, the last, those where a column has its finite minimum or
+// maximum, and the first where it has no value, so that every peak (an impact's force spike)
+// survives and a gap stays a gap.
 std::vector<std::size_t> rows_to_draw(const std::vector<const std::vector<double>*>& columns, std::size_t rows,
                                       std::size_t limit = 40000);
 

@@ -1,6 +1,7 @@
 #include "study/run_plots/run_plots.hpp"
 
 #include <filesystem>
+#include <fstream>
 
 #include "io/text_file.hpp"
 #include "model/input_error.hpp"
@@ -50,11 +51,18 @@ RunPlots run_plots(const std::string& dir) {
 nlohmann::json read_run_json(const std::string& path) {
     std::error_code ec;
     if (!fs::exists(path, ec)) return nullptr;
-    std::string reason;
-    const auto text = file_text(path, reason);
-    if (!text) throw InputError(path + ": cannot read: " + reason);
+    if (!fs::is_regular_file(path, ec)) throw InputError(path + ": cannot read: not a regular file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path + ": cannot read: cannot open");
+    // Parsed from the file as it is read, with no whole-file limit: the sweep.json of a large sweep
+    // lists every value of its axes and every failed point (a million failures are some 100 MB).
+    // The failures are not drawn, so they are dropped as they are parsed.
+    const nlohmann::json::parser_callback_t drop_failures = [](int depth, nlohmann::json::parse_event_t event,
+                                                               nlohmann::json& parsed) {
+        return !(depth == 1 && event == nlohmann::json::parse_event_t::key && parsed == "failures");
+    };
     try {
-        return nlohmann::json::parse(*text);
+        return nlohmann::json::parse(in, drop_failures);
     } catch (const nlohmann::json::parse_error& e) {
         throw InputError(one_line(path + ": not valid JSON: " + e.what()));
     }

@@ -9,7 +9,73 @@
 #include "io/text_file.hpp"
 #include "model/input_error.hpp"
 
+// A run folder's table is read in blocks, never whole (io/csv_reader.hpp's for_each_csv_row): a
+// simulate history of a million samples is some 200 MB of text, more than any whole-file reader of
+// the project takes (io/text_file.hpp's 64 MiB), and as cells of text it would take several times
+// that in memory. Its rows are kept as numbers only: 8 bytes a cell.
+
 namespace vi {
+namespace {
+
+// The rows of a table as they arrive, block by block.
+class TableBuilder {
+public:
+    TableBuilder(RunTable& t, bool numbers_only) : t_(t), numbers_only_(numbers_only) {}
+
+    void add(const CsvRow& row) {
+        if (t_.header.empty()) {
+            set_header(row);
+            return;
+        }
+        const std::size_t width = t_.header.size();
+        if (row.cells.size() != width) {
+            throw InputError(t_.file + ":" + std::to_string(row.line) + ": expected " + std::to_string(width) +
+                             " comma-separated cells as in the header, got " + std::to_string(row.cells.size()));
+        }
+        for (std::size_t k = 0; k < width; ++k) {
+            const std::optional<double> number = csv_cell_number(row.cells[k]);
+            double v = number.value_or(0.0);
+            if (!number) {
+                if (numbers_only_) {
+                    throw InputError(one_line(t_.file + ":" + std::to_string(row.line) + ": " + t_.header[k] + ": '" +
+                                              row.cells[k] + "' is not a number"));
+                }
+                t_.text[k] = true;
+                v = std::numeric_limits<double>::quiet_NaN();
+            }
+            t_.columns[k].push_back(v);
+        }
+        ++t_.rows;
+    }
+
+    void finish() {
+        if (t_.header.empty()) throw InputError(t_.file + ":1: empty; expected a header row and data rows");
+        for (std::size_t k = 0; k < t_.header.size(); ++k) {
+            if (t_.text[k]) std::fill(t_.columns[k].begin(), t_.columns[k].end(), std::numeric_limits<double>::quiet_NaN());
+        }
+    }
+
+private:
+    void set_header(const CsvRow& row) {
+        std::set<std::string> seen;
+        for (const std::string& name : row.cells) {
+            if (name.empty()) {
+                throw InputError(t_.file + ":" + std::to_string(row.line) + ": a column without a name in the header");
+            }
+            if (!seen.insert(name).second) {
+                throw InputError(t_.file + ":" + std::to_string(row.line) + ": column " + name + " appears twice in the header");
+            }
+        }
+        t_.header = row.cells;
+        t_.columns.assign(t_.header.size(), {});
+        t_.text.assign(t_.header.size(), false);
+    }
+
+    RunTable& t_;
+    bool numbers_only_;
+};
+
+}  // namespace
 
 int RunTable::find(const std::string& name) const {
     for (std::size_t k = 0; k < header.size(); ++k) {
@@ -19,49 +85,11 @@ int RunTable::find(const std::string& name) const {
 }
 
 RunTable read_run_table(const std::string& path, bool numbers_only) {
-    std::string reason;
-    const std::optional<std::string> text = file_text(path, reason);
-    if (!text) throw InputError(path + ": cannot read: " + reason);
-    const std::vector<CsvRow> rows = split_csv(*text, path);
-    if (rows.empty()) throw InputError(path + ":1: empty; expected a header row and data rows");
     RunTable t;
     t.file = path;
-    t.header = rows.front().cells;
-    std::set<std::string> seen;
-    for (const std::string& name : t.header) {
-        if (name.empty()) throw InputError(path + ":" + std::to_string(rows.front().line) + ": a column without a name in the header");
-        if (!seen.insert(name).second) {
-            throw InputError(path + ":" + std::to_string(rows.front().line) + ": column " + name + " appears twice in the header");
-        }
-    }
-    const std::size_t width = t.header.size();
-    t.columns.assign(width, {});
-    t.text.assign(width, false);
-    t.rows = rows.size() - 1;
-    for (auto& c : t.columns) c.reserve(t.rows);
-    for (std::size_t r = 1; r < rows.size(); ++r) {
-        const CsvRow& row = rows[r];
-        if (row.cells.size() != width) {
-            throw InputError(path + ":" + std::to_string(row.line) + ": expected " + std::to_string(width) +
-                             " comma-separated cells as in the header, got " + std::to_string(row.cells.size()));
-        }
-        for (std::size_t k = 0; k < width; ++k) {
-            const std::optional<double> number = csv_cell_number(row.cells[k]);
-            double v = number.value_or(0.0);
-            if (!number) {
-                if (numbers_only) {
-                    throw InputError(one_line(path + ":" + std::to_string(row.line) + ": " + t.header[k] + ": '" + row.cells[k] +
-                                              "' is not a number"));
-                }
-                t.text[k] = true;
-                v = std::numeric_limits<double>::quiet_NaN();
-            }
-            t.columns[k].push_back(v);
-        }
-    }
-    for (std::size_t k = 0; k < width; ++k) {
-        if (t.text[k]) std::fill(t.columns[k].begin(), t.columns[k].end(), std::numeric_limits<double>::quiet_NaN());
-    }
+    TableBuilder builder(t, numbers_only);
+    for_each_csv_row(path, false, [&](const CsvRow& row) { builder.add(row); });
+    builder.finish();
     return t;
 }
 

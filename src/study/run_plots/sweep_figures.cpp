@@ -20,7 +20,7 @@ namespace vi {
 namespace {
 
 // A varying axis of the grid: the case path, its unit, its values in grid order, its column in sweep.csv.
-struct SweepAxis {
+struct PlotAxis {
     std::string path, unit;
     std::string name;            // its column's name in sweep.csv ("supports[0].gap_m")
     std::vector<double> values;  // sorted, distinct
@@ -29,11 +29,11 @@ struct SweepAxis {
     DisplayUnit shown;
 };
 
-std::vector<SweepAxis> varying_axes(const nlohmann::json& j, const RunTable& t, const std::string& json_file) {
-    std::vector<SweepAxis> out;
+std::vector<PlotAxis> varying_axes(const nlohmann::json& j, const RunTable& t, const std::string& json_file) {
+    std::vector<PlotAxis> out;
     if (!j.is_object() || !j.contains("axes") || !j["axes"].is_array()) throw InputError(json_file + ": no \"axes\" list: not a sweep's description");
     for (const nlohmann::json& a : j["axes"]) {
-        SweepAxis x;
+        PlotAxis x;
         x.path = a.at("path").get<std::string>();
         x.unit = a.value("unit", std::string());
         for (const nlohmann::json& v : a.at("values")) {
@@ -72,7 +72,7 @@ struct Quantity {
 
 // The edges of the cells around sorted axis values: midway between neighbours (geometrically on a
 // log axis), the outer ones as far out as the inner ones.
-std::vector<double> cell_edges(const SweepAxis& a) {
+std::vector<double> cell_edges(const PlotAxis& a) {
     const auto& v = a.values;
     const auto mid = [&](double p, double q) { return a.log ? std::sqrt(p * q) : 0.5 * (p + q); };
     std::vector<double> e(v.size() + 1);
@@ -82,20 +82,36 @@ std::vector<double> cell_edges(const SweepAxis& a) {
     return e;
 }
 
-// The grid value nearest x (sweep.csv and sweep.json write the same values to the last digit).
-std::size_t index_of(const SweepAxis& a, double x) {
-    std::size_t best = 0;
-    for (std::size_t i = 1; i < a.values.size(); ++i) {
-        if (std::fabs(a.values[i] - x) < std::fabs(a.values[best] - x)) best = i;
-    }
-    return best;
+// The grid value nearest x (sweep.csv and sweep.json write the same values to the last digit), by
+// bisection of the sorted values: a heat map may hold 10^8 points.
+std::size_t index_of(const PlotAxis& a, double x) {
+    const auto it = std::lower_bound(a.values.begin(), a.values.end(), x);
+    if (it == a.values.begin()) return 0;
+    const std::size_t i = static_cast<std::size_t>(it - a.values.begin());
+    if (i == a.values.size()) return i - 1;
+    return std::fabs(a.values[i] - x) < std::fabs(a.values[i - 1] - x) ? i : i - 1;
 }
 
-std::string axis_text(const SweepAxis& a) {
+// A heat map keeps at most this many grid values per axis: a 2400 px wide figure shows no more
+// cells, and gnuplot draws every cell as a shape of its own (the SVG grows with them).
+constexpr std::size_t kMaxCellsPerAxis = 500;
+
+// Every how many grid values one is drawn on an axis of a heat map (1: all of them).
+std::size_t cell_stride(const PlotAxis& a) { return (a.values.size() + kMaxCellsPerAxis - 1) / kMaxCellsPerAxis; }
+
+// The axis with every stride-th value only (the first among them), for a heat map's cells.
+PlotAxis every_nth(const PlotAxis& a, std::size_t stride) {
+    PlotAxis out = a;
+    out.values.clear();
+    for (std::size_t i = 0; i < a.values.size(); i += stride) out.values.push_back(a.values[i]);
+    return out;
+}
+
+std::string axis_text(const PlotAxis& a) {
     return axis_label(a.path, a.shown);
 }
 
-FigureSpec line_figure(const RunTable& t, const SweepAxis& a, const Quantity& q) {
+FigureSpec line_figure(const RunTable& t, const PlotAxis& a, const Quantity& q) {
     const auto& x = t.columns[static_cast<std::size_t>(a.column)];
     const auto& y = t.columns[static_cast<std::size_t>(q.column)];
     const DisplayUnit yu = display_unit(q.unit, largest_magnitude({&y}));
@@ -105,9 +121,23 @@ FigureSpec line_figure(const RunTable& t, const SweepAxis& a, const Quantity& q)
     std::vector<std::size_t> order(t.rows);
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return x[i] < x[j]; });
+    // A long sweep is drawn from the points that shape its curve, as a long history is (in each
+    // slice the first, the last, the lowest and the highest): every peak survives.
+    std::vector<double> xs, ys;
+    xs.reserve(order.size());
+    ys.reserve(order.size());
+    for (std::size_t r : order) {
+        xs.push_back(x[r]);
+        ys.push_back(y[r]);
+    }
+    const std::vector<std::size_t> drawn = rows_to_draw({&ys}, ys.size());
+    if (drawn.size() < ys.size()) {
+        f.caption += " Drawn from " + std::to_string(drawn.size()) + " of the " + std::to_string(ys.size()) +
+                     " points (in each slice of the axis the first, the last, the lowest and the highest).";
+    }
     CsvTable data;
     data.header = {t.header[static_cast<std::size_t>(a.column)], t.header[static_cast<std::size_t>(q.column)]};
-    for (std::size_t r : order) data.add_row({x[r], y[r]});
+    for (std::size_t r : drawn) data.add_row({xs[r], ys[r]});
     const std::string file = f.name + ".csv";
     f.data = {{file, data.str()}};
     double lo = 0.0, hi = 0.0;
@@ -122,13 +152,23 @@ FigureSpec line_figure(const RunTable& t, const SweepAxis& a, const Quantity& q)
     return f;
 }
 
-FigureSpec heat_figure(const RunTable& t, const SweepAxis& ax, const SweepAxis& ay, const Quantity& q) {
+FigureSpec heat_figure(const RunTable& t, const PlotAxis& ax, const PlotAxis& ay, const Quantity& q) {
     const auto& z = t.columns[static_cast<std::size_t>(q.column)];
     const DisplayUnit zu = display_unit(q.unit, largest_magnitude({&z}));
     FigureSpec f = run_figure("sweep_" + safe_name(t.header[static_cast<std::size_t>(q.column)]), q.label + " over " + ax.path + " and " + ay.path,
                               t.header[static_cast<std::size_t>(q.column)] + " of sweep.csv, one cell per grid point; grey: a point "
                                   "without a value (failed, or the quantity undefined there).");
-    const std::vector<double> ex = cell_edges(ax), ey = cell_edges(ay);
+    // A grid finer than the figure can show is drawn on a sub-grid of its own points (every n-th
+    // value of an axis, each cell widened to its neighbours'): values are shown, never averaged.
+    const std::size_t sx = cell_stride(ax), sy = cell_stride(ay);
+    const PlotAxis dx = every_nth(ax, sx), dy = every_nth(ay, sy);
+    if (sx > 1 || sy > 1) {
+        f.caption += " Drawn on a sub-grid of " + std::to_string(dx.values.size()) + " x " + std::to_string(dy.values.size()) +
+                     " of the " + std::to_string(ax.values.size()) + " x " + std::to_string(ay.values.size()) +
+                     " grid values (every " + std::to_string(sx) + "th of " + ax.path + ", every " + std::to_string(sy) +
+                     "th of " + ay.path + ").";
+    }
+    const std::vector<double> ex = cell_edges(dx), ey = cell_edges(dy);
     // Each point's cell spans low_<x> to high_<x> and low_<y> to high_<y>.
     CsvTable data;
     data.header = {ax.name, ay.name, "low_" + ax.name, "high_" + ax.name, "low_" + ay.name, "high_" + ay.name,
@@ -138,7 +178,8 @@ FigureSpec heat_figure(const RunTable& t, const SweepAxis& ax, const SweepAxis& 
     for (std::size_t r = 0; r < t.rows; ++r) {
         if (!std::isfinite(z[r]) || !std::isfinite(xs[r]) || !std::isfinite(ys[r])) continue;
         const std::size_t i = index_of(ax, xs[r]), k = index_of(ay, ys[r]);
-        data.add_row({xs[r], ys[r], ex[i], ex[i + 1], ey[k], ey[k + 1], z[r]});
+        if (i % sx != 0 || k % sy != 0) continue;
+        data.add_row({xs[r], ys[r], ex[i / sx], ex[i / sx + 1], ey[k / sy], ey[k / sy + 1], z[r]});
     }
     const std::string file = f.name + ".csv";
     f.data = {{file, data.str()}};
@@ -167,7 +208,7 @@ std::vector<FigureSpec> sweep_figures(const std::string& dir, std::vector<std::s
     const RunTable t = read_run_table(dir + "/sweep.csv", false);
     const nlohmann::json j = read_run_json(json_file);
     if (j.is_null()) throw InputError(json_file + ": missing; it names the sweep's axes and units (sweep --out writes it)");
-    std::vector<SweepAxis> axes;
+    std::vector<PlotAxis> axes;
     std::map<std::string, std::string> units;
     try {
         axes = varying_axes(j, t, json_file);
@@ -183,7 +224,7 @@ std::vector<FigureSpec> sweep_figures(const std::string& dir, std::vector<std::s
     std::vector<FigureSpec> figures;
     for (std::size_t k = 0; k < t.header.size(); ++k) {
         const std::string& name = t.header[k];
-        const bool axis = std::any_of(axes.begin(), axes.end(), [&](const SweepAxis& a) { return a.column == static_cast<int>(k); });
+        const bool axis = std::any_of(axes.begin(), axes.end(), [&](const PlotAxis& a) { return a.column == static_cast<int>(k); });
         const auto& c = t.columns[k];
         if (axis) continue;
         if (t.text[k] || !std::any_of(c.begin(), c.end(), [](double v) { return std::isfinite(v); })) {
