@@ -212,6 +212,16 @@ TEST(CliUq, HistogramsAndSobolChartsOfTheNamedColumns) {
     fs::remove_all(dir);
 }
 
+// The progress report of the runs, as sweep's (apps/progress): lines in a pipe.
+TEST(CliUq, ReportsItsRunsAsItGoes) {
+    const std::string dir = test::make_temp_dir();
+    const CommandResult r = run_vibroimpact(uq_args(dir + "/out", {"--samples", "8", "--progress", "lines",
+                                                                   "--progress-interval", "0"}));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("uq: 8/8 runs"), std::string::npos) << r.err;
+    fs::remove_all(dir);
+}
+
 TEST(CliUq, BadInputIsExit2WithOneLineAndNothingWritten) {
     const std::string dir = test::make_temp_dir();
     const std::string out = dir + "/out";
