@@ -1,7 +1,8 @@
 // `vibroimpact uq` end to end: exact propagation through the pull-in law V_PI ~ t^1.5 g^1.5 with
 // thickness and gap lognormal (the estimates against their intervals), the Sobol indices of that
-// law against their closed forms, resume after a stop and thread counts giving the same uq.json
-// byte for byte, failed samples counted, and the refusals of bad input.
+// law against their closed forms, resume after a stop, thread counts and MPI ranks giving the same
+// uq.json byte for byte, failed samples counted, the figures, the progress report, and the refusals
+// of bad input.
 
 #include <gtest/gtest.h>
 #include <signal.h>
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "support/mpi_launch.hpp"
 #include "support/run_command.hpp"
 #include "support/test_files.hpp"
 #include "uq/distribution.hpp"
@@ -156,6 +158,20 @@ TEST(CliUq, ResumeAndThreadCountsGiveTheSameUqJson) {
     EXPECT_NE(resumed.out.find("from the journal"), std::string::npos);
     EXPECT_EQ(read_text(dir + "/stopped/uq.json"), reference);
     EXPECT_FALSE(fs::exists(journal));
+    fs::remove_all(dir);
+}
+
+// Two MPI ranks share the runs and rank 0 writes the uq.json of a single process.
+TEST(CliUq, TwoMpiRanksGiveTheSameUqJson) {
+    if (const std::string why = test::mpi_unavailable(); !why.empty()) GTEST_SKIP() << "MPI part skipped: " << why;
+    const std::string dir = test::make_temp_dir();
+    const std::vector<std::string> common = {"--samples", "32", "--sensitivity", "--threads", "1"};
+    ASSERT_EQ(run_vibroimpact(uq_args(dir + "/one", common)).exit_code, 0);
+    const CommandResult mpi = test::run_mpi(uq_args(dir + "/mpi", common));
+    ASSERT_EQ(mpi.exit_code, 0) << mpi.out << mpi.err;
+    EXPECT_NE(mpi.out.find("x 2 processes"), std::string::npos) << mpi.out;
+    EXPECT_EQ(read_text(dir + "/mpi/uq.json"), read_text(dir + "/one/uq.json"));
+    EXPECT_EQ(read_text(dir + "/mpi/samples.csv"), read_text(dir + "/one/samples.csv"));
     fs::remove_all(dir);
 }
 
