@@ -28,6 +28,7 @@
 #include "model/run_control.hpp"
 #include "plot/figure_gnuplot.hpp"
 #include "stop_signals.hpp"
+#include "study/analyses/sweep_analyses.hpp"
 
 namespace vi::cli {
 namespace {
@@ -125,6 +126,8 @@ struct OptimizeCommandOptions {
     std::string case_path;
     std::vector<std::string> vary, constraints;
     std::string minimize, maximize;
+    std::string analysis = "simulate";
+    int modes = 3;
     int max_evals = 100, global_evals = 0, threads = 0;
     double point_timeout = 60.0;
     std::string out = "out/optimize";
@@ -137,6 +140,8 @@ struct OptimizeCommandOptions {
 std::string command_text(const OptimizeCommandOptions& o, const DesignProblem& p) {
     std::string command = "vibroimpact optimize " + o.case_path;
     for (const std::string& v : o.vary) command += " --vary '" + v + "'";
+    if (o.analysis != "simulate") command += " --analysis " + o.analysis;
+    if (o.analysis == "modes") command += " --modes " + std::to_string(o.modes);
     command += p.maximize ? " --maximize " + o.maximize : " --minimize " + o.minimize;
     for (const std::string& c : o.constraints) command += " --constraint '" + c + "'";
     command += " --max-evals " + std::to_string(o.max_evals);
@@ -169,8 +174,12 @@ void print_result(const OptimizeCommandOptions& o, const DesignProblem& p, const
 DesignProblem read_problem(const OptimizeCommandOptions& o, const std::string& case_text) {
     DesignProblem p;
     p.base = read_case_text(case_text, o.case_path);
-    p.columns = sweep_result_columns(SweepAnalysis::simulate, 0);
+    p.settings.analysis = parse_sweep_analysis(o.analysis);
+    p.settings.modes = o.modes;
     p.settings.point_timeout = o.point_timeout;
+    p.settings = with_study_analyses(p.settings);
+    check_sweep_analysis(p.base, p.settings);
+    p.columns = sweep_result_columns(p.settings.analysis, p.settings.modes);
     for (const std::string& v : o.vary) {
         DesignVariable variable = parse_design_variable(v, p.base);
         for (const DesignVariable& earlier : p.variables) {
@@ -281,6 +290,14 @@ CommandBody add_optimize_command(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("optimize", "The design that minimises (or maximises) a reported quantity in a box of case values");
     sub->add_option("case", opt->case_path, "Case file (TOML)")->required();
     sub->add_option("--vary", opt->vary, "PATH=LOW:HIGH, SI units, as --set of sweep (repeat for more)")->required();
+    sub->add_option("--analysis", opt->analysis,
+                    "What each design computes, as sweep --analysis: simulate, modes, pullin, stiction or air-q (sweep "
+                    "--list-columns ANALYSIS lists its quantities)")
+        ->check(CLI::IsMember({"simulate", "modes", "pullin", "stiction", "air-q"}))
+        ->capture_default_str();
+    sub->add_option("--modes", opt->modes, "Bending modes of each design of a modes analysis")
+        ->check(CLI::Range(1, 100))
+        ->capture_default_str();
     auto* mn = sub->add_option("--minimize", opt->minimize, "Reported quantity to minimise (a sweep column, e.g. z_max, Tp_s)");
     auto* mx = sub->add_option("--maximize", opt->maximize, "Reported quantity to maximise");
     mn->excludes(mx);

@@ -32,6 +32,7 @@ CommandBody add_fit_command(CLI::App& app);
 CommandBody add_new_command(CLI::App& app);
 CommandBody add_stiction_command(CLI::App& app);
 CommandBody add_air_q_command(CLI::App& app);
+CommandBody add_uq_command(CLI::App& app);
 CommandBody add_plot_command(CLI::App& app);
 CommandBody add_man_command(CLI::App& app);
 CommandBody add_completion_command(CLI::App& app);

@@ -47,6 +47,7 @@ int main(int argc, char** argv) {
     add(add_new_command);
     add(add_stiction_command);
     add(add_air_q_command);
+    add(add_uq_command);
     add(add_plot_command);
     add(add_man_command);
     add(add_completion_command);

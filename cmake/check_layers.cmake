@@ -3,7 +3,7 @@
 # its shared files (the transient problem, start and result) and never include each other.
 # Run: cmake -DSRC=<path to src> -P check_layers.cmake
 # Prints every offending #include and fails when there is one.
-set(layers model io fem forces modal problem statics dynamics impacts report sweep design calibration plot validation study)
+set(layers model io fem forces modal problem statics dynamics impacts report sweep design calibration uq plot validation study)
 set(rooms dynamics/exact dynamics/cvode)
 if(NOT SRC)
   message(FATAL_ERROR "check_layers: pass -DSRC=<path to src>")

@@ -268,6 +268,13 @@ TEST_F(CsvFiles, EveryFileOfTheMainCommandsFollowsTheConvention) {
     run({"sweep", case_, "--analysis", "modes", "--modes", "1", "--set", "supports[0].position=0.5,1", "--set",
          "supports[0].stiffness=500,1000", "--out", out + "/sweep_modes"});
     run({"pullin", sw, "--steps", "60", "--out", out + "/pullin"});
+    run({"sweep", sw, "--analysis", "pullin", "--set", "beam.thickness=1.9um,2um", "--out", out + "/sweep_pullin"});
+    run({"sweep", test::source_path("examples/switch/cantilever_stiction.toml"), "--analysis", "stiction", "--set",
+         "supports[0].work_of_adhesion=0.2,0.5", "--out", out + "/sweep_stiction"});
+    // uq: samples.csv and the figures' data (a histogram, a Sobol chart).
+    run({"uq", test::source_path("tests/cases/full_electrode_cantilever.toml"), "--analysis", "pullin", "--vary",
+         "beam.thickness=lognormal:2um:0.03", "--samples", "32", "--sensitivity", "--spec", "pullin_voltage_v<=60",
+         "--out", out + "/uq"});
     run({"switch-report", sw, "--out", out + "/switch"});
     run({"stiction", test::source_path("examples/switch/cantilever_stiction.toml"), "--out", out + "/stiction"});
     run({"plot", out + "/simulate", "--out", out + "/plot_simulate"});

@@ -77,7 +77,7 @@ run "all present" 0 test
 [ -z "$out" ] || fail "all present: printed '$out'"
 [ -z "$calls" ] || fail "all present: called $calls"
 
-export STUB_INSTALLED="build-essential cmake pkg-config ninja-build ccache libeigen3-dev libspectra-dev libsundials-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libnlopt-dev libceres-dev"
+export STUB_INSTALLED="build-essential cmake pkg-config ninja-build ccache libeigen3-dev libspectra-dev libsundials-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev libnlopt-dev libceres-dev libboost-dev"
 STUB_UID=1000 run "no root, no sudo" 2 run
 has "$out" "apt-get install -y --no-install-recommends gnuplot-nox fonts-dejavu-core" ||
   fail "no root: does not print the apt-get command: $out"

@@ -8,4 +8,5 @@ PYBIND11_MODULE(_vibroimpact, m) {
     vi::python::bind_case(m);
     vi::python::bind_analyses(m);
     vi::python::bind_sweep(m);
+    vi::python::bind_uq(m);
 }

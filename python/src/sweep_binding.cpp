@@ -14,6 +14,7 @@
 #include "model/input_error.hpp"
 #include "model/parallel_for.hpp"
 #include "model/run_control.hpp"
+#include "study/analyses/sweep_analyses.hpp"
 #include "sweep/columns.hpp"
 #include "sweep/grid.hpp"
 #include "sweep/runner.hpp"
@@ -52,9 +53,10 @@ std::vector<std::string> settings_of(const py::object& values) {
 }
 
 SweepAnalysis analysis_of(const std::string& name) {
-    if (name == "simulate") return SweepAnalysis::simulate;
-    if (name == "modes") return SweepAnalysis::modes;
-    throw InputError("analysis: \"" + name + "\" is neither \"simulate\" nor \"modes\"");
+    for (SweepAnalysis a : kSweepAnalyses) {
+        if (name == sweep_analysis_name(a)) return a;
+    }
+    throw InputError("analysis: \"" + name + "\" is none of " + sweep_analysis_names(", "));
 }
 
 py::dict sweep(const Case& base, const py::object& values, const std::string& analysis, int modes,
@@ -69,6 +71,8 @@ py::dict sweep(const Case& base, const py::object& values, const std::string& an
     settings.point_timeout = point_timeout;
     if (threads < 0) throw InputError("threads: must be 0 (every CPU this process may use) or more");
     const int workers = resolve_thread_count(threads);
+    settings = with_study_analyses(settings);
+    check_sweep_analysis(base, settings);
     const std::vector<SweepColumn> columns = sweep_result_columns(settings.analysis, settings.modes);
 
     // Integer columns: whole-number paths, and results that are counts.

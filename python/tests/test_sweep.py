@@ -49,3 +49,17 @@ def test_a_bad_path_is_an_input_error_naming_the_key(small_case):
     assert "unknown key" in e.value.reason
     with pytest.raises(vi.InputError):
         vi.sweep(case, {"supports[0].position": "0.5"}, analysis="transient")
+
+
+def test_pullin_and_stiction_sweeps_equal_the_command_line_csv(source_dir, vi_exe):
+    for analysis, path, setting in [
+        ("pullin", "tests/cases/full_electrode_cantilever.toml", "beam.thickness=1.8um,2um"),
+        ("stiction", "examples/switch/cantilever_stiction.toml", "supports[0].work_of_adhesion=0.2,0.5"),
+    ]:
+        case_file = source_dir / path
+        table = vi.sweep(vi.Case.from_file(str(case_file)), [setting], analysis=analysis)["table"]
+        cli = read_csv(run_cli(vi_exe, "sweep", case_file, "--analysis", analysis, "--set", setting))
+        assert list(table) == list(cli)
+        for name, cells in cli.items():
+            assert_column_equals_cells(name, table[name], cells)
+    assert table["stuck"].tolist() == [0, 1]

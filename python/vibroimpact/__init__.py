@@ -14,7 +14,7 @@ Errors: InputError (a ValueError) with .file, .line, .key and .reason; SolverErr
 RuntimeError) when a run cannot finish (numerical trouble, a bound on its work or time).
 """
 
-from ._vibroimpact import Case, InputError, SolverError, modes, pullin, simulate, sweep
+from ._vibroimpact import Case, InputError, SolverError, modes, pullin, simulate, sweep, uq
 
 
 def load(source, **kwargs):
@@ -37,4 +37,4 @@ def load(source, **kwargs):
     raise TypeError(f"vibroimpact.load: a path, a dict or TOML text, not {type(source).__name__}")
 
 
-__all__ = ["Case", "InputError", "SolverError", "load", "modes", "pullin", "simulate", "sweep"]
+__all__ = ["Case", "InputError", "SolverError", "load", "modes", "pullin", "simulate", "sweep", "uq"]

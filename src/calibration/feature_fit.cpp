@@ -18,8 +18,32 @@
 namespace vi {
 namespace {
 
+// V_PI_V and the numeric columns of a pullin sweep come from the static pull-in trace.
+bool from_pullin(const std::string& name) {
+    if (name == "V_PI_V") return true;
+    for (const SweepColumn& c : sweep_result_columns(SweepAnalysis::pullin, 0)) {
+        if (c.name == name) return true;
+    }
+    return false;
+}
+
 bool from_transient(const std::string& name) {
-    return name != "f1_hz" && name != "q1" && name != "V_PI_V";
+    return name != "f1_hz" && name != "q1" && !from_pullin(name);
+}
+
+// The pull-in trace's value of a feature, or FeatureMissing saying why it has none.
+double pullin_feature(const std::string& name, const PullinResult& r) {
+    if (name == "V_PI_V") {
+        if (!r.pullin) throw FeatureMissing("V_PI_V: the design has no pull-in before its branch ends (" + r.end + ")");
+        return r.pullin->voltage;
+    }
+    const std::vector<SweepColumn> columns = sweep_result_columns(SweepAnalysis::pullin, 0);
+    const std::vector<SweepCell> cells = pullin_cells(r);
+    for (std::size_t k = 0; k < columns.size(); ++k) {
+        if (columns[k].name != name) continue;
+        if (const std::optional<double> v = numeric_cell(cells[k])) return *v;
+    }
+    throw FeatureMissing(name + ": the design's pull-in trace has no such point (" + r.end + ")");
 }
 
 // f1 [Hz] and Q1 of a built model.
@@ -43,7 +67,7 @@ std::string why_missing(const std::string& name) {
 
 void check_features(const Case& c, const MeasuredFeatures& data) {
     for (const MeasuredFeature& f : data.features) {
-        if ((f.name == "V_PI_V" || f.name == "closing_time_s") && c.electrodes.empty()) {
+        if ((from_pullin(f.name) || f.name == "closing_time_s") && c.electrodes.empty()) {
             throw InputError(data.file + ":" + std::to_string(f.line) + ": " + f.name +
                              ": the case has no electrode (the feature needs an actuated switch)");
         }
@@ -60,7 +84,7 @@ std::vector<double> model_features(const Case& base, const std::vector<FitParame
     for (const MeasuredFeature& f : data.features) {
         transient = transient || from_transient(f.name);
         modal = modal || f.name == "f1_hz" || f.name == "q1";
-        pullin = pullin || f.name == "V_PI_V";
+        pullin = pullin || from_pullin(f.name);
     }
     std::optional<SimulationRun> run;
     std::optional<BeamModel> built;
@@ -77,18 +101,16 @@ std::vector<double> model_features(const Case& base, const std::vector<FitParame
     } else if (modal) {
         built = build_beam_model(c);
     }
-    std::optional<double> v_pi;
+    std::optional<PullinResult> trace;
     if (pullin) {
         PullinOptions po;
-        po.frequency_points = 0;  // the voltage only
-        const PullinResult r = trace_pullin(c, po);
-        if (!r.pullin) throw FeatureMissing("V_PI_V: the design has no pull-in before its branch ends (" + r.end + ")");
-        v_pi = r.pullin->voltage;
+        po.frequency_points = 0;  // the voltages and travels only
+        trace = trace_pullin(c, po);
     }
     std::vector<double> out;
     for (const MeasuredFeature& f : data.features) {
-        if (f.name == "V_PI_V") {
-            out.push_back(*v_pi);
+        if (from_pullin(f.name)) {
+            out.push_back(pullin_feature(f.name, *trace));
         } else if (!from_transient(f.name)) {
             out.push_back(modal_feature(f.name, run ? run->built.model : *built));
         } else {

@@ -107,7 +107,9 @@ std::string design_identity_text(std::string_view case_text, const DesignProblem
     for (const DesignConstraint& c : p.constraints) {
         t += "constraint " + p.columns.at(c.column).name + (c.upper ? " <= " : " >= ") + exact(c.bound) + "\n";
     }
-    t += p.settings.analysis == SweepAnalysis::modes ? "analysis modes\n" : "analysis simulate\n";
+    t += std::string("analysis ") + sweep_analysis_name(p.settings.analysis);
+    if (p.settings.analysis == SweepAnalysis::modes) t += " " + std::to_string(p.settings.modes);
+    t += "\n";
     return t;
 }
 

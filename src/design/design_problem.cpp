@@ -11,9 +11,7 @@ namespace vi {
 namespace {
 
 // Columns that hold text (why T_p ended, which solver ran, which support an impact hit), not numbers.
-bool is_text_column(const std::string& name) {
-    return name == "Tp_reason" || name == "solver" || (name.rfind("impact", 0) == 0 && name.size() > 8 && name.ends_with("_support"));
-}
+bool is_text_column(const std::string& name) { return sweep_column_is_text(name); }
 
 }  // namespace
 

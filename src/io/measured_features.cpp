@@ -21,8 +21,13 @@ std::string name_list() {
 }  // namespace
 
 const std::vector<std::string>& feature_names() {
-    static const std::vector<std::string> names = {"f1_hz", "q1", "T_s", "T1_s", "T2_s", "Tp_s", "y_max_m", "z_max",
-                                                   "impact1_peak_force_n", "closing_time_s", "V_PI_V"};
+    // The last ones are the numeric columns of a pullin sweep (sweep/columns.hpp; a test holds them equal).
+    static const std::vector<std::string> names = {
+        "f1_hz", "q1", "T_s", "T1_s", "T2_s", "Tp_s", "y_max_m", "z_max", "impact1_peak_force_n", "closing_time_s",
+        "V_PI_V", "rest_capacitance_f", "pullin_voltage_v", "pullin_travel_m", "pullin_capacitance_f",
+        "touchdown_voltage_v", "touchdown_travel_m", "touchdown_capacitance_f", "release_voltage_v",
+        "release_travel_m", "release_capacitance_f", "collapse_voltage_v", "collapse_travel_m",
+        "collapse_capacitance_f", "hysteresis_v"};
     return names;
 }
 

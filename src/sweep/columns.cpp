@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "io/number_text.hpp"
+#include "model/input_error.hpp"
 
 namespace vi {
 
@@ -11,6 +12,11 @@ std::optional<double> numeric_cell(const SweepCell& cell) {
     if (const std::int64_t* n = std::get_if<std::int64_t>(&cell)) return static_cast<double>(*n);
     return std::nullopt;
 }
+bool sweep_column_is_text(const std::string& name) {
+    return name.ends_with("_reason") || name == "solver" || name.rfind("nodes_supported_", 0) == 0 ||
+           (name.rfind("impact", 0) == 0 && name.size() > 8 && name.ends_with("_support"));
+}
+
 namespace {
 
 SweepCell opt_cell(const std::optional<double>& v) { return v ? SweepCell(*v) : SweepCell(); }
@@ -31,7 +37,58 @@ std::string positions_text(const std::vector<double>& xs) {
 
 }  // namespace
 
+const char* sweep_analysis_name(SweepAnalysis a) {
+    switch (a) {
+        case SweepAnalysis::simulate: return "simulate";
+        case SweepAnalysis::modes: return "modes";
+        case SweepAnalysis::pullin: return "pullin";
+        case SweepAnalysis::stiction: return "stiction";
+        case SweepAnalysis::air_q: return "air-q";
+    }
+    return "simulate";
+}
+
+std::string sweep_analysis_names(const char* separator) {
+    std::string s;
+    for (SweepAnalysis a : kSweepAnalyses) s += (s.empty() ? "" : separator) + std::string(sweep_analysis_name(a));
+    return s;
+}
+
+SweepAnalysis parse_sweep_analysis(const std::string& name) {
+    for (SweepAnalysis a : kSweepAnalyses) {
+        if (name == sweep_analysis_name(a)) return a;
+    }
+    throw InputError("--analysis " + name + ": no such analysis (" + sweep_analysis_names(", ") + ")");
+}
+
+namespace {
+
+// The point columns of the pull-in trace: voltage, mean travel and capacitance.
+void add_pullin_point_columns(std::vector<SweepColumn>& cols, const std::string& point) {
+    cols.push_back({point + "_voltage_v", "V"});
+    cols.push_back({point + "_travel_m", "m"});
+    cols.push_back({point + "_capacitance_f", "F"});
+}
+
+std::vector<SweepColumn> pullin_columns() {
+    std::vector<SweepColumn> cols = {{"rest_capacitance_f", "F"}};
+    for (const char* p : {"pullin", "touchdown", "release", "collapse"}) add_pullin_point_columns(cols, p);
+    cols.push_back({"hysteresis_v", "V"});
+    cols.push_back({"end_reason", ""});
+    return cols;
+}
+
+}  // namespace
+
 std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes) {
+    if (analysis == SweepAnalysis::pullin) return pullin_columns();
+    if (analysis == SweepAnalysis::stiction) {
+        return {{"stuck", ""}, {"force_margin_n", "N"}, {"adhesion_margin_j_m2", "J/m^2"}, {"detached_length_m", "m"}};
+    }
+    if (analysis == SweepAnalysis::air_q) {
+        return {{"pressure_pa", "Pa"},    {"knudsen", "-"}, {"viscosity_ratio", "-"},
+                {"squeeze_number", "-"}, {"q_modal", "-"}, {"q_ringdown", "-"}};
+    }
     if (analysis == SweepAnalysis::modes) {
         std::vector<SweepColumn> cols;
         for (int i = 1; i <= modes; ++i) {
@@ -131,6 +188,32 @@ std::vector<SweepCell> modes_cells(const ModalStudy& study, int modes) {
         cells.push_back(i < study.ratios.size() ? SweepCell(study.ratios[i]) : SweepCell());
         cells.push_back(i < s.size() ? SweepCell(positions_text(s[i].features.nodes)) : SweepCell());
     }
+    return cells;
+}
+
+std::vector<SweepCell> pullin_cells(const PullinResult& r) {
+    std::vector<SweepCell> cells;
+    cells.push_back(r.branch.empty() ? SweepCell() : SweepCell(r.branch.front().capacitance));
+    const auto point = [&](const std::optional<PullinPoint>& p) {
+        cells.push_back(p ? SweepCell(p->voltage) : SweepCell());
+        cells.push_back(p ? SweepCell(p->travel) : SweepCell());
+        cells.push_back(p ? SweepCell(p->capacitance) : SweepCell());
+    };
+    point(r.pullin);
+    point(r.touchdown);
+    // The release point: the stable closed state at the release voltage (the trace's lowest one).
+    std::optional<PullinPoint> release;
+    if (r.release_voltage) {
+        for (const PullinPoint& p : r.branch) {
+            if (p.contact && p.stable && p.voltage == *r.release_voltage) release = p;
+        }
+        if (!release && r.touchdown && r.touchdown->voltage == *r.release_voltage) release = r.touchdown;
+    }
+    point(release);
+    point(r.collapse);
+    const std::optional<PullinPoint>& closing = r.pullin ? r.pullin : r.touchdown;
+    cells.push_back(closing && r.release_voltage ? SweepCell(closing->voltage - *r.release_voltage) : SweepCell());
+    cells.emplace_back(r.end);
     return cells;
 }
 

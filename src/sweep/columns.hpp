@@ -9,11 +9,24 @@
 
 #include "impacts/simulation.hpp"
 #include "modal/modal_analysis.hpp"
+#include "statics/pullin.hpp"
 
 namespace vi {
 
-// What each point of a sweep computes.
-enum class SweepAnalysis { simulate, modes };
+// What each point of a sweep computes: a transient, the modal study, the static pull-in, the
+// stiction check, the quality factor in air (docs/sweeps.md, "Analyses").
+enum class SweepAnalysis { simulate, modes, pullin, stiction, air_q };
+
+// Every analysis, in the order the docs list them.
+inline constexpr SweepAnalysis kSweepAnalyses[] = {SweepAnalysis::simulate, SweepAnalysis::modes, SweepAnalysis::pullin,
+                                                   SweepAnalysis::stiction, SweepAnalysis::air_q};
+
+// The analysis's name on the command line and in JSON: "simulate", "modes", "pullin", "stiction", "air-q".
+const char* sweep_analysis_name(SweepAnalysis a);
+// The analysis of that name. Throws InputError("--analysis NAME: ...") listing the names.
+SweepAnalysis parse_sweep_analysis(const std::string& name);
+// Every name, "simulate|modes|pullin|stiction|air-q", for help texts.
+std::string sweep_analysis_names(const char* separator = "|");
 
 // A result column: its name (units in the name, as the other CSV files) and its unit alone.
 struct SweepColumn {
@@ -25,6 +38,10 @@ struct SweepColumn {
 // writes the missing-value marker "nan"), a number, a count, or text (Tp_reason, a list of nodal
 // points).
 using SweepCell = std::variant<std::monostate, double, std::int64_t, std::string>;
+
+// True for a column whose cells are text (a reason, the solver, a list of nodal points) or a
+// support's index: no quantity to optimise, fit or spread.
+bool sweep_column_is_text(const std::string& name);
 
 // A cell's number (a count as a double), or nullopt for an empty or text cell.
 std::optional<double> numeric_cell(const SweepCell& cell);
@@ -46,5 +63,11 @@ std::vector<SweepCell> simulate_cells(const SimulationRun& run);
 // A modal study's values in the order of sweep_result_columns(modes, modes): per mode i,
 // f_unsupported_<i>_hz, f_supported_<i>_hz, ratio_<i>, nodes_supported_<i>_over_l (x/l, space separated).
 std::vector<SweepCell> modes_cells(const ModalStudy& study, int modes);
+
+// A pull-in trace's values in the order of sweep_result_columns(pullin, ...): rest_capacitance_f;
+// pullin_, touchdown_, release_ and collapse_ voltage_v, travel_m (mean travel over electrodes[0])
+// and capacitance_f (empty where the branch has no such point); hysteresis_v (the closing voltage,
+// pull-in or else touch-down, less the release voltage); end_reason (why the branch ends).
+std::vector<SweepCell> pullin_cells(const PullinResult& r);
 
 }  // namespace vi

@@ -1,5 +1,6 @@
 #include "sweep/grid.hpp"
 
+#include <algorithm>
 #include <climits>
 #include <cmath>
 #include <stdexcept>
@@ -52,9 +53,31 @@ SweepGrid::SweepGrid(std::vector<SweepAxis> axes) : axes_(std::move(axes)) {
     }
 }
 
+SweepGrid SweepGrid::paired(std::vector<SweepAxis> axes) {
+    for (const SweepAxis& a : axes) {
+        if (a.values.size() != axes.front().values.size()) {
+            throw InputError(a.setting + ": " + std::to_string(a.values.size()) + " values where " +
+                             axes.front().setting + " has " + std::to_string(axes.front().values.size()));
+        }
+    }
+    // One value per axis gives the checks of a grid (repeated paths, empty axes) at no cost.
+    std::vector<SweepAxis> firsts = axes;
+    for (SweepAxis& a : firsts) a.values.resize(std::min<std::size_t>(a.values.size(), 1));
+    SweepGrid g(std::move(firsts));
+    g.axes_ = std::move(axes);
+    g.size_ = g.axes_.empty() ? 0 : g.axes_.front().values.size();
+    if (g.size_ > kMaxPoints) throw InputError("more than " + std::to_string(kMaxPoints) + " samples");
+    g.paired_ = true;
+    return g;
+}
+
 std::vector<double> SweepGrid::values_at(std::size_t index) const {
     if (index >= size_) throw std::out_of_range("SweepGrid: point index out of range");
     std::vector<double> v(axes_.size());
+    if (paired_) {
+        for (std::size_t a = 0; a < axes_.size(); ++a) v[a] = axes_[a].values[index];
+        return v;
+    }
     for (std::size_t a = axes_.size(); a-- > 0;) {
         const std::size_t n = axes_[a].values.size();
         v[a] = axes_[a].values[index % n];

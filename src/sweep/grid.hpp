@@ -32,6 +32,12 @@ public:
 
     static constexpr std::size_t kMaxPoints = 100'000'000;
 
+    // A sample design (uq): point i takes value i of every axis, so every axis holds the same
+    // number of values. Throws InputError as the grid does, or when the axes' lengths differ.
+    static SweepGrid paired(std::vector<SweepAxis> axes);
+    // True for a sample design, false for a full grid.
+    [[nodiscard]] bool paired() const { return paired_; }
+
     [[nodiscard]] const std::vector<SweepAxis>& axes() const { return axes_; }
     [[nodiscard]] std::size_t size() const { return size_; }
     // The value of every axis at point `index`, in axis order.
@@ -43,6 +49,7 @@ public:
 private:
     std::vector<SweepAxis> axes_;
     std::size_t size_ = 0;
+    bool paired_ = false;
 };
 
 // Parses every setting and builds the grid; throws InputError for the first bad one.

@@ -23,8 +23,10 @@ std::string sweep_identity_text(std::string_view case_text, const SweepGrid& gri
         t += "analysis modes " + std::to_string(settings.modes) + " " +
              (settings.support_model == SupportModel::spring ? "spring" : "pin") + "\n";
     } else {
-        t += "analysis simulate\n";
+        t += std::string("analysis ") + sweep_analysis_name(settings.analysis) + "\n";
     }
+    // A sample design (uq) pairs its axes point by point; a grid's text stays as it always was.
+    if (grid.paired()) t += "layout paired\n";
     return t;
 }
 

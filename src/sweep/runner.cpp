@@ -1,6 +1,7 @@
 #include "sweep/runner.hpp"
 
 #include <exception>
+#include <stdexcept>
 #include <cstdint>
 #include <mutex>
 #include <optional>
@@ -9,6 +10,7 @@
 #include "model/input_error.hpp"
 #include "model/case_checks.hpp"
 #include "model/run_control.hpp"
+#include "statics/pullin.hpp"
 
 namespace vi {
 namespace {
@@ -25,6 +27,14 @@ std::vector<SweepCell> analyse(const Case& c, const SweepSettings& settings) {
     if (settings.analysis == SweepAnalysis::modes) {
         return modes_cells(modal_study(c, settings.modes, settings.support_model), settings.modes);
     }
+    if (settings.analysis == SweepAnalysis::pullin) {
+        PullinOptions o;
+        o.frequency_points = 0;  // no column needs the frequencies under bias
+        return pullin_cells(trace_pullin(c, o));
+    }
+    if (settings.analysis == SweepAnalysis::stiction || settings.analysis == SweepAnalysis::air_q) {
+        return settings.study_analysis(c);
+    }
     // Sweeps want the summary only: the sampled history and the energy ledger cost most of a run.
     SimulationOptions o;
     o.history = false;
@@ -32,7 +42,44 @@ std::vector<SweepCell> analyse(const Case& c, const SweepSettings& settings) {
     return simulate_cells(run_simulation(c, o));
 }
 
+bool has_adhesion(const Case& c) {
+    for (const Support& s : c.supports) {
+        if (s.adhesion != Adhesion::none) return true;
+    }
+    for (const Electrode& e : c.electrodes) {
+        if (e.work_of_adhesion && e.dielectric_thickness > 0.0) return true;
+    }
+    return false;
+}
+
 }  // namespace
+
+void check_sweep_analysis(const Case& c, const SweepSettings& settings) {
+    const std::string option = std::string("--analysis ") + sweep_analysis_name(settings.analysis) + ": ";
+    switch (settings.analysis) {
+        case SweepAnalysis::pullin:
+            if (c.electrodes.empty()) throw InputError(option + "the case has no [[electrodes]] to pull the beam in");
+            break;
+        case SweepAnalysis::stiction:
+            if (!has_adhesion(c)) {
+                throw InputError(option + "the case has no adhesive support (supports[i].adhesion) and no adhesive "
+                                          "dielectric layer (electrodes[i].work_of_adhesion)");
+            }
+            break;
+        case SweepAnalysis::air_q:
+            if (c.electrodes.empty() && c.films.empty()) {
+                throw InputError(option + "the case has neither [[electrodes]] nor [[films]]: no squeeze film to "
+                                          "damp the beam (air-q --gap gives a bare beam one)");
+            }
+            break;
+        default:
+            break;
+    }
+    const bool study = settings.analysis == SweepAnalysis::stiction || settings.analysis == SweepAnalysis::air_q;
+    if (study && !settings.study_analysis) {
+        throw std::logic_error(option + "computed by the studies' code, which these settings do not carry");
+    }
+}
 
 SweepPointResult run_sweep_point(const Case& base, const SweepGrid& grid, std::size_t index,
                                  const SweepSettings& settings) {
@@ -86,6 +133,11 @@ std::size_t run_sweep_points(const Case& base, const SweepGrid& grid, const std:
                              const SweepSettings& settings, int threads,
                              const std::function<void(const SweepPointResult&)>& done,
                              const std::atomic<bool>* stop, RunningPoints* running) {
+    const bool study = settings.analysis == SweepAnalysis::stiction || settings.analysis == SweepAnalysis::air_q;
+    if (study && !settings.study_analysis) {
+        throw std::logic_error(std::string("sweep: the ") + sweep_analysis_name(settings.analysis) +
+                               " analysis needs the studies' code (with_study_analyses)");
+    }
     std::mutex done_mutex;
     std::atomic<std::size_t> reported{0};
     parallel_for(

@@ -18,13 +18,24 @@
 
 namespace vi {
 
+// The cells of a point for an analysis computed above this layer (stiction, air-q: the studies'
+// code), in sweep_result_columns order; study/analyses/sweep_analyses.hpp supplies it.
+using PointAnalysis = std::function<std::vector<SweepCell>(const Case&)>;
+
 // What every point computes.
 struct SweepSettings {
     SweepAnalysis analysis = SweepAnalysis::simulate;
     int modes = 3;                                  // bending modes of a modes sweep
     SupportModel support_model = SupportModel::pin; // supports in the supported modes
     double point_timeout = 60.0;                    // wall-clock limit of one point [s]; 0 = none
+    PointAnalysis study_analysis;                   // stiction and air-q only (with_study_analyses)
 };
+
+// Throws InputError("--analysis NAME: reason") when the case cannot have the analysis: pullin
+// without an electrode, stiction without an adhesive support or adhesive dielectric layer, air-q
+// with neither an electrode nor a [[films]] entry (its squeeze film); std::logic_error when a
+// stiction or air-q analysis has no study_analysis.
+void check_sweep_analysis(const Case& c, const SweepSettings& settings);
 
 // The points being computed now and since when, for a progress line that shows a slow point.
 class RunningPoints {
@@ -51,7 +62,7 @@ struct SweepPointResult {
 
 // Computes point `index`: sets its values in the base case, checks the case (check_case), runs the
 // analysis (a transient without history or energy ledger, or a modal study) within
-// settings.point_timeout. Never throws for a problem of the point itself: InputError and
+// settings.point_timeout (a pullin point traces without the frequencies under bias). Never throws for a problem of the point itself: InputError and
 // std::exception become the status. A stop (StopRequested, model/run_control.hpp) passes through.
 SweepPointResult run_sweep_point(const Case& base, const SweepGrid& grid, std::size_t index,
                                  const SweepSettings& settings);

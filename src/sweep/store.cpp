@@ -72,7 +72,11 @@ std::string SweepStore::csv() const {
 }
 
 void SweepStore::finish(const std::string& out_dir, const std::string& summary_json) {
-    write_output_files(out_dir, {{kCsvName, csv()}, {kJsonName, summary_json}});
+    finish_with(out_dir, {{kCsvName, csv()}, {kJsonName, summary_json}});
+}
+
+void SweepStore::finish_with(const std::string& out_dir, const OutputFiles& files) {
+    write_output_files(out_dir, files);
     if (journal_) journal_->remove();
     journal_.reset();
 }

@@ -51,6 +51,8 @@ public:
     // Writes the CSV and summary_json into the folder together (write_output_files) and removes
     // the journal. Throws std::runtime_error when the files cannot be written.
     void finish(const std::string& out_dir, const std::string& summary_json);
+    // The same with files of the caller's choosing (the CSV among them under its own name).
+    void finish_with(const std::string& out_dir, const OutputFiles& files);
 
 private:
     std::string csv_header_;

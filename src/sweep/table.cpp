@@ -13,8 +13,6 @@ CsvCell cell_of(const SweepCell& c) {
     return csv_missing();
 }
 
-const char* analysis_name(SweepAnalysis a) { return a == SweepAnalysis::modes ? "modes" : "simulate"; }
-
 }  // namespace
 
 std::string sweep_csv_header(const SweepGrid& grid, const std::vector<SweepColumn>& columns) {
@@ -59,7 +57,7 @@ nlohmann::json sweep_summary_json(const SweepGrid& grid, const SweepRunInfo& inf
     nlohmann::json j;
     j["case"] = info.case_path;
     j["case_name"] = info.case_name;
-    j["analysis"] = analysis_name(info.settings.analysis);
+    j["analysis"] = sweep_analysis_name(info.settings.analysis);
     if (info.settings.analysis == SweepAnalysis::modes) {
         j["modes"] = info.settings.modes;
         j["support_model"] = info.settings.support_model == SupportModel::spring ? "spring" : "pin";

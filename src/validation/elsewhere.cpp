@@ -39,7 +39,18 @@ std::string section_elsewhere() {
            "exact trade-off (E and nu through E / (1 - nu^2)) reported as undetermined.\n"
            "- **Optimisation** (`tests/optimize_test.cpp`; docs/optimization.md): the lowest rebound z_max over the "
            "support position against a 141-point grid search of the paper's study, and a binding constraint "
-           "held on its boundary.\n";
+           "held on its boundary.\n"
+           "- **Fabrication spread** (`tests/cli_uq_test.cpp`, `tests/uq_estimators_test.cpp`, "
+           "`tests/sweep_analyses_test.cpp`; docs/uq.md): the FE pull-in voltage of a full-length-electrode "
+           "cantilever without fringing is V0 (t / t0)^1.5 (g / g0)^1.5 to 1e-9; with thickness and gap lognormal, "
+           "log V_PI is normal of known mean and variance, and the estimated mean, SD, 5 and 95 % quantiles and a "
+           "yield lie within their 95 % intervals; the Sobol indices of that law against their closed forms "
+           "(e^{s_a^2} - 1) / (e^{s_a^2 + s_b^2} - 1); the Ishigami function's indices (Ishigami and Homma, "
+           "*Proc. ISUMA* 1990) through the same estimators (Saltelli et al., *Comput. Phys. Commun.* 181 (2010) "
+           "259; Jansen, *Comput. Phys. Commun.* 117 (1999) 35) to 0.01, their bootstrap intervals holding the "
+           "closed forms in 94 % of 360 cases; the coverage of the mean's t interval, the quantiles' order-statistic "
+           "intervals (Hahn and Meeker 1991) and Wilson's yield interval (Wilson 1927) over 2000 independent "
+           "samples; a resumed study and one on another thread count give the same uq.json byte for byte.\n";
 }
 
 }  // namespace vi::validation_detail

@@ -16,7 +16,7 @@
 namespace vi::test {
 
 bool is_text_column(const std::string& name) {
-    for (const char* tail : {"status", "reason", "stage", "kind", "law", "verdict", "feature", "solver"}) {
+    for (const char* tail : {"status", "reason", "stage", "kind", "law", "verdict", "feature", "solver", "input"}) {
         const std::string t = tail;
         if (name == t || (name.size() > t.size() && name.compare(name.size() - t.size() - 1, t.size() + 1, "_" + t) == 0)) return true;
     }

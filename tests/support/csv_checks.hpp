@@ -10,7 +10,7 @@
 namespace vi::test {
 
 // True for a column of text: a status, a reason, a stage, a kind, a law, a verdict, a solver, a
-// feature's name, a list of nodal points (nodes_supported_<i>_over_l). Such cells may be empty or
+// feature's name, a spread study's input path, a list of nodal points (nodes_supported_<i>_over_l). Such cells may be empty or
 // quoted; others may not.
 bool is_text_column(const std::string& name);
 

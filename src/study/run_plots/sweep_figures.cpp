@@ -20,7 +20,7 @@ namespace vi {
 namespace {
 
 // A varying axis of the grid: the case path, its unit, its values in grid order, its column in sweep.csv.
-struct SweepAxis {
+struct PlotAxis {
     std::string path, unit;
     std::string name;            // its column's name in sweep.csv ("supports[0].gap_m")
     std::vector<double> values;  // sorted, distinct
@@ -29,11 +29,11 @@ struct SweepAxis {
     DisplayUnit shown;
 };
 
-std::vector<SweepAxis> varying_axes(const nlohmann::json& j, const RunTable& t, const std::string& json_file) {
-    std::vector<SweepAxis> out;
+std::vector<PlotAxis> varying_axes(const nlohmann::json& j, const RunTable& t, const std::string& json_file) {
+    std::vector<PlotAxis> out;
     if (!j.is_object() || !j.contains("axes") || !j["axes"].is_array()) throw InputError(json_file + ": no \"axes\" list: not a sweep's description");
     for (const nlohmann::json& a : j["axes"]) {
-        SweepAxis x;
+        PlotAxis x;
         x.path = a.at("path").get<std::string>();
         x.unit = a.value("unit", std::string());
         for (const nlohmann::json& v : a.at("values")) {
@@ -72,7 +72,7 @@ struct Quantity {
 
 // The edges of the cells around sorted axis values: midway between neighbours (geometrically on a
 // log axis), the outer ones as far out as the inner ones.
-std::vector<double> cell_edges(const SweepAxis& a) {
+std::vector<double> cell_edges(const PlotAxis& a) {
     const auto& v = a.values;
     const auto mid = [&](double p, double q) { return a.log ? std::sqrt(p * q) : 0.5 * (p + q); };
     std::vector<double> e(v.size() + 1);
@@ -84,7 +84,7 @@ std::vector<double> cell_edges(const SweepAxis& a) {
 
 // The grid value nearest x (sweep.csv and sweep.json write the same values to the last digit), by
 // bisection of the sorted values: a heat map may hold 10^8 points.
-std::size_t index_of(const SweepAxis& a, double x) {
+std::size_t index_of(const PlotAxis& a, double x) {
     const auto it = std::lower_bound(a.values.begin(), a.values.end(), x);
     if (it == a.values.begin()) return 0;
     const std::size_t i = static_cast<std::size_t>(it - a.values.begin());
@@ -97,21 +97,21 @@ std::size_t index_of(const SweepAxis& a, double x) {
 constexpr std::size_t kMaxCellsPerAxis = 500;
 
 // Every how many grid values one is drawn on an axis of a heat map (1: all of them).
-std::size_t cell_stride(const SweepAxis& a) { return (a.values.size() + kMaxCellsPerAxis - 1) / kMaxCellsPerAxis; }
+std::size_t cell_stride(const PlotAxis& a) { return (a.values.size() + kMaxCellsPerAxis - 1) / kMaxCellsPerAxis; }
 
 // The axis with every stride-th value only (the first among them), for a heat map's cells.
-SweepAxis every_nth(const SweepAxis& a, std::size_t stride) {
-    SweepAxis out = a;
+PlotAxis every_nth(const PlotAxis& a, std::size_t stride) {
+    PlotAxis out = a;
     out.values.clear();
     for (std::size_t i = 0; i < a.values.size(); i += stride) out.values.push_back(a.values[i]);
     return out;
 }
 
-std::string axis_text(const SweepAxis& a) {
+std::string axis_text(const PlotAxis& a) {
     return axis_label(a.path, a.shown);
 }
 
-FigureSpec line_figure(const RunTable& t, const SweepAxis& a, const Quantity& q) {
+FigureSpec line_figure(const RunTable& t, const PlotAxis& a, const Quantity& q) {
     const auto& x = t.columns[static_cast<std::size_t>(a.column)];
     const auto& y = t.columns[static_cast<std::size_t>(q.column)];
     const DisplayUnit yu = display_unit(q.unit, largest_magnitude({&y}));
@@ -152,7 +152,7 @@ FigureSpec line_figure(const RunTable& t, const SweepAxis& a, const Quantity& q)
     return f;
 }
 
-FigureSpec heat_figure(const RunTable& t, const SweepAxis& ax, const SweepAxis& ay, const Quantity& q) {
+FigureSpec heat_figure(const RunTable& t, const PlotAxis& ax, const PlotAxis& ay, const Quantity& q) {
     const auto& z = t.columns[static_cast<std::size_t>(q.column)];
     const DisplayUnit zu = display_unit(q.unit, largest_magnitude({&z}));
     FigureSpec f = run_figure("sweep_" + safe_name(t.header[static_cast<std::size_t>(q.column)]), q.label + " over " + ax.path + " and " + ay.path,
@@ -161,7 +161,7 @@ FigureSpec heat_figure(const RunTable& t, const SweepAxis& ax, const SweepAxis& 
     // A grid finer than the figure can show is drawn on a sub-grid of its own points (every n-th
     // value of an axis, each cell widened to its neighbours'): values are shown, never averaged.
     const std::size_t sx = cell_stride(ax), sy = cell_stride(ay);
-    const SweepAxis dx = every_nth(ax, sx), dy = every_nth(ay, sy);
+    const PlotAxis dx = every_nth(ax, sx), dy = every_nth(ay, sy);
     if (sx > 1 || sy > 1) {
         f.caption += " Drawn on a sub-grid of " + std::to_string(dx.values.size()) + " x " + std::to_string(dy.values.size()) +
                      " of the " + std::to_string(ax.values.size()) + " x " + std::to_string(ay.values.size()) +
@@ -208,7 +208,7 @@ std::vector<FigureSpec> sweep_figures(const std::string& dir, std::vector<std::s
     const RunTable t = read_run_table(dir + "/sweep.csv", false);
     const nlohmann::json j = read_run_json(json_file);
     if (j.is_null()) throw InputError(json_file + ": missing; it names the sweep's axes and units (sweep --out writes it)");
-    std::vector<SweepAxis> axes;
+    std::vector<PlotAxis> axes;
     std::map<std::string, std::string> units;
     try {
         axes = varying_axes(j, t, json_file);
@@ -224,7 +224,7 @@ std::vector<FigureSpec> sweep_figures(const std::string& dir, std::vector<std::s
     std::vector<FigureSpec> figures;
     for (std::size_t k = 0; k < t.header.size(); ++k) {
         const std::string& name = t.header[k];
-        const bool axis = std::any_of(axes.begin(), axes.end(), [&](const SweepAxis& a) { return a.column == static_cast<int>(k); });
+        const bool axis = std::any_of(axes.begin(), axes.end(), [&](const PlotAxis& a) { return a.column == static_cast<int>(k); });
         const auto& c = t.columns[k];
         if (axis) continue;
         if (t.text[k] || !std::any_of(c.begin(), c.end(), [](double v) { return std::isfinite(v); })) {
