@@ -202,7 +202,9 @@ TEST(ProgressReport, PaperAndValidateCountTheirJobsAndSectionsBesideTheirEventLi
     EXPECT_NE(paper.err.find("paper: ["), std::string::npos) << paper.err;
     EXPECT_NE(paper.err.find("] figures drawn"), std::string::npos) << paper.err;
 
-    const std::vector<std::string> validate{"validate", "--quick", "--case", free_impact(), "--out", dir + "/v.md"};
+    const std::vector<std::string> validate{"validate", "--quick", "--case", free_impact(), "--switch-case",
+                                            test::source_path("examples/switch/cantilever_switch.toml"), "--out",
+                                            dir + "/v.md"};
     std::vector<std::string> lines = validate;
     lines.insert(lines.end(), {"--progress", "lines", "--progress-interval", "0"});
     const auto v = test::run_vibroimpact(lines);

@@ -58,19 +58,20 @@ toml::table toml_of(const nlohmann::json& object) {
     return t;
 }
 
-// Every case the test runs: the examples that set a horizon, and the files of tests/cases.
+// Every case the test runs: the examples and the files of tests/cases that set a horizon (a case
+// for pullin, whose transients take their own, has none).
 std::vector<std::string> transient_cases() {
     std::vector<std::string> out;
-    for (const auto& dir : fs::directory_iterator(test::source_path("examples"))) {
-        if (!dir.is_directory()) continue;
-        for (const auto& f : fs::directory_iterator(dir.path())) {
+    const auto add_transients = [&](const fs::path& folder) {
+        for (const auto& f : fs::directory_iterator(folder)) {
             if (f.path().extension() != ".toml") continue;
             if (read_case_file(f.path().string()).solver.horizon > 0.0) out.push_back(f.path().string());
         }
+    };
+    for (const auto& dir : fs::directory_iterator(test::source_path("examples"))) {
+        if (dir.is_directory()) add_transients(dir.path());
     }
-    for (const auto& f : fs::directory_iterator(test::source_path("tests/cases"))) {
-        if (f.path().extension() == ".toml") out.push_back(f.path().string());
-    }
+    add_transients(test::source_path("tests/cases"));
     std::sort(out.begin(), out.end());
     return out;
 }
