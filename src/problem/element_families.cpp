@@ -1,5 +1,7 @@
 #include "problem/element_families.hpp"
 
+#include "model/case_schema.hpp"
+
 #include "forces/midplane_stretching.hpp"
 #include "forces/point_load_element.hpp"
 #include "forces/support_contacts.hpp"
@@ -20,5 +22,14 @@ const std::vector<const ElementFamily*>& element_families() {
     };
     return families;
 }
+
+namespace {
+
+// Every family's own keys, registered before the first case is read.
+const bool kFamilyKeysRegistered = register_at_first_use([] {
+    for (const ElementFamily* family : element_families()) family->register_case_keys();
+});
+
+}  // namespace
 
 }  // namespace vi
