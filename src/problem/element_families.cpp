@@ -2,6 +2,7 @@
 
 #include "model/case_schema.hpp"
 
+#include "forces/hertz_contact.hpp"
 #include "forces/midplane_stretching.hpp"
 #include "forces/point_load_element.hpp"
 #include "forces/support_contacts.hpp"
@@ -14,6 +15,7 @@ namespace vi {
 const std::vector<const ElementFamily*>& element_families() {
     static const std::vector<const ElementFamily*> families{
         &support_contacts(),   // [[supports]]: plain or adhesive contacts
+        &hertz_contacts(),     // [[supports]] with law = "hertz"
         &point_loads(),        // [[loads]]
         &electrode_pads(),     // [[electrodes]]: the electrostatic force
         &dielectric_layers(),  // [[electrodes]] with a dielectric layer: contacts
