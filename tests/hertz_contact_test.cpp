@@ -17,6 +17,8 @@
 #include "impacts/simulation.hpp"
 #include "io/case_reader.hpp"
 #include "model/input_error.hpp"
+#include "report/contact_resistance.hpp"
+#include "report/transient_output.hpp"
 #include "support/run_command.hpp"
 #include "transient_fixtures.hpp"
 
@@ -158,6 +160,91 @@ TEST(HertzContact, StiffDimpleAgreesWithKelvinVoigtOfTheSameSecantStiffness) {
                 *k.summary.T2_first * 1e6, *h.summary.T_first * 1e6, *k.summary.T_first * 1e6);
     EXPECT_LT(std::abs(t2 - *k.summary.T2_first), 0.046 * t2);
     EXPECT_LT(std::abs(*h.summary.T_first - *k.summary.T_first), 0.046 * t2);
+}
+
+// Holm's constriction resistance of the elastic Hertz spot at three forces: a = (3 F R / (4 E*))^(1/3)
+// (Johnson 1985, eq. 4.22), R_c = rho / (2a) (Holm 1967); with a film, + sigma_f / (pi a^2); with a
+// hardness, the plastic radius sqrt(F / (pi H)) once it is the larger; with a mean free path, Wexler's
+// R = 4 rho lambda / (3 pi a^2) + Gamma(lambda / a) rho / (2a), which tends to Sharvin's term alone.
+TEST(HertzContact, HolmResistanceMatchesTheClosedFormAtThreeForces) {
+    const double star = effective_modulus(79e9, 0.42, 79e9, 0.42), k = gold_k(), rho = 2.2e-8;
+    const auto element = [&](const ContactResistance& m) {
+        return HertzContact("supports[0]", 0, 1.0, 0.0, 0.0, k, 0.0, kRadius, m);
+    };
+    const auto at_force = [&](const HertzContact& e, double F) {
+        const double q = -std::pow(F / k, 2.0 / 3.0), v = 0.0;
+        return e.contact_resistance(ElementState{0.0, &q, &v, nullptr});
+    };
+    ContactResistance holm;
+    holm.resistivity = rho;
+    ContactResistance film = holm;
+    film.film_resistivity = 1e-12;
+    ContactResistance hard = holm;
+    hard.hardness = 1e9;
+    ContactResistance wexler = holm;
+    wexler.mean_free_path = 38e-9;
+    for (const double F : {1e-6, 1e-5, 1e-4}) {
+        SCOPED_TRACE("F = " + std::to_string(F));
+        const double a = std::cbrt(3.0 * F * kRadius / (4.0 * star));
+        const double area = std::numbers::pi * a * a;
+        EXPECT_LT(rel(at_force(element(holm), F), rho / (2.0 * a)), 1e-12);
+        EXPECT_LT(rel(at_force(element(film), F), rho / (2.0 * a) + 1e-12 / area), 1e-12);
+        const double a_plastic = std::sqrt(F / (std::numbers::pi * hard.hardness));
+        EXPECT_LT(rel(at_force(element(hard), F), rho / (2.0 * std::max(a, a_plastic))), 1e-12);
+        const double kn = 38e-9 / a;
+        const double r_w = 4.0 * rho * 38e-9 / (3.0 * area) + (1.0 + 0.83 * kn) / (1.0 + 1.33 * kn) * rho / (2.0 * a);
+        EXPECT_LT(rel(at_force(element(wexler), F), r_w), 1e-12);
+    }
+    // The plastic radius takes over above F = (pi H)^3 (3 R / (4 E*))^2, 30 uN here: between the forces.
+    EXPECT_GT(std::sqrt(1e-4 / (std::numbers::pi * 1e9)), std::cbrt(3.0 * 1e-4 * kRadius / (4.0 * star)));
+    EXPECT_LT(std::sqrt(1e-6 / (std::numbers::pi * 1e9)), std::cbrt(3.0 * 1e-6 * kRadius / (4.0 * star)));
+    // Ballistic limit: lambda >> a leaves Sharvin's 4 rho lambda / (3 pi a^2).
+    ContactResistance ballistic = holm;
+    ballistic.mean_free_path = 1e-3;
+    const double a = std::cbrt(3.0 * 1e-5 * kRadius / (4.0 * star));
+    EXPECT_LT(rel(at_force(element(ballistic), 1e-5), 4.0 * rho * 1e-3 / (3.0 * std::numbers::pi * a * a)), 1e-3);
+    // Open, and without a model.
+    const double q = 1e-9, v = 0.0;
+    EXPECT_TRUE(std::isinf(element(holm).contact_resistance(ElementState{0.0, &q, &v, nullptr})));
+    EXPECT_TRUE(std::isnan(HertzContact("supports[0]", 0, 1.0, 0.0, 0.0, k, 0.0, kRadius).contact_resistance(
+        ElementState{0.0, &q, &v, nullptr})));
+}
+
+// The switch example's resistance: inf in the CSV while open, the element's value while closed; the
+// summary's end value and the time from which it stays below r_on, read off the same samples.
+TEST(HertzContact, ResistanceHistoryAndSummary) {
+    const Case c = read_case_file(test::source_path("examples/switch/cantilever_switch_hertz.toml"));
+    const SimulationRun run = run_simulation(c);
+    const std::vector<ResistanceSeries> series = contact_resistances(run.built.model, run.result);
+    ASSERT_EQ(series.size(), 1u);
+    const ResistanceSeries& s = series[0];
+    const TimeHistory& h = run.result.history;
+    ASSERT_EQ(s.ohm.size(), h.t.size());
+    EXPECT_EQ(s.r_on, 0.5);
+    std::size_t open = 0, closed = 0, last_above = 0;
+    for (std::size_t i = 0; i < h.t.size(); ++i) {
+        if (h.contact_force[0][i] > 0.0) {
+            ++closed;
+            EXPECT_TRUE(std::isfinite(s.ohm[i]));
+        } else {
+            ++open;
+            EXPECT_TRUE(std::isinf(s.ohm[i]));
+        }
+        if (!(s.ohm[i] < 0.5)) last_above = i;
+    }
+    EXPECT_GT(open, 100u);
+    EXPECT_GT(closed, 100u);
+    const nlohmann::json j = transient_summary_json(c, run.built, run.result, run.summary)["contact_resistance"][0];
+    EXPECT_EQ(j["contact"], "supports[0]");
+    EXPECT_EQ(j["closed_at_end"], true);
+    EXPECT_EQ(j["resistance_end_ohm"].get<double>(), s.ohm.back());
+    EXPECT_EQ(j["below_r_on_from_s"].get<double>(), h.t[last_above + 1]);
+    EXPECT_GT(h.t[last_above + 1], run.summary.impacts.front().t_on);
+    const std::string csv = history_csv(run.result, "tip", false, series).str();
+    EXPECT_NE(csv.find("contact0_resistance_ohm\n"), std::string::npos);
+    EXPECT_NE(csv.find(",inf\n"), std::string::npos);
+    std::printf("switch on a Hertz dimple: R at the end %.4g ohm, below r_on = 0.5 ohm from %.4g us\n",
+                s.ohm.back(), j["below_r_on_from_s"].get<double>() * 1e6);
 }
 
 std::string error_of(const std::string& text) {

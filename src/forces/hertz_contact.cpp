@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <numbers>
 #include <stdexcept>
 
 #include "forces/support_contacts.hpp"
@@ -54,9 +55,21 @@ double hunt_crossley_damping(double restitution, double speed) {
     return a / speed;
 }
 
+double ContactResistance::of_radius(double a) const {
+    if (!(a > 0.0)) return std::numeric_limits<double>::infinity();
+    const double area = std::numbers::pi * a * a;
+    double r = resistivity / (2.0 * a);
+    if (mean_free_path > 0.0) {
+        const double kn = mean_free_path / a;
+        r = 4.0 * resistivity * mean_free_path / (3.0 * area) + (1.0 + 0.83 * kn) / (1.0 + 1.33 * kn) * r;
+    }
+    return r + film_resistivity / area;
+}
+
 HertzContact::HertzContact(std::string name, int dof, double sign, double surface, double x, double k, double alpha,
-                           double radius)
-    : name_(std::move(name)), dofs_{dof}, sign_(sign), surface_(surface), x_(x), k_(k), alpha_(alpha), radius_(radius) {
+                           double radius, std::optional<ContactResistance> resistance)
+    : name_(std::move(name)), dofs_{dof}, sign_(sign), surface_(surface), x_(x), k_(k), alpha_(alpha), radius_(radius),
+      resistance_(resistance) {
     if (dof < 0 || std::abs(sign) != 1.0 || !std::isfinite(surface) || !(k > 0.0) || !std::isfinite(k) ||
         !(alpha >= 0.0) || !std::isfinite(alpha) || !(radius > 0.0) || !std::isfinite(radius)) {
         throw std::invalid_argument(name_ + ": inconsistent Hertz contact data");
@@ -130,6 +143,23 @@ ContactReading HertzContact::contact_reading(const ElementState& s) const {
     return {penetration(s), force_magnitude(s), s.v[0]};
 }
 
+double HertzContact::contact_radius(double d) const {
+    if (!(d > 0.0)) return 0.0;
+    const double elastic = std::sqrt(radius_ * d);
+    if (!resistance_ || !(resistance_->hardness > 0.0)) return elastic;
+    const double plastic = std::sqrt(k_ * d * std::sqrt(d) / (std::numbers::pi * resistance_->hardness));
+    return std::max(elastic, plastic);
+}
+
+double HertzContact::contact_resistance(const ElementState& s) const {
+    if (!resistance_) return std::numeric_limits<double>::quiet_NaN();
+    return resistance_->of_radius(contact_radius(penetration(s)));
+}
+
+double HertzContact::on_resistance() const {
+    return resistance_ ? resistance_->r_on : std::numeric_limits<double>::quiet_NaN();
+}
+
 namespace {
 
 const char* const kHertz = "hertz";
@@ -184,6 +214,43 @@ std::vector<KeySpec> hertz_keys() {
     return {law, radius, star, e2, nu2, e, v};
 }
 
+// The contact resistance's keys (docs/hertz-contact.md §4): numbers in SI (no unit text).
+std::vector<KeySpec> resistance_keys() {
+    const KeyCondition hertz = when_chosen("supports", "law", {kHertz});
+    const std::string needs = "needs resistivity (the contact metal's, which turns the resistance on)";
+    KeySpec rho = number_key("resistivity", Dimension::dimensionless, "ohm m");
+    rho.in(positive()).only(hertz).means("rho of the contact metal (both bodies); gives the contact's resistance");
+    rho.default_text = "- (no resistance)";
+    KeySpec film = number_key("film_resistivity", Dimension::dimensionless, "ohm m^2");
+    film.otherwise(0.0).in(non_negative()).only(hertz).needing("resistivity", needs)
+        .means("a surface film's resistance times its area: sigma_f / (pi a^2) in series");
+    KeySpec hard = number_key("hardness", Dimension::pressure);
+    hard.in(positive()).only(hertz).needing("resistivity", needs)
+        .means("H: the fully plastic radius sqrt(F / (pi H)) where it exceeds the elastic one");
+    hard.default_text = "- (elastic radius)";
+    KeySpec mfp = number_key("mean_free_path", Dimension::length);
+    mfp.in(positive()).only(hertz).needing("resistivity", needs)
+        .means("the electrons' mean free path: Sharvin's term by Wexler's interpolation");
+    mfp.default_text = "- (Holm's term alone)";
+    KeySpec on = number_key("r_on", Dimension::dimensionless, "ohm");
+    on.in(positive()).only(hertz).needing("resistivity", needs)
+        .means("the resistance below which the contact counts as on (summary: the time it stays below)");
+    on.default_text = "-";
+    return {rho, film, hard, mfp, on};
+}
+
+// The resistance model of support entry p, where it gives a resistivity.
+std::optional<ContactResistance> resistance_of(const ParameterSet& p) {
+    if (p.numbers.count("resistivity") == 0) return std::nullopt;
+    ContactResistance r;
+    r.resistivity = p.number("resistivity");
+    r.film_resistivity = p.number("film_resistivity", 0.0);
+    r.hardness = p.number("hardness", 0.0);
+    r.mean_free_path = p.number("mean_free_path", 0.0);
+    r.r_on = p.number("r_on", std::numeric_limits<double>::quiet_NaN());
+    return r;
+}
+
 class HertzContacts final : public ElementFamily {
 public:
     [[nodiscard]] std::string_view name() const override { return "Hertz contacts"; }
@@ -196,7 +263,10 @@ public:
         return out;
     }
 
-    void register_case_keys() const override { register_keys("supports", hertz_keys()).keep(); }
+    void register_case_keys() const override {
+        register_keys("supports", hertz_keys()).keep();
+        register_keys("supports", resistance_keys()).keep();
+    }
 
 private:
     static ForceElementPtr contact(const ElementSource& src, std::size_t k) {
@@ -211,7 +281,7 @@ private:
         const double e = p.number("restitution", 1.0);
         const double alpha = e < 1.0 ? hunt_crossley_damping(e, p.number("reference_speed")) : 0.0;
         return std::make_shared<HertzContact>(g.name, g.dof, g.sign, g.surface, g.x, hertz_stiffness(star, radius), alpha,
-                                              radius);
+                                              radius, resistance_of(p));
     }
 };
 

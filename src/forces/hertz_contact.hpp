@@ -3,6 +3,8 @@
 // F = k d^(3/2) with Hunt-Crossley damping, unilateral; its family, which makes one for every
 // [[supports]] entry with law = "hertz", and that law's case keys (docs/hertz-contact.md).
 
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,6 +30,24 @@ double hunt_crossley_restitution(double a);
 // the force never pulls), divided by v.
 double hunt_crossley_damping(double restitution, double speed);
 
+// The electrical resistance of a closed contact of radius a (docs/hertz-contact.md §4): Holm's
+// constriction rho / (2a) of a circular spot between two bodies of resistivity rho (Holm, Electric
+// Contacts, 1967, §4), with Wexler's interpolation to Sharvin's ballistic term where a mean free path
+// lambda is given, R = 4 rho lambda / (3 pi a^2) + Gamma(lambda / a) rho / (2a) (Sharvin, Sov. Phys.
+// JETP 21 (1965) 655; Wexler, Proc. Phys. Soc. 89 (1966) 927), Gamma(K) = (1 + 0.83 K) / (1 + 1.33 K)
+// (Mikrajuddin et al., Mater. Sci. Semicond. Process. 2 (1999) 321), plus a film's
+// sigma_f / (pi a^2). The radius is the elastic one, sqrt(R d), or with a hardness H the fully plastic
+// sqrt(F / (pi H)) where that is larger (the mean pressure has reached H).
+struct ContactResistance {
+    double resistivity = 0.0;       // rho [ohm m], > 0
+    double film_resistivity = 0.0;  // sigma_f [ohm m^2], >= 0
+    double hardness = 0.0;          // H [Pa]; 0: the elastic radius alone
+    double mean_free_path = 0.0;    // lambda [m]; 0: Holm's term alone
+    double r_on = std::numeric_limits<double>::quiet_NaN();  // the on threshold [ohm]; NaN: none
+    // R [ohm] of a spot of radius a [m] (+inf for a <= 0).
+    [[nodiscard]] double of_radius(double a) const;
+};
+
 // Surface at height `surface` [m] on side `sign` (+1 below the beam, -1 above) at x [m]; the
 // beam's DOF `dof` penetrates it by d = sign (surface - q). Closed: F = k d^(3/2) (1 + alpha dd/dt)
 // (d^(3/2) taken as 0 where d < 0), pushing the beam by sign F. Mode 0: open, mode 1: closed; it
@@ -35,9 +55,10 @@ double hunt_crossley_damping(double restitution, double speed);
 // (F then falls through 0: no tension).
 class HertzContact final : public ForceElement {
 public:
-    // k > 0 [N/m^(3/2)], alpha >= 0 [s/m], radius > 0 [m] (the length the switching functions use).
+    // k > 0 [N/m^(3/2)], alpha >= 0 [s/m], radius > 0 [m] (the dimple's R); with a resistance model
+    // where one is given.
     HertzContact(std::string name, int dof, double sign, double surface, double x, double k, double alpha,
-                 double radius);
+                 double radius, std::optional<ContactResistance> resistance = std::nullopt);
 
     [[nodiscard]] const std::string& name() const override { return name_; }
     [[nodiscard]] std::string kind() const override { return "Hertz contact"; }
@@ -67,6 +88,11 @@ public:
     [[nodiscard]] bool is_contact() const override { return true; }
     [[nodiscard]] ContactReading contact_reading(const ElementState& s) const override;
     [[nodiscard]] double position() const override { return x_; }
+    // With a resistance model: R of the spot at penetration d (+inf for d <= 0); else NaN.
+    [[nodiscard]] double contact_resistance(const ElementState& s) const override;
+    [[nodiscard]] double on_resistance() const override;
+    // The contact radius a [m] at penetration d [m]: sqrt(R d), or the plastic one where larger.
+    [[nodiscard]] double contact_radius(double d) const;
 
     [[nodiscard]] double penetration(const ElementState& s) const { return sign_ * (surface_ - s.q[0]); }
     [[nodiscard]] double penetration_rate(const ElementState& s) const { return -sign_ * s.v[0]; }
@@ -79,6 +105,7 @@ private:
     std::string name_;
     std::vector<int> dofs_;
     double sign_, surface_, x_, k_, alpha_, radius_;
+    std::optional<ContactResistance> resistance_;
 };
 
 // The family: one HertzContact per [[supports]] entry with law = "hertz"; it registers the `law`
