@@ -162,6 +162,39 @@ TEST(HertzContact, StiffDimpleAgreesWithKelvinVoigtOfTheSameSecantStiffness) {
     EXPECT_LT(std::abs(*h.summary.T_first - *k.summary.T_first), 0.046 * t2);
 }
 
+// The static solver on a Hertz support: the cantilever resting on a dimple pushed 50 nm into its
+// unloaded tip carries F = k d^(3/2) = (3 E I / l^3) (p - d) (the Hermite elements' tip stiffness is
+// exact), solved here by bisection on d. The static solve stops at a residual of 1e-12 of the largest
+// term of K q (0.2 N of the nodes' shear against 0.4 uN at the tip), so F agrees to about 1e-6
+// (measured 1.6e-6), and d, a small difference of displacements, to the same.
+TEST(HertzContact, StaticEquilibriumOnAPrestressedDimple) {
+    Case c = read_case_file(test::source_path("examples/paper/free_impact_tip.toml"));
+    c.solver.method = SolverSettings::Method::cvode;
+    c.solver.horizon = 1e-6;
+    c.initial.kind = InitialState::Kind::rest;
+    Support& s = c.supports[0];
+    s.surface = 50e-9;
+    s.surface_key = "prestress";
+    s.params.texts["law"] = "hertz";
+    s.params.numbers["radius"] = kRadius;
+    s.params.numbers["youngs_modulus"] = 207e9;
+    s.params.numbers["poisson_ratio"] = 0.31;
+    const SimulationRun run = run_simulation(c);
+    const double k = hertz_stiffness(effective_modulus(207e9, 0.31, 207e9, 0.31), kRadius);
+    const double ei = c.material.youngs_modulus * c.beam.width * std::pow(c.beam.thickness, 3) / 12.0;
+    const double k_tip = 3.0 * ei / std::pow(c.beam.length, 3);
+    double lo = 0.0, hi = 50e-9;
+    for (int i = 0; i < 200 && hi - lo > 1e-25; ++i) {
+        const double d = 0.5 * (lo + hi);
+        (k * std::pow(d, 1.5) > k_tip * (50e-9 - d) ? hi : lo) = d;
+    }
+    const double d = 0.5 * (lo + hi);
+    ASSERT_FALSE(run.result.history.contact_force.empty());
+    EXPECT_LT(rel(run.result.history.contact_force[0][0], k * std::pow(d, 1.5)), 1e-5);
+    EXPECT_LT(rel(50e-9 - run.result.history.contact_v[0][0], d), 1e-5);
+    EXPECT_GT(d, 1e-10);  // the dimple is pressed in, not just touched
+}
+
 // Holm's constriction resistance of the elastic Hertz spot at three forces: a = (3 F R / (4 E*))^(1/3)
 // (Johnson 1985, eq. 4.22), R_c = rho / (2a) (Holm 1967); with a film, + sigma_f / (pi a^2); with a
 // hardness, the plastic radius sqrt(F / (pi H)) once it is the larger; with a mean free path, Wexler's
