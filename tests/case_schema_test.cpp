@@ -41,10 +41,10 @@ TEST(CaseSchemaDocs, KeyTablesOfCaseFilesAreGeneratedFromTheSchema) {
     const std::string path = std::string(VI_SOURCE_DIR) + "/docs/case-files.md";
     const std::string page = read_file(path);
     ASSERT_FALSE(page.empty()) << path;
-    EXPECT_TRUE(undocumented_sections(page, builtin_case_schema()).empty())
+    EXPECT_TRUE(undocumented_sections(page, case_schema()).empty())
         << "a section of the schema has no <!-- case-keys:NAME --> block in docs/case-files.md: "
-        << undocumented_sections(page, builtin_case_schema()).front();
-    const std::string fresh = with_case_key_tables(page, builtin_case_schema());
+        << undocumented_sections(page, case_schema()).front();
+    const std::string fresh = with_case_key_tables(page, case_schema());
     if (fresh == page) return;
     if (std::getenv("VI_UPDATE_DOCS") != nullptr) {
         std::ofstream(path, std::ios::binary) << fresh;
@@ -96,10 +96,11 @@ TEST(CaseSchema, DocumentedDefaultsAreTheStructsDefaults) {
     EXPECT_GT(checked, 40);
 }
 
-// Every key has what the reader, the checks, the paths, the writers and the docs need.
+// Every key has what the reader, the checks, the paths, the writers and the docs need: the built-in
+// ones and those the element families register.
 TEST(CaseSchema, EveryKeyIsCompletelyDescribed) {
     std::size_t keys = 0;
-    for (const SectionSpec& s : builtin_case_schema().sections) {
+    for (const SectionSpec& s : case_schema().sections) {
         ASSERT_TRUE(s.count && s.add) << s.name;
         for (const KeySpec& k : s.keys) {
             SCOPED_TRACE(s.name + "." + k.name);
@@ -145,7 +146,7 @@ TEST(CaseSchema, WrittenCaseReadsBackToTheSameCase) {
     }
 }
 
-// A toy section ([[springs]]) and a law of [[supports]] (law = "toy" with its own key), registered
+// A toy section ([[springs]]) and a selector of [[supports]] (toy_law = "toy" with its own key), registered
 // here as an element family would register them from its own file: read, checked (the range, the
 // magnitude window, the section's own rule), swept by path, resolved and documented.
 class ToyRegistration : public ::testing::Test {
@@ -177,10 +178,10 @@ protected:
         };
         section_ = register_section(std::move(springs));
 
-        KeySpec support_law = choice_key("law", {"kelvin-voigt", "toy"});
-        support_law.otherwise(std::string("kelvin-voigt")).means("the contact's force law");
+        KeySpec support_law = choice_key("toy_law", {"none", "toy"});
+        support_law.otherwise(std::string("none")).means("the toy's force law");
         KeySpec exponent = number_key("toy_exponent", Dimension::dimensionless);
-        exponent.otherwise(1.5).in(positive()).only(when_chosen("supports", "law", {"toy"})).means("the toy law's power");
+        exponent.otherwise(1.5).in(positive()).only(when_chosen("supports", "toy_law", {"toy"})).means("the toy law's power");
         law_ = register_keys("supports", {support_law, exponent});
     }
 
@@ -188,7 +189,7 @@ protected:
     SchemaRegistration law_;
 };
 
-const std::string kToySupport = "[[supports]]\nposition = 1.0\nstiffness = \"50 N/m\"\nlaw = \"toy\"\ntoy_exponent = 2.5\n";
+const std::string kToySupport = "[[supports]]\nposition = 1.0\nstiffness = \"50 N/m\"\ntoy_law = \"toy\"\ntoy_exponent = 2.5\n";
 const std::string kSprings = "[[springs]]\nposition = 0.5\nstiffness = \"2 kN/m\"\n"    // lines 16-18
                              "[[springs]]\nposition = 0.25\nstiffness = 7\nlaw = \"cubic\"\ncubic_coefficient = 0.1\n";
 
@@ -199,7 +200,7 @@ TEST_F(ToyRegistration, RegisteredKeysAreReadAndChecked) {
     EXPECT_EQ(c.sections.at("springs")[0].text("law"), "linear");
     EXPECT_EQ(c.sections.at("springs")[1].number("cubic_coefficient"), 0.1);
     EXPECT_EQ(c.sections.at("springs")[0].number("damped"), 1.0);
-    EXPECT_EQ(c.supports[0].params.text("law"), "toy");
+    EXPECT_EQ(c.supports[0].params.text("toy_law"), "toy");
     // An entry built in code, without the schema's defaults set, reads them through the keys.
     Case code;
     code.sections["springs"].emplace_back();
@@ -222,8 +223,8 @@ TEST_F(ToyRegistration, RegisteredKeysAreReadAndChecked) {
     EXPECT_EQ(error_of(base + "[[springs]]\nposition = 0.5\nstiffness = 1\n[[springs]]\nposition = 0.5\nstiffness = 2\n"),
               "toy.toml:20: springs[1].position: at the place of springs[0]");
     EXPECT_EQ(error_of(test::kBaseCase + "[[supports]]\nposition = 1.0\nstiffness = 1\ntoy_exponent = 2\n"),
-              "toy.toml:14: supports[0].toy_exponent: only with supports[0].law = \"toy\"");
-    EXPECT_EQ(error_of(test::kBaseCase + "[[supports]]\nposition = 1.0\nstiffness = 1\nlaw = \"toy\"\ntoy_exponent = 0\n"),
+              "toy.toml:14: supports[0].toy_exponent: only with supports[0].toy_law = \"toy\"");
+    EXPECT_EQ(error_of(test::kBaseCase + "[[supports]]\nposition = 1.0\nstiffness = 1\ntoy_law = \"toy\"\ntoy_exponent = 0\n"),
               "toy.toml:15: supports[0].toy_exponent: must be positive");
 }
 

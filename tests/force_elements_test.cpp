@@ -19,6 +19,7 @@
 #include "forces/adhesive_contact.hpp"
 #include "forces/dielectric_contact.hpp"
 #include "forces/force_set.hpp"
+#include "forces/hertz_contact.hpp"
 #include "fem/beam_element.hpp"
 #include "forces/electrostatic_pad.hpp"
 #include "forces/kelvin_voigt_contact.hpp"
@@ -182,6 +183,14 @@ std::vector<Named> elements() {
         {"electrode above, parallel plate", [] { return electrode(1.0, Fringing::none); }, false},
         {"electrode below, Meijs-Fokkema fringing", [] { return electrode(-1.0, Fringing::meijs_fokkema); }, false},
         {"mid-plane stretching", [] { return stretching(); }, false},
+        // k of gold on gold through R = 2 um (9.05e7 N/m^(3/2)); alpha 0.5 s/m keeps 1 + alpha dd/dt
+        // in (0.75, 1.25) over the samples' +-0.5 m/s.
+        {"Hertz contact below, Hunt-Crossley damped",
+         [] { return std::make_shared<HertzContact>("supports[4]", 0, 1.0, 0.2e-6, 1e-4, 9.05e7, 0.5, 2e-6); },
+         false},
+        {"Hertz contact above, undamped",
+         [] { return std::make_shared<HertzContact>("supports[5]", 0, -1.0, -0.3e-6, 1e-4, 9.05e7, 0.0, 2e-6); },
+         false},
     };
 }
 

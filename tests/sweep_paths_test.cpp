@@ -74,11 +74,32 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
     Case by_velocity = full;  // solver.settle_velocity means something only with the velocity rule
     by_velocity.solver.settle_rule = SolverSettings::SettleRule::velocity;
     by_velocity.solver.settle_velocity = 1e-3;
+    // A Hertz support (supports[1].law = "hertz", a law its family registers): its keys apply there,
+    // the counter-surface's modulus and Poisson ratio only without effective_modulus.
+    Case hertz = full;
+    hertz.supports[1].params.texts["law"] = "hertz";
+    Case hertz_star = hertz;
+    hertz_star.supports[1].params.numbers["effective_modulus"] = 5e10;
+    const auto hertz_key = [](const std::string& t) {
+        for (const char* key : {".radius", ".restitution", ".reference_speed", ".resistivity", ".film_resistivity",
+                                ".hardness", ".mean_free_path", ".r_on", ".youngs_modulus", ".poisson_ratio"}) {
+            if (t.rfind("supports[", 0) == 0 && t.size() > std::string(key).size() &&
+                t.compare(t.size() - std::string(key).size(), std::string::npos, key) == 0) {
+                return true;
+            }
+        }
+        return false;
+    };
     int checked = 0;
     for (const std::string& form : case_path_forms()) {
         std::string text = instance(form);
         const bool needs_alpha = text == "damping.alpha" || text == "damping.beta" || text == "initial.force";
-        const Case& base = needs_alpha ? alpha : text == "solver.settle_velocity" ? by_velocity : full;
+        const bool star = text.rfind("supports[", 0) == 0 && text.find(".effective_modulus") != std::string::npos;
+        const Case& base = needs_alpha                         ? alpha
+                           : text == "solver.settle_velocity" ? by_velocity
+                           : star                              ? hertz_star
+                           : hertz_key(text)                   ? hertz
+                                                               : full;
         if (text.rfind("loads[1].", 0) == 0 && (text.find("frequency") != std::string::npos ||
                                                 text.find("phase") != std::string::npos ||
                                                 text.find("offset") != std::string::npos)) {
@@ -103,8 +124,8 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
     // 47, the adhesion keys (3), the air keys (4), solver.settle_velocity and the waveform's shape
     // keys beyond t_on and frequency (rise, hold, fall, level, phase, bias); since every number of the
     // schema is a path, the electrode's dielectric_modulus, work_of_adhesion, adhesion_range and
-    // width, and the film's from, to and gap.
-    EXPECT_EQ(checked, 68);
+    // width, and the film's from, to and gap; the Hertz law's 11 numbers.
+    EXPECT_EQ(checked, 79);
 }
 
 TEST(SweepCasePaths, ValuesLandWhereTheCaseFileWouldPutThem) {

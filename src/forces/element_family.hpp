@@ -47,6 +47,9 @@ public:
     // "electrodes[1].dielectric"). Throws InputError naming the key a case gives that the model
     // cannot have (a support on a node an end condition holds).
     [[nodiscard]] virtual std::vector<FamilyElement> elements(const ElementSource& source) const = 0;
+    // Registers the case keys it reads that are not built in (register_section, register_keys),
+    // for the program's life; called once, before the first case is read.
+    virtual void register_case_keys() const {}
 };
 
 }  // namespace vi

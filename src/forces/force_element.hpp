@@ -4,6 +4,7 @@
 // stretching). Solvers, the statics and the energy ledger see forces only through this interface
 // (docs/architecture.md).
 
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -153,6 +154,13 @@ public:
     [[nodiscard]] virtual ContactReading contact_reading(const ElementState& /*s*/) const { return {}; }
     // Position along the beam [m] where it acts (for output), or a negative number.
     [[nodiscard]] virtual double position() const { return -1.0; }
+    // A contact's electrical resistance at state s, taken as closed [ohm] (+inf where the surfaces do
+    // not touch); NaN for an element without a resistance model.
+    [[nodiscard]] virtual double contact_resistance(const ElementState& /*s*/) const {
+        return std::numeric_limits<double>::quiet_NaN();
+    }
+    // The resistance below which such a contact counts as on [ohm]; NaN when none is set.
+    [[nodiscard]] virtual double on_resistance() const { return std::numeric_limits<double>::quiet_NaN(); }
 };
 
 using ForceElementPtr = std::shared_ptr<const ForceElement>;

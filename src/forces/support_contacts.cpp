@@ -21,7 +21,9 @@ public:
 
     [[nodiscard]] std::vector<FamilyElement> elements(const ElementSource& src) const override {
         std::vector<FamilyElement> out;
-        for (std::size_t k = 0; k < src.c.supports.size(); ++k) out.push_back({contact(src, k), {"supports", k}});
+        for (std::size_t k = 0; k < src.c.supports.size(); ++k) {
+            if (src.c.supports[k].linear_law()) out.push_back({contact(src, k), {"supports", k}});
+        }
         return out;
     }
 
@@ -38,28 +40,35 @@ private:
 
     static ForceElementPtr contact(const ElementSource& src, std::size_t k) {
         const Support& sup = src.c.supports[k];
-        const System& s = src.system;
-        const std::string name = "supports[" + std::to_string(k) + "]";
-        const int r = s.support_dof[k];
-        if (r < 0) {
-            throw InputError(name + ".position: the support sits on a node held by an end condition (v never moves there)");
-        }
-        const int dof = src.bending_position[static_cast<std::size_t>(r)];
-        const double cc = damping(src, k, name, dof);
-        const double sign = sup.side == Side::below ? 1.0 : -1.0;
-        const double surface = sup.side == Side::below ? sup.surface : -sup.surface;
-        const double x = s.mesh.x[static_cast<std::size_t>(s.mesh.support_nodes[k])];
+        const SupportGeometry g = support_geometry(src, k);
+        const double cc = damping(src, k, g.name, g.dof);
         if (sup.adhesion == Adhesion::none) {
-            return std::make_shared<KelvinVoigtContact>(name, dof, sign, surface, sup.stiffness, cc, x);
+            return std::make_shared<KelvinVoigtContact>(g.name, g.dof, g.sign, g.surface, sup.stiffness, cc, g.x);
         }
         // One element, not a second one beside the contact: adhesion changes when the contact opens,
         // and an element's mode is its own (docs/adhesion.md §3).
-        return std::make_shared<AdhesiveContact>(name, dof, sign, surface, sup.stiffness, cc, x, sup.pull_off_force(),
+        return std::make_shared<AdhesiveContact>(g.name, g.dof, g.sign, g.surface, sup.stiffness, cc, g.x, sup.pull_off_force(),
                                                  sup.adhesion_range, sup.adhesion == Adhesion::dmt ? "DMT" : "JKR");
     }
 };
 
 }  // namespace
+
+SupportGeometry support_geometry(const ElementSource& src, std::size_t k) {
+    const Support& sup = src.c.supports[k];
+    const System& s = src.system;
+    SupportGeometry g;
+    g.name = "supports[" + std::to_string(k) + "]";
+    const int r = s.support_dof[k];
+    if (r < 0) {
+        throw InputError(g.name + ".position: the support sits on a node held by an end condition (v never moves there)");
+    }
+    g.dof = src.bending_position[static_cast<std::size_t>(r)];
+    g.sign = sup.side == Side::below ? 1.0 : -1.0;
+    g.surface = sup.side == Side::below ? sup.surface : -sup.surface;
+    g.x = s.mesh.x[static_cast<std::size_t>(s.mesh.support_nodes[k])];
+    return g;
+}
 
 const ElementFamily& support_contacts() {
     static const SupportContacts family;

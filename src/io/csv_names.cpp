@@ -28,7 +28,7 @@ const std::vector<Suffix>& suffixes() {
             {"_khz", "kHz"}, {"_hz", "Hz"}, {"_rad", "rad"}, {"_pa", "Pa"}, {"_kg", "kg"},
             {"_us", "µs"}, {"_ns", "ns"}, {"_ms", "ms"}, {"_um", "µm"}, {"_nm", "nm"}, {"_mm", "mm"}, {"_un", "µN"},
             {"_pj", "pJ"}, {"_ff", "fF"}, {"_s", "s"}, {"_m", "m"}, {"_n", "N"}, {"_j", "J"}, {"_w", "W"},
-            {"_v", "V"}, {"_f", "F"}, {"_k", "K"},
+            {"_v", "V"}, {"_f", "F"}, {"_k", "K"}, {"_ohm_m2", "Ω m²"}, {"_ohm_m", "Ω m"}, {"_ohm", "Ω"},
         };
         std::stable_sort(v.begin(), v.end(), [](const Suffix& a, const Suffix& b) {
             return std::string_view(a.suffix).size() > std::string_view(b.suffix).size();
@@ -54,6 +54,7 @@ const std::vector<std::string_view>& dimensionless() {
         "ratio", "ratio_#", "ratios[#]", "over_peak", "over_sigma", "tau", "tau#", "tau_p", "z_max", "z_min", "z_equilibrium",
         "z_top", "amplitude", "Y_#", "Phi_#", "Y_#_#", "Phi_#_#", "knudsen", "squeeze_number", "q_modal",
         "q_ringdown", "unproven_excess", "offset", "permittivity", "tolerance", "rtol",
+        "restitution",  // a coefficient of restitution
         "level",  // a two-step drive's first level, a fraction of the voltage
         // text
         "status", "stage", "kind", "law", "verdict", "reason", "feature", "solver", "state",
@@ -96,7 +97,8 @@ std::string csv_unit_suffix(std::string_view unit) {
         {"m", "_m"},         {"s", "_s"},           {"N", "_n"},         {"Pa", "_pa"},     {"kg/m^3", "_kg_m3"},
         {"N/m", "_n_m"},     {"N s/m", "_n_s_m"},   {"J/m^2", "_j_m2"},  {"1/s", "_per_s"}, {"m/s", "_m_s"},
         {"Hz", "_hz"},       {"rad", "_rad"},       {"V", "_v"},         {"K", "_k"},       {"Pa s", "_pa_s"},
-        {"x/l", "_over_l"},  {"periods", "_periods"}, {"-", ""},
+        {"x/l", "_over_l"},  {"periods", "_periods"}, {"-", ""}, {"ohm", "_ohm"}, {"ohm m", "_ohm_m"},
+        {"ohm m^2", "_ohm_m2"},
     };
     for (const auto& [u, suffix] : si) {
         if (u == unit) return std::string(suffix);

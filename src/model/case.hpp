@@ -73,6 +73,9 @@ struct Support {
     double contact_radius = 0.0;             // R of the contacting asperity or sphere [m]
     double adhesion_range = kDefaultAdhesionRange;  // delta [m]
     ParameterSet params;                     // values of keys registered for supports (a law's own)
+    // Whether its contact is the built-in linear (Kelvin-Voigt) law, plain or adhesive: true unless a
+    // law registered by a force family is chosen (params' `law`).
+    [[nodiscard]] bool linear_law() const { return params.text("law", "kelvin-voigt") == "kelvin-voigt"; }
     // The pull-off force F_po [N]: 2 pi R w (DMT), 1.5 pi R w (JKR), 0 without adhesion.
     [[nodiscard]] double pull_off_force() const;
 };

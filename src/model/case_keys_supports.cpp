@@ -36,16 +36,24 @@ void add_surface_keys(SectionSpec& s) {
     pre.set_refuses_out_of_range = true;
 }
 
+// The keys of the built-in linear law (Kc, Cc, adhesion): a law a force family registers
+// (supports[i].law) brings its own.
+KeyCondition linear_law() {
+    return when<Support>([](const Support& x) { return x.linear_law(); }, {"law"},
+                         "only with $.law = \"kelvin-voigt\" (the linear contact)", "",
+                         "`law = \"kelvin-voigt\"` (the default)");
+}
+
 // damping and damping_ratio give Cc two ways: setting one clears the other.
 void add_damper_keys(SectionSpec& s) {
-    KeySpec& d = s.add_key(number_key("damping", Dimension::damping)).otherwise(0.0).in(non_negative()).means("Cc");
+    KeySpec& d = s.add_key(number_key("damping", Dimension::damping)).otherwise(0.0).in(non_negative()).only(linear_law()).means("Cc");
     d.get_number = [](const Case& c, std::size_t i, std::size_t) { return c.supports[i].damping; };
     d.set_number = [](Case& c, std::size_t i, std::size_t, double v) {
         c.supports[i].damping = v;
         c.supports[i].damping_ratio.reset();
     };
     d.is_set = [](const Case& c, std::size_t i) { return !c.supports[i].damping_ratio.has_value(); };
-    KeySpec& z = s.add_key(number_key("damping_ratio", Dimension::dimensionless)).in(non_negative());
+    KeySpec& z = s.add_key(number_key("damping_ratio", Dimension::dimensionless)).in(non_negative()).only(linear_law());
     z.means("Cc given as a damping ratio zeta_c instead (below)");
     z.default_text = "unset";
     bind_optional<Support>(z, [](Support& x) -> std::optional<double>& { return x.damping_ratio; });
@@ -56,7 +64,7 @@ void add_damper_keys(SectionSpec& s) {
 }
 
 void add_adhesion_keys(SectionSpec& s) {
-    KeySpec& law = s.add_key(choice_key("adhesion", {"none", "dmt", "jkr"})).otherwise(std::string("none"));
+    KeySpec& law = s.add_key(choice_key("adhesion", {"none", "dmt", "jkr"})).otherwise(std::string("none")).only(linear_law());
     law.means("the contact's adhesion law: `\"none\"`, `\"dmt\"` (F_po = 2 pi R w) or `\"jkr\"` (F_po = 1.5 pi R w); "
               "[adhesion.md](adhesion.md)");
     bind_choice<Support>(law, [](Support& x) -> Adhesion& { return x.adhesion; },
@@ -90,7 +98,7 @@ SectionSpec supports_section() {
                              .means("`\"below\"` pushes the beam up (+v), `\"above\"` pushes it down"),
                          [](Support& x) -> Side& { return x.side; }, std::vector<Side>{Side::below, Side::above});
     add_surface_keys(s);
-    bind_member(s.add_key(number_key("stiffness", Dimension::stiffness)).require().in(positive()).means("Kc"),
+    bind_member(s.add_key(number_key("stiffness", Dimension::stiffness)).require().in(positive()).only(linear_law()).means("Kc"),
                 &Support::stiffness);
     add_damper_keys(s);
     add_adhesion_keys(s);

@@ -249,7 +249,53 @@ const SectionSpec* CaseSchema::section(std::string_view n) const {
     return nullptr;
 }
 
-const CaseSchema& case_schema() { return mutable_schema(); }
+namespace {
+
+// The registrations waiting for the schema's first use.
+struct FirstUse {
+    std::mutex mutex;
+    std::vector<std::function<void()>> pending;
+    bool done = false;
+};
+
+FirstUse& first_use() {
+    static FirstUse f;
+    return f;
+}
+
+void apply_first_use() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        FirstUse& f = first_use();
+        std::vector<std::function<void()>> todo;
+        {
+            const std::lock_guard<std::mutex> lock(f.mutex);
+            f.done = true;
+            todo.swap(f.pending);
+        }
+        for (const std::function<void()>& fn : todo) fn();
+    });
+}
+
+}  // namespace
+
+bool register_at_first_use(std::function<void()> fn) {
+    FirstUse& f = first_use();
+    {
+        const std::lock_guard<std::mutex> lock(f.mutex);
+        if (!f.done) {
+            f.pending.push_back(std::move(fn));
+            return true;
+        }
+    }
+    fn();
+    return true;
+}
+
+const CaseSchema& case_schema() {
+    apply_first_use();
+    return mutable_schema();
+}
 
 SchemaRegistration::SchemaRegistration(std::string section, std::vector<std::string> keys)
     : section_(std::move(section)), keys_(std::move(keys)) {}

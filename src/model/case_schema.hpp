@@ -105,6 +105,10 @@ struct KeySpec {
     bool set_refuses_out_of_range = false;
     std::string meaning;           // one line for the docs
     bool in_params = false;        // registered: the value lives in the entry's ParameterSet
+    // A rule between this key and others that no range states (a registered law that needs a
+    // solver): appends the problems of entry i where the key is in effect. The built-in keys' rules
+    // are in check_case.
+    std::function<void(std::vector<CaseProblem>&, const Case&, std::size_t i)> rule;
 
     // Accessors of entry i (k: the element of a pair). Numbers, integers, pairs and flags (0 or 1)
     // go through the number accessors; choices, texts and file names through the text ones.
@@ -180,6 +184,10 @@ struct CaseSchema {
 // The schema in effect. Registration changes it: register before cases are read and not while
 // another thread reads one.
 const CaseSchema& case_schema();
+// Runs `fn` (registrations kept for the program's life, e.g. the element families' keys) once,
+// when case_schema() is first called, or at once if it has been: a static initialiser may call it,
+// since nothing is built before main. `fn` must not call case_schema(). Returns true.
+bool register_at_first_use(std::function<void()> fn);
 // The built-in schema alone (what docs/case-files.md documents).
 const CaseSchema& builtin_case_schema();
 

@@ -53,6 +53,7 @@ void check_section_keys(std::vector<CaseProblem>& out, const Case& c, const Sect
             } else if (k.kind == KeyKind::table_file && k.table) {
                 if (const TimeFunction* g = k.table(const_cast<Case&>(c), i)) check_table_rows(out, path, *g);
             }
+            if (k.rule) k.rule(out, c, i);
         }
     }
 }

@@ -71,12 +71,16 @@ void add_elements(const Case& c, BeamModel& b) {
             b.forces.push_back(std::move(made.element));
         }
     }
-    // The supports' Kc and Cc (from a damping ratio where given), for reports.
+    // The supports' Kc and Cc (from a damping ratio where given), for reports, by support index; NaN
+    // for a support whose law is not a linear spring-damper.
+    b.contact_stiffness.assign(c.supports.size(), std::numeric_limits<double>::quiet_NaN());
+    b.contact_damping.assign(c.supports.size(), std::numeric_limits<double>::quiet_NaN());
     for (const NamedContact& k : b.contacts) {
         if (k.entry.table != "supports") continue;
-        const auto& support = dynamic_cast<const UnilateralContact&>(*b.forces[k.element]);
-        b.contact_stiffness.push_back(support.stiffness());
-        b.contact_damping.push_back(support.damping());
+        const auto* support = dynamic_cast<const UnilateralContact*>(b.forces[k.element].get());
+        if (support == nullptr) continue;
+        b.contact_stiffness.at(k.entry.index) = support->stiffness();
+        b.contact_damping.at(k.entry.index) = support->damping();
     }
 }
 

@@ -46,8 +46,8 @@ struct BeamModel {
     RayleighCoefficients rayleigh;          // alpha, beta actually used
     ForceSet forces;                        // every force element, family by family (problem/element_families.cpp)
     std::vector<NamedContact> contacts;     // the contact elements, in the order of `forces`
-    std::vector<double> contact_stiffness;  // Kc per support [N/m]
-    std::vector<double> contact_damping;    // Cc per support [N s/m] (from damping_ratio where given)
+    std::vector<double> contact_stiffness;  // Kc per support [N/m]; NaN for a law other than the linear one
+    std::vector<double> contact_damping;    // Cc per support [N s/m] (from damping_ratio where given); NaN likewise
     std::vector<FilmRegime> films;          // each squeeze film's regime at rest, at omega1
     WatchedPoint watched;
     // The contact element of case key `name` ("supports[1]"), or nullptr.

@@ -1,5 +1,8 @@
 #include "problem/element_families.hpp"
 
+#include "model/case_schema.hpp"
+
+#include "forces/hertz_contact.hpp"
 #include "forces/midplane_stretching.hpp"
 #include "forces/point_load_element.hpp"
 #include "forces/support_contacts.hpp"
@@ -12,6 +15,7 @@ namespace vi {
 const std::vector<const ElementFamily*>& element_families() {
     static const std::vector<const ElementFamily*> families{
         &support_contacts(),   // [[supports]]: plain or adhesive contacts
+        &hertz_contacts(),     // [[supports]] with law = "hertz"
         &point_loads(),        // [[loads]]
         &electrode_pads(),     // [[electrodes]]: the electrostatic force
         &dielectric_layers(),  // [[electrodes]] with a dielectric layer: contacts
@@ -20,5 +24,14 @@ const std::vector<const ElementFamily*>& element_families() {
     };
     return families;
 }
+
+namespace {
+
+// Every family's own keys, registered before the first case is read.
+const bool kFamilyKeysRegistered = register_at_first_use([] {
+    for (const ElementFamily* family : element_families()) family->register_case_keys();
+});
+
+}  // namespace
 
 }  // namespace vi

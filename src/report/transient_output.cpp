@@ -236,11 +236,15 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
         j["switching"] = switching_json(*switching);
         if (switching->collapse) j["switching"]["collapse"]["x_over_l"] = switching->collapse->x / c.beam.length;
     }
+    // Only where a contact has a resistance model, so that the summaries of other cases stay as they were.
+    const std::vector<ResistanceSeries> resistances = contact_resistances(b.model, r);
+    if (!resistances.empty()) j["contact_resistance"] = contact_resistance_json(resistances, r.history);
     j["resolved"] = resolved_case_json(c, b, s);
     return j;
 }
 
-CsvTable history_csv(const TransientResult& r, const std::string& watched, bool films) {
+CsvTable history_csv(const TransientResult& r, const std::string& watched, bool films,
+                     const std::vector<ResistanceSeries>& resistances) {
     const TimeHistory& h = r.history;
     CsvTable t;
     t.header = {"t_s", watched + "_m", watched + "_velocity_m_s"};
@@ -254,6 +258,7 @@ CsvTable history_csv(const TransientResult& r, const std::string& watched, bool 
                                          "rayleigh_dissipated_j", "contact_dissipated_j", "external_work_j"});
         if (films) t.header.push_back("film_dissipated_j");
     }
+    for (const ResistanceSeries& s : resistances) t.header.push_back("contact" + std::to_string(s.contact) + "_resistance_ohm");
     for (std::size_t i = 0; i < h.t.size(); ++i) {
         std::vector<double> row{h.t[i], h.watched_v[i], h.watched_velocity[i]};
         for (std::size_t k = 0; k < h.contact_v.size(); ++k) {
@@ -265,6 +270,7 @@ CsvTable history_csv(const TransientResult& r, const std::string& watched, bool 
                                    e.contact_dissipated, e.external_work});
             if (films) row.push_back(e.film_dissipated);
         }
+        for (const ResistanceSeries& s : resistances) row.push_back(s.ohm[i]);
         t.add_row(std::move(row));
     }
     return t;
@@ -289,7 +295,7 @@ CsvTable events_csv(const TransientResult& r, const ImpactSummary& s) {
 
 OutputFiles transient_files(const Case& c, const BuiltProblem& b, const TransientResult& r, const ImpactSummary& s,
                             const SwitchingLedger* switching) {
-    return {{"history.csv", history_csv(r, b.model.watched.name, has_films(b)).str()},
+    return {{"history.csv", history_csv(r, b.model.watched.name, has_films(b), contact_resistances(b.model, r)).str()},
             {"events.csv", events_csv(r, s).str()},
             {"summary.json", transient_summary_json(c, b, r, s, switching).dump(2) + "\n"}};
 }
