@@ -31,5 +31,5 @@ def prepare_metadata_for_build_wheel(metadata_directory, config_settings=None):
 def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
     source = _source_dir()
     meta = project.read(source)
-    package = cmake_step.build_module(source, cmake_step.build_dir(source, config_settings))
+    package = cmake_step.build_module(source, cmake_step.build_dir(source))
     return wheel_file.write_wheel(pathlib.Path(wheel_directory), meta, package, source / "LICENSE")

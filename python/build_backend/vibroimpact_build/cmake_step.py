@@ -8,13 +8,13 @@ import sys
 import sysconfig
 
 
-def build_dir(source_dir, config_settings):
-    """Where CMake builds: config setting build-dir, else $VI_PIP_BUILD_DIR, else build-pip-<interpreter>.
+def build_dir(source_dir):
+    """Where CMake builds: $VI_PIP_BUILD_DIR, else build-pip-<interpreter> in the source tree.
 
     The default sits beside build/ in the source tree: ccache (CCACHE_BASEDIR is the source tree)
     then finds the objects of a build/ folder, whose relative paths are the same.
     """
-    chosen = (config_settings or {}).get("build-dir") or os.environ.get("VI_PIP_BUILD_DIR")
+    chosen = os.environ.get("VI_PIP_BUILD_DIR")
     if chosen:
         return pathlib.Path(chosen).resolve()
     return source_dir / f"build-pip-{sys.implementation.cache_tag}"
