@@ -87,3 +87,10 @@ def test_metadata_before_the_build_is_the_wheels_and_needs_the_source_tree(monke
     monkeypatch.chdir(tmp_path)
     with pytest.raises(RuntimeError, match="no CMakeLists.txt"):
         backend.build_wheel(str(tmp_path / "dist"))
+
+
+def test_a_build_that_cannot_see_numpy_says_how_to_fix_it(monkeypatch, tmp_path):
+    monkeypatch.setitem(sys.modules, "numpy", None)  # import numpy now raises ImportError
+    with pytest.raises(RuntimeError, match="--system-site-packages .* --no-build-isolation"):
+        cmake_step.build_module(SOURCE_DIR, tmp_path / "never-made")
+    assert not (tmp_path / "never-made").exists()

@@ -33,8 +33,23 @@ def _run(command):
     subprocess.run(command, check=True)
 
 
+def check_numpy():
+    """Raises RuntimeError, saying how to fix it, when this interpreter cannot import numpy.
+
+    CMake needs numpy's headers; pip's build isolation, or a venv without the system's site packages,
+    hides Debian's numpy, and CMake's own message about it is buried in pybind11's.
+    """
+    try:
+        import numpy  # noqa: F401
+    except ImportError as e:
+        raise RuntimeError(
+            f"vibroimpact build backend: {sys.executable} cannot import numpy ({e}); make the venv with "
+            "--system-site-packages (Debian: python3-numpy) and run pip install --no-build-isolation .") from e
+
+
 def build_module(source_dir, build):
     """Builds the module into `build`; returns the package folder (build/python/vibroimpact)."""
+    check_numpy()
     cmake = shutil.which("cmake")
     if not cmake:
         raise RuntimeError("vibroimpact build backend: cmake not found (Debian: cmake; bash scripts/install-deps python)")
