@@ -53,7 +53,7 @@ def test_the_wheel_holds_the_package_folder_with_a_true_record(tmp_path):
     (package / f"_vibroimpact{suffix}").write_bytes(b"\x7fELF not really")
     (package / "__pycache__/__init__.cpython-311.pyc").write_bytes(b"cache")
     meta = project.read(SOURCE_DIR)
-    name = wheel_file.write_wheel(tmp_path / "dist", meta, package, SOURCE_DIR / "LICENSE")
+    name = wheel_file.write_wheel(tmp_path / "dist", meta, wheel_file.package_entries(package), SOURCE_DIR / "LICENSE")
     assert name == f"vibroimpact-{meta.version}-{wheel_file.tag()}.whl"
     python = f"cp{sys.version_info.major}{sys.version_info.minor}"
     assert wheel_file.tag().startswith(f"{python}-{python}-")
@@ -94,3 +94,15 @@ def test_a_build_that_cannot_see_numpy_says_how_to_fix_it(monkeypatch, tmp_path)
     with pytest.raises(RuntimeError, match="--system-site-packages .* --no-build-isolation"):
         cmake_step.build_module(SOURCE_DIR, tmp_path / "never-made")
     assert not (tmp_path / "never-made").exists()
+
+
+def test_the_editable_wheel_holds_only_a_pth_to_the_build_folder(tmp_path):
+    package = tmp_path / "build/python/vibroimpact"
+    package.mkdir(parents=True)
+    (package / "__init__.py").write_text("x = 1\n")
+    meta = project.read(SOURCE_DIR)
+    name = wheel_file.write_wheel(tmp_path / "dist", meta, wheel_file.editable_entries(package), SOURCE_DIR / "LICENSE")
+    with zipfile.ZipFile(tmp_path / "dist" / name) as whl:
+        pth = [n for n in whl.namelist() if not n.startswith("vibroimpact-")]
+        assert pth == ["_vibroimpact_editable.pth"]
+        assert whl.read(pth[0]).decode() == f"{tmp_path / 'build/python'}\n"

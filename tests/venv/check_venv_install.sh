@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `pip install .` into a fresh venv, as docs/install.md says, then the installed module runs an
-# example case and agrees with the build's command. Run by CTest (Python.VenvInstall):
+# example case and agrees with the build's command; then `pip install -e .` imports the build folder's. Run by CTest (Python.VenvInstall):
 #   bash check_venv_install.sh PYTHON SOURCE_DIR WORK_DIR PIP_BUILD_DIR VI_EXE VERSION BUILD_TYPE PYTHON_PART
 # PYTHON_PART is the configure step's word on the Python module ("built", or why not). Exits 77
 # (CTest: skipped) with the reason when the module cannot be built here or python3-venv is missing.
@@ -22,16 +22,21 @@ rm -rf "$work" "$pip_build"
 mkdir -p "$work"
 "$python" -m venv --system-site-packages "$work/v"
 
-# Offline, and nothing written outside the two folders: no index, no wheel cache.
-start=$(date +%s.%N)
-(cd "$source_dir" &&
-  env -u PYTHONPATH PIP_NO_INDEX=1 PIP_NO_CACHE_DIR=1 PIP_DISABLE_PIP_VERSION_CHECK=1 \
-    VI_PIP_BUILD_DIR="$pip_build" CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}" \
-    "$work/v/bin/pip" install --no-build-isolation . >"$work/pip.log" 2>&1) || {
-  cat "$work/pip.log"
-  echo "FAIL: pip install --no-build-isolation . failed (log above)"
-  exit 1
+# pip_install ARGS...: pip in the source tree, offline, writing nothing outside the two folders (no
+# index, no wheel cache); fails with pip's log.
+pip_install() {
+  (cd "$source_dir" &&
+    env -u PYTHONPATH PIP_NO_INDEX=1 PIP_NO_CACHE_DIR=1 PIP_DISABLE_PIP_VERSION_CHECK=1 \
+      VI_PIP_BUILD_DIR="$pip_build" CMAKE_BUILD_PARALLEL_LEVEL="${CMAKE_BUILD_PARALLEL_LEVEL:-2}" \
+      "$work/v/bin/pip" install --no-build-isolation "$@" >"$work/pip.log" 2>&1) || {
+    cat "$work/pip.log"
+    echo "FAIL: pip install --no-build-isolation $* failed (log above)"
+    exit 1
+  }
 }
+touch "$work/started"
+start=$(date +%s.%N)
+pip_install .
 echo "pip install: $(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.1f", e - s }') s"
 
 # The build's command on the same case, for the installed module to agree with.
@@ -44,5 +49,15 @@ env -u PYTHONPATH MPLBACKEND=Agg "$work/v/bin/python" "$source_dir/tests/venv/in
 env -u PYTHONPATH MPLBACKEND=Agg "$work/v/bin/python" "$source_dir/examples/python/sweep_plot.py" \
   "$case_file" --points 3 --out "$work/sweep.png"
 [ "$(head -c 4 "$work/sweep.png" | od -An -c | tr -d ' ')" = "211PNG" ] || { echo "FAIL: sweep_plot.py wrote no PNG"; exit 1; }
+
+# Editable: the module is the build folder's (built above, so nothing is compiled again).
+"$work/v/bin/pip" uninstall -y -q vibroimpact
+pip_install -e .
+where=$(env -u PYTHONPATH "$work/v/bin/python" -c "import vibroimpact; print(vibroimpact.__file__)")
+[ "$where" = "$pip_build/python/vibroimpact/__init__.py" ] || { echo "FAIL: pip install -e . imports $where"; exit 1; }
+echo "pip install -e .: the module is $where"
+# No packaging tool's leftovers in the source tree (setuptools' fallback writes *.egg-info).
+leftovers=$(find "$source_dir" -maxdepth 3 -name '*.egg-info' -newer "$work/started" -not -path "$work/*")
+[ -z "$leftovers" ] || { echo "FAIL: pip wrote into the source tree: $leftovers"; exit 1; }
 rm -rf "$pip_build"
 echo "Python.VenvInstall: passed"

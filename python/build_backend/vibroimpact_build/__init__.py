@@ -3,6 +3,7 @@
 PEP 517 hooks for a wheel. The wheel holds the package folder that the CMake target _vibroimpact
 makes in the build tree (python/vibroimpact/: __init__.py and the extension), the same files that
 PYTHONPATH=build/python imports, built for the interpreter that runs pip (docs/install.md).
+An editable install (`pip install -e .`) puts the build folder's package on sys.path instead.
 There is no source distribution: pip installs from the source tree.
 """
 
@@ -32,4 +33,23 @@ def build_wheel(wheel_directory, config_settings=None, metadata_directory=None):
     source = _source_dir()
     meta = project.read(source)
     package = cmake_step.build_module(source, cmake_step.build_dir(source))
-    return wheel_file.write_wheel(pathlib.Path(wheel_directory), meta, package, source / "LICENSE")
+    return wheel_file.write_wheel(pathlib.Path(wheel_directory), meta, wheel_file.package_entries(package),
+                                  source / "LICENSE")
+
+
+# PEP 660, `pip install -e .`: the module stays in the CMake build folder, which a .pth puts on
+# sys.path; `cmake --build <that folder> --target _vibroimpact` updates it in place.
+def get_requires_for_build_editable(config_settings=None):
+    return []
+
+
+def prepare_metadata_for_build_editable(metadata_directory, config_settings=None):
+    return prepare_metadata_for_build_wheel(metadata_directory, config_settings)
+
+
+def build_editable(wheel_directory, config_settings=None, metadata_directory=None):
+    source = _source_dir()
+    meta = project.read(source)
+    package = cmake_step.build_module(source, cmake_step.build_dir(source))
+    return wheel_file.write_wheel(pathlib.Path(wheel_directory), meta, wheel_file.editable_entries(package),
+                                  source / "LICENSE")

@@ -54,15 +54,23 @@ def _record_line(path, data):
     return f"{path},sha256={digest},{len(data)}"
 
 
-def _package_files(package):
-    # Everything the build put in the package folder but Python's byte-code caches.
+def package_entries(package):
+    """(name in the wheel, bytes, executable) of every file the build put in the package folder,
+    but Python's byte-code caches."""
     for path in sorted(package.rglob("*")):
         if path.is_file() and "__pycache__" not in path.parts and path.suffix != ".pyc":
-            yield path
+            arcname = f"{package.name}/{path.relative_to(package).as_posix()}"
+            yield arcname, path.read_bytes(), path.suffix == ".so"
 
 
-def write_wheel(directory, meta, package, license_file):
-    """Writes the wheel of the package folder into directory; returns its file name."""
+def editable_entries(package):
+    """The one file of an editable wheel: a .pth that puts the build's package folder's parent on
+    sys.path, so the installed module is the build folder's, rebuilt in place."""
+    yield f"_{package.name}_editable.pth", f"{package.parent}\n".encode(), False
+
+
+def write_wheel(directory, meta, entries, license_file):
+    """Writes a wheel of `entries` (package_entries or editable_entries) into directory; returns its name."""
     dist_info = f"{_dist_name(meta)}.dist-info"
     wheel_name = f"{_dist_name(meta)}-{tag()}.whl"
     directory.mkdir(parents=True, exist_ok=True)
@@ -75,9 +83,8 @@ def write_wheel(directory, meta, package, license_file):
             whl.writestr(info, data)
             record.append(_record_line(arcname, data))
 
-        for path in _package_files(package):
-            arcname = f"{package.name}/{path.relative_to(package).as_posix()}"
-            add(arcname, path.read_bytes(), executable=path.suffix == ".so")
+        for arcname, data, executable in entries:
+            add(arcname, data, executable)
         add(f"{dist_info}/METADATA", _metadata(meta).encode())
         add(f"{dist_info}/WHEEL", _wheel_info().encode())
         if license_file.is_file():
