@@ -56,8 +56,10 @@ pip_install -e .
 where=$(env -u PYTHONPATH "$work/v/bin/python" -c "import vibroimpact; print(vibroimpact.__file__)")
 [ "$where" = "$pip_build/python/vibroimpact/__init__.py" ] || { echo "FAIL: pip install -e . imports $where"; exit 1; }
 echo "pip install -e .: the module is $where"
-# No packaging tool's leftovers in the source tree (setuptools' fallback writes *.egg-info).
-leftovers=$(find "$source_dir" -maxdepth 3 -name '*.egg-info' -newer "$work/started" -not -path "$work/*")
+# No packaging tool's leftovers in the source tree: setuptools writes its egg-info and build folders
+# (bdist.*, lib.*) into the CMake build folder, never beside setup.py or into build/.
+leftovers=$(find "$source_dir" -maxdepth 3 \( -name '*.egg-info' -o -name 'bdist.*' -o -name 'lib.*-*' \) \
+  -newer "$work/started" -not -path "$work/*" -not -path "$pip_build/*")
 [ -z "$leftovers" ] || { echo "FAIL: pip wrote into the source tree: $leftovers"; exit 1; }
 rm -rf "$pip_build"
 echo "Python.VenvInstall: passed"

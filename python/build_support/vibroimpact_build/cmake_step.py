@@ -29,22 +29,30 @@ def _jobs():
 
 
 def _run(command):
-    print("vibroimpact build backend:", " ".join(command), file=sys.stderr, flush=True)
+    print("vibroimpact build:", " ".join(command), file=sys.stderr, flush=True)
     subprocess.run(command, check=True)
 
 
-def check_numpy():
-    """Raises RuntimeError, saying how to fix it, when this interpreter cannot import numpy.
+_ADVICE = ("make the venv with --system-site-packages and run pip install --no-build-isolation . "
+           "(bash scripts/install-deps python installs them)")
 
-    CMake needs numpy's headers; pip's build isolation, or a venv without the system's site packages,
-    hides Debian's numpy, and CMake's own message about it is buried in pybind11's.
+
+def check_importable(name, debian_package):
+    """Raises RuntimeError, saying how to fix it, when this interpreter cannot import `name`.
+
+    pip's build isolation, or a venv without the system's site packages, hides Debian's packages.
     """
     try:
-        import numpy  # noqa: F401
+        __import__(name)
     except ImportError as e:
-        raise RuntimeError(
-            f"vibroimpact build backend: {sys.executable} cannot import numpy ({e}); make the venv with "
-            "--system-site-packages (Debian: python3-numpy) and run pip install --no-build-isolation .") from e
+        raise RuntimeError(f"vibroimpact build: {sys.executable} cannot import {name} ({e}); "
+                           f"Debian: {debian_package}; {_ADVICE}") from e
+
+
+def check_numpy():
+    """check_importable for numpy: CMake needs its headers, and CMake's own message about it is
+    buried in pybind11's."""
+    check_importable("numpy", "python3-numpy")
 
 
 def build_module(source_dir, build):
@@ -52,7 +60,7 @@ def build_module(source_dir, build):
     check_numpy()
     cmake = shutil.which("cmake")
     if not cmake:
-        raise RuntimeError("vibroimpact build backend: cmake not found (Debian: cmake; bash scripts/install-deps python)")
+        raise RuntimeError("vibroimpact build: cmake not found (Debian: cmake; bash scripts/install-deps python)")
     configure = [cmake, "-S", str(source_dir), "-B", str(build),
                  # The project's Release optimisation; only the module and the library it links.
                  "-DCMAKE_BUILD_TYPE=Release", "-DVI_BUILD_TESTS=OFF", "-DVI_BUILD_BENCH=OFF",
@@ -65,5 +73,5 @@ def build_module(source_dir, build):
     package = build / "python" / "vibroimpact"
     suffix = sysconfig.get_config_var("EXT_SUFFIX")
     if not (package / f"_vibroimpact{suffix}").is_file():
-        raise RuntimeError(f"vibroimpact build backend: {package} holds no _vibroimpact{suffix} for {sys.executable}")
+        raise RuntimeError(f"vibroimpact build: {package} holds no _vibroimpact{suffix} for {sys.executable}")
     return package
