@@ -1,6 +1,7 @@
 # Checks the layer order of src/ (docs/architecture.md): a file may include its own layer and the
 # layers below it, never one above. Within dynamics/, the two solver rooms exact/ and cvode/ sit on
-# its shared files (the transient problem, start and result) and never include each other.
+# its shared files (the transient problem, start and result) and never include each other. A file
+# at the top of src/ is the entry header, above every layer.
 # Run: cmake -DSRC=<path to src> -P check_layers.cmake
 # Prints every offending #include and fails when there is one.
 set(layers model io fem forces modal problem statics dynamics impacts report sweep design calibration uq plot validation study)
@@ -12,9 +13,20 @@ get_filename_component(SRC "${SRC}" ABSOLUTE)
 file(GLOB_RECURSE files RELATIVE ${SRC} ${SRC}/*.hpp ${SRC}/*.cpp)
 set(bad 0)
 set(checked 0)
+list(LENGTH layers entry_rank)
 foreach(f IN LISTS files)
   string(REGEX MATCH "^[a-z_]+" own ${f})
   list(FIND layers ${own} own_rank)
+  # A file at the top of src/ (vibroimpact.hpp, the entry header of the installed API) sits above
+  # every layer: it may include any of them, and no layer includes it.
+  if(NOT f MATCHES "/")
+    set(own_rank ${entry_rank})
+  endif()
+  file(STRINGS ${SRC}/${f} entry_includes REGEX "^#include \"[a-z_]+\\.hpp\"")
+  if(entry_includes AND NOT own_rank EQUAL entry_rank)
+    message(SEND_ERROR "${f}: ${entry_includes} includes the entry header from a layer")
+    math(EXPR bad "${bad} + 1")
+  endif()
   if(own_rank EQUAL -1)
     message(SEND_ERROR "${f}: folder '${own}' is not a layer; add it to cmake/check_layers.cmake and docs/architecture.md")
     math(EXPR bad "${bad} + 1")

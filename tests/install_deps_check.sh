@@ -69,6 +69,10 @@ done
 
 run "--print mpi python" 0 --print mpi python
 has "$out" openmpi-bin && has "$out" python3-numpy || fail "--print mpi python misses a job's packages"
+has "$out" python3-venv || fail "--print mpi python does not list python3-venv (pip install . into a venv)"
+for p in python3-setuptools python3-wheel; do
+  has "$out" "$p" || fail "--print mpi python does not list $p (setuptools writes the wheel of pip install .)"
+done
 
 run "unknown job" 2 --print bogus
 has "$out" "unknown job 'bogus'" || fail "unknown job: no clear message: $out"

@@ -183,6 +183,46 @@ TEST(SweepCasePaths, IntegerPathsRefuseFractions) {
     EXPECT_THROW(set_case_value(c, p, 1e12), InputError);
 }
 
+// A message of InputError thrown by f, or "" when none is.
+template <class F>
+std::string input_error_of(F&& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+TEST(SweepCasePaths, TextValuesTakeThePathsUnitsAsSetDoes) {
+    Case c = full_case();
+    set_case_text(c, "supports[0].gap", "0.5 um");
+    EXPECT_DOUBLE_EQ(c.supports[0].surface, -0.5e-6);
+    set_case_text(c, "supports[0].gap", "2.5e-7");  // a plain number is SI
+    EXPECT_DOUBLE_EQ(c.supports[0].surface, -2.5e-7);
+    set_case_text(c, "material.youngs_modulus", "150GPa");
+    EXPECT_DOUBLE_EQ(c.material.youngs_modulus, 150e9);
+    set_case_text(c, "supports[1].position", "0.25");
+    EXPECT_EQ(c.supports[1].position, 0.25);
+    set_case_text(c, "beam.elements", "12");
+    EXPECT_EQ(c.beam.elements, 12);
+    EXPECT_TRUE(check_case(c).empty());
+
+    const Case before = c;
+    const std::string wrong_unit = input_error_of([&] { set_case_text(c, "supports[0].gap", "0.5 kg"); });
+    EXPECT_EQ(wrong_unit.rfind("supports[0].gap: ", 0), 0u) << wrong_unit;
+    EXPECT_NE(wrong_unit.find("kg"), std::string::npos) << wrong_unit;
+    const std::string no_unit_here = input_error_of([&] { set_case_text(c, "supports[1].position", "0.5 um"); });
+    EXPECT_EQ(no_unit_here.rfind("supports[1].position: ", 0), 0u) << no_unit_here;
+    const std::string fraction = input_error_of([&] { set_case_text(c, "beam.elements", "10.5"); });
+    EXPECT_EQ(fraction, "beam.elements: must be a whole number");
+    const std::string bad_path = input_error_of([&] { set_case_text(c, "suports[0].gap", "1 um"); });
+    EXPECT_EQ(bad_path.rfind("suports[0].gap: ", 0), 0u) << bad_path;
+    EXPECT_NE(bad_path.find("supports"), std::string::npos) << bad_path;
+    EXPECT_EQ(c.supports[0].surface, before.supports[0].surface);
+    EXPECT_EQ(c.beam.elements, before.beam.elements);
+}
+
 TEST(SweepCasePaths, BadPathsSayWhatIsWrong) {
     const Case full = full_case();
     const Case alpha = alpha_case();

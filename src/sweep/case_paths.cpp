@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <stdexcept>
 
 #include "io/csv_names.hpp"
+#include "io/range_spec.hpp"
 #include "io/spelling.hpp"
 #include "model/case_schema.hpp"
 #include "model/input_error.hpp"
@@ -204,6 +206,22 @@ void set_case_value(Case& c, const CasePath& p, double value) {
     }
     if (k.set_refuses_out_of_range && !k.range.contains(value)) throw InputError(p.text() + ": " + k.range.problem(value));
     k.set_number(c, p.section_index.value_or(0), p.field_index.value_or(0), value);
+}
+
+void set_case_text(Case& c, std::string_view path, std::string_view value) {
+    CasePath p;
+    try {
+        p = resolve_case_path(path, c);
+    } catch (const InputError& e) {
+        throw InputError(std::string(path) + ": " + e.what());
+    }
+    double v = 0.0;
+    try {
+        v = parse_value(value, case_path_dimension(p));
+    } catch (const std::invalid_argument& e) {
+        throw InputError(p.text() + ": " + e.what());
+    }
+    set_case_value(c, p, v);
 }
 
 std::vector<std::string> case_path_forms() {

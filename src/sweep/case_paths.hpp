@@ -58,6 +58,12 @@ double get_case_value(const Case& c, const CasePath& p);
 // needed); every other check is check_case's.
 void set_case_value(Case& c, const CasePath& p, double value);
 
+// Sets the value at the path text `path` (resolve_case_path on c) from `value` as a setting of
+// `sweep --set` writes one value: a plain SI number, or a quantity in a unit of the path's dimension
+// ("0.5 um", "2 GPa"). Throws InputError("PATH: reason") for a bad path, number or unit, and as
+// set_case_value does; every other check is check_case's.
+void set_case_text(Case& c, std::string_view path, std::string_view value);
+
 // Every accepted path, with i and k for the indices ("supports[i].position", ...), for help texts.
 std::vector<std::string> case_path_forms();
 // Each of those forms with its SI unit as case_path_unit gives it ("supports[i].gap", "m").
