@@ -83,14 +83,7 @@ int finish_on_root(const SweepCommandOptions& o, const PointRunPlan& plan, Sweep
 }
 
 int run_sweep(const SweepCommandOptions& o) {
-    PointRunOptions run;
-    run.out_dir = o.out_dir;
-    run.resume = o.resume;
-    run.retry_failed = o.retry_failed;
-    run.threads = o.threads;
-    run.progress = o.progress;
-    run.what = "sweep";
-    run.unit = "points";
+    const PointRunOptions run = point_run_options(o, "sweep", "points");
     return run_points_on_ranks(
         run, [&] { return make_plan(o); },
         [&](const PointRunPlan& plan, SweepStore& store, const SweepRunInfo& info) {

@@ -197,14 +197,7 @@ int finish_on_root(const UqCommandOptions& o, const UqPlan& uq, SweepStore& stor
 }
 
 int run_uq(const UqCommandOptions& o) {
-    PointRunOptions run;
-    run.out_dir = o.out_dir;
-    run.resume = o.resume;
-    run.retry_failed = o.retry_failed;
-    run.threads = o.threads;
-    run.progress = o.progress;
-    run.what = "uq";
-    run.unit = "runs";
+    const PointRunOptions run = point_run_options(o, "uq", "runs");
     UqPlan uq;
     return run_points_on_ranks(
         run, [&] { return make_plan(o, uq); },

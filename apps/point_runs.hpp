@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/case.hpp"
@@ -36,6 +37,13 @@ struct PointRunOptions {
     std::string what = "sweep";   // the command, as the progress report names it
     std::string unit = "points";  // what it counts
 };
+
+// The run options of a command's options o (any struct with out_dir, resume, retry_failed, threads and
+// progress, as sweep's and uq's have).
+template <class CommandOptions>
+PointRunOptions point_run_options(const CommandOptions& o, std::string what, std::string unit) {
+    return {o.out_dir, o.resume, o.retry_failed, o.threads, o.progress, std::move(what), std::move(unit)};
+}
 
 // The root's last step with the store of every row (complete, or not when the run was stopped) and
 // the run's figures; returns the exit code.
