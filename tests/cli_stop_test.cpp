@@ -92,7 +92,9 @@ protected:
     // Starts the command, waits until `ready` (at most the hang limit), checks it still runs,
     // signals it and waits for the end.
     static CommandResult stop_when(test::ChildProcess& child, const std::function<bool()>& ready, int sig) {
-        EXPECT_TRUE(test::wait_until(ready, test::kHangLimitSeconds)) << "the command never got there";
+        // A command that ends early (an error) ends the wait too, instead of the hang limit.
+        test::wait_until([&] { return ready() || !child.running(); }, test::kHangLimitSeconds);
+        EXPECT_TRUE(ready()) << "the command never got there";
         EXPECT_TRUE(child.running()) << "the command ended before the signal";
         child.signal(sig);
         return child.wait();
@@ -220,7 +222,9 @@ TEST_F(StopCli, ValidateStopsInAnySectionAndWritesNoDocument) {
                                        {SIGINT, "section 9:"}, {SIGTERM, "section 6: CVODE undamped"}}) {
         SCOPED_TRACE(section);
         const std::string out = dir_ + "/validation.md";
-        test::ChildProcess child(command({"validate", "--quick", "--case", example, "--out", out, "--progress", "lines"}));
+        test::ChildProcess child(command({"validate", "--quick", "--case", example, "--switch-case",
+                                          test::source_path("examples/switch/cantilever_switch.toml"), "--out", out,
+                                          "--progress", "lines"}));
         const std::string err = child.stderr_path();
         const CommandResult r =
             stop_when(child, [&] { return read_text(err).find(section) != std::string::npos; }, sig);
