@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
@@ -273,6 +274,43 @@ TEST_F(ToyRegistration, RegisteredKeysAreSweptResolvedAndDocumented) {
               std::string::npos)
         << table;
     EXPECT_NE(case_key_table(*case_schema().section("supports")).find("| `toy_exponent` |"), std::string::npos);
+}
+
+// A registered section is documented on the page without a block of its own: its heading, paragraph
+// and table fill the block of registered sections.
+TEST_F(ToyRegistration, RegisteredSectionIsDocumentedWithoutEditingThePage) {
+    const std::string page = "# Keys\n<!-- registered-sections -->\nold text\n<!-- /registered-sections -->\nend\n";
+    EXPECT_TRUE(undocumented_sections(page, case_schema()).size() + 1 ==
+                undocumented_sections("# Keys\n", case_schema()).size());
+    const std::string fresh = with_case_key_tables(page, case_schema());
+    EXPECT_EQ(fresh.find("old text"), std::string::npos) << fresh;
+    EXPECT_NE(fresh.find("\n### `[[springs]]`\n\n| Key |"), std::string::npos) << fresh;
+    EXPECT_NE(fresh.find("| `cubic_coefficient` | k3 / k |"), std::string::npos) << fresh;
+    EXPECT_EQ(with_case_key_tables(fresh, case_schema()), fresh);
+    EXPECT_THROW((void)with_case_key_tables("<!-- registered-sections -->\n", case_schema()), std::invalid_argument);
+}
+
+// A law brings its option to a choice that lives with its section (supports' law), without the file
+// of another law: read, refused where misspelt, documented, and gone with its handle.
+TEST(RegisteredOption, ALawAddsItsOptionToTheChoiceOfItsSection) {
+    const std::string support = "[[supports]]\nposition = 1.0\nlaw = \"toy\"\n";
+    EXPECT_NE(error_of(test::kBaseCase + support).find("supports[0].law"), std::string::npos);
+    {
+        SchemaRegistration toy = register_option("supports", "law", "toy", "a toy law");
+        const KeySpec* law = case_schema().section("supports")->key("law");
+        ASSERT_NE(law, nullptr);
+        EXPECT_EQ(law->options.back(), "toy");
+        EXPECT_NE(law->meaning.find(" or `\"toy\"` (a toy law)"), std::string::npos) << law->meaning;
+        const Case c = read_case_text(test::kBaseCase + support, "toy.toml");
+        EXPECT_EQ(c.supports[0].params.text("law"), "toy");
+        EXPECT_FALSE(c.supports[0].linear_law());
+        EXPECT_THROW((void)register_option("supports", "law", "toy", "again"), std::invalid_argument);
+        EXPECT_THROW((void)register_option("supports", "position", "toy", "not a choice"), std::invalid_argument);
+    }
+    const KeySpec* law = case_schema().section("supports")->key("law");
+    EXPECT_EQ(std::count(law->options.begin(), law->options.end(), "toy"), 0);
+    EXPECT_EQ(law->meaning.find("toy"), std::string::npos);
+    EXPECT_NE(error_of(test::kBaseCase + support).find("supports[0].law"), std::string::npos);
 }
 
 TEST_F(ToyRegistration, RegistrationEndsWithItsHandle) {

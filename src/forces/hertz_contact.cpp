@@ -68,7 +68,7 @@ double ContactResistance::of_radius(double a) const {
 
 HertzContact::HertzContact(std::string name, int dof, double sign, double surface, double x, double k, double alpha,
                            double radius, std::optional<ContactResistance> resistance)
-    : name_(std::move(name)), dofs_{dof}, sign_(sign), surface_(surface), x_(x), k_(k), alpha_(alpha), radius_(radius),
+    : PointContact(std::move(name), dof, sign, surface, x), k_(k), alpha_(alpha), radius_(radius),
       resistance_(resistance) {
     if (dof < 0 || std::abs(sign) != 1.0 || !std::isfinite(surface) || !(k > 0.0) || !std::isfinite(k) ||
         !(alpha >= 0.0) || !std::isfinite(alpha) || !(radius > 0.0) || !std::isfinite(radius)) {
@@ -187,14 +187,10 @@ void refuse_exact_solver(std::vector<CaseProblem>& out, const Case& c, std::size
 }
 
 std::vector<KeySpec> hertz_keys() {
-    KeySpec law = choice_key("law", {"kelvin-voigt", kHertz});
-    law.otherwise(std::string("kelvin-voigt"))
-        .means("the contact's force law: `\"kelvin-voigt\"` (linear, Kc and Cc) or `\"hertz\"` (a dimple: k d^(3/2) "
-               "with Hunt-Crossley damping; [hertz-contact.md](hertz-contact.md))");
-    law.rule = refuse_exact_solver;
     const KeyCondition hertz = when_chosen("supports", "law", {kHertz});
     KeySpec radius = number_key("radius", Dimension::length);
     radius.require().in(positive()).only(hertz).means("R, the dimple's radius of curvature");
+    radius.rule = refuse_exact_solver;
     KeySpec star = number_key("effective_modulus", Dimension::pressure);
     star.in(positive()).only(hertz).means("E* given directly, in place of the counter-surface's modulus and Poisson ratio");
     star.default_text = "from the two materials";
@@ -211,7 +207,7 @@ std::vector<KeySpec> hertz_keys() {
     KeySpec v = number_key("reference_speed", Dimension::velocity);
     v.in(positive()).only(hertz).means("the impact speed at which restitution holds");
     v.default_text = "-";
-    return {law, radius, star, e2, nu2, e, v};
+    return {radius, star, e2, nu2, e, v};
 }
 
 // The contact resistance's keys (docs/hertz-contact.md §4): numbers in SI (no unit text).
@@ -264,6 +260,9 @@ public:
     }
 
     void register_case_keys() const override {
+        register_option("supports", "law", kHertz,
+                        "a dimple: k d^(3/2) with Hunt-Crossley damping; [hertz-contact.md](hertz-contact.md)")
+            .keep();
         register_keys("supports", hertz_keys()).keep();
         register_keys("supports", resistance_keys()).keep();
     }

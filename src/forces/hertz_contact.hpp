@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "forces/element_family.hpp"
-#include "forces/force_element.hpp"
+#include "forces/point_contact.hpp"
 
 namespace vi {
 
@@ -53,17 +53,14 @@ struct ContactResistance {
 // (d^(3/2) taken as 0 where d < 0), pushing the beam by sign F. Mode 0: open, mode 1: closed; it
 // closes where d > 0 and 1 + alpha dd/dt > 0 both hold, and opens where either falls through 0
 // (F then falls through 0: no tension).
-class HertzContact final : public ForceElement {
+class HertzContact final : public PointContact {
 public:
     // k > 0 [N/m^(3/2)], alpha >= 0 [s/m], radius > 0 [m] (the dimple's R); with a resistance model
     // where one is given.
     HertzContact(std::string name, int dof, double sign, double surface, double x, double k, double alpha,
                  double radius, std::optional<ContactResistance> resistance = std::nullopt);
 
-    [[nodiscard]] const std::string& name() const override { return name_; }
     [[nodiscard]] std::string kind() const override { return "Hertz contact"; }
-    [[nodiscard]] const std::vector<int>& dofs() const override { return dofs_; }
-    [[nodiscard]] int modes() const override { return 2; }
 
     void add_force(const ElementState& s, int mode, double* f) const override;
     void add_tangent(const ElementState& s, int mode, double* dfdq, double* dfdv) const override;
@@ -71,45 +68,34 @@ public:
     [[nodiscard]] double stored_energy(const ElementState& s, int mode) const override;
     // Closed: k alpha d^(3/2) (dd/dt)^2 [W]; open: 0.
     [[nodiscard]] double dissipated_power(const ElementState& s, int mode) const override;
-    [[nodiscard]] double input_power(const ElementState&, int) const override { return 0.0; }
 
     // Open: min(d / R, 1 + alpha dd/dt); closed: minus that.
     [[nodiscard]] double switching_function(const ElementState& s, int mode) const override;
-    [[nodiscard]] int mode_after_switch(int mode) const override { return 1 - mode; }
     [[nodiscard]] int static_mode(const ElementState& s) const override;
     [[nodiscard]] int initial_mode(const ElementState& s) const override;
 
-    // 0: dd/dt (maxima of d); 1: dF/dt while closed (maxima of F), 1 while open.
-    [[nodiscard]] int watch_count() const override { return 2; }
+    // 0: dd/dt; 1: dF/dt while closed, 1 while open (PointContact).
     void watch_functions(const ElementState& s, int mode, double* g) const override;
-    [[nodiscard]] std::vector<int> watch_directions() const override { return {-1, -1}; }
-    [[nodiscard]] bool watch_needs_acceleration(int mode) const override { return mode == 1; }
 
-    [[nodiscard]] bool is_contact() const override { return true; }
     [[nodiscard]] ContactReading contact_reading(const ElementState& s) const override;
-    [[nodiscard]] double position() const override { return x_; }
     // With a resistance model: R of the spot at penetration d (+inf for d <= 0); else NaN.
     [[nodiscard]] double contact_resistance(const ElementState& s) const override;
     [[nodiscard]] double on_resistance() const override;
     // The contact radius a [m] at penetration d [m]: sqrt(R d), or the plastic one where larger.
     [[nodiscard]] double contact_radius(double d) const;
 
-    [[nodiscard]] double penetration(const ElementState& s) const { return sign_ * (surface_ - s.q[0]); }
-    [[nodiscard]] double penetration_rate(const ElementState& s) const { return -sign_ * s.v[0]; }
     // F = k d^(3/2) (1 + alpha dd/dt) [N], whether or not the contact is closed.
     [[nodiscard]] double force_magnitude(const ElementState& s) const;
     [[nodiscard]] double stiffness() const { return k_; }  // k [N/m^(3/2)]
     [[nodiscard]] double alpha() const { return alpha_; }  // [s/m]
 
 private:
-    std::string name_;
-    std::vector<int> dofs_;
-    double sign_, surface_, x_, k_, alpha_, radius_;
+    double k_, alpha_, radius_;
     std::optional<ContactResistance> resistance_;
 };
 
-// The family: one HertzContact per [[supports]] entry with law = "hertz"; it registers the `law`
-// choice of [[supports]] and the Hertz law's keys.
+// The family: one HertzContact per [[supports]] entry with law = "hertz"; it registers that option
+// of [[supports]]' `law` and the Hertz law's keys.
 const ElementFamily& hertz_contacts();
 
 }  // namespace vi

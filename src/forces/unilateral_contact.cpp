@@ -9,8 +9,8 @@ namespace vi {
 
 UnilateralContact::UnilateralContact(std::string name, int dof, double sign, double surface, double stiffness,
                                      double damping, double x, double pull_off)
-    : name_(std::move(name)), dofs_{dof}, sign_(sign), surface_(surface), stiffness_(stiffness), damping_(damping),
-      x_(x), pull_off_(pull_off), d_po_(pull_off > 0.0 ? -pull_off / stiffness : 0.0) {
+    : PointContact(std::move(name), dof, sign, surface, x), stiffness_(stiffness), damping_(damping),
+      pull_off_(pull_off), d_po_(pull_off > 0.0 ? -pull_off / stiffness : 0.0) {
     if (dof < 0 || std::abs(sign) != 1.0 || !std::isfinite(surface) || !(stiffness >= 0.0) ||
         !std::isfinite(stiffness) || !(damping >= 0.0) || !std::isfinite(damping) || !(pull_off >= 0.0)) {
         throw std::invalid_argument(name_ + ": inconsistent contact data");

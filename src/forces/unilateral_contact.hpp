@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "forces/force_element.hpp"
+#include "forces/point_contact.hpp"
 
 namespace vi {
 
@@ -17,42 +17,28 @@ namespace vi {
 // A closed contact opens when F falls below -F_po (F_po = 0: no tension, it opens when F falls through
 // 0, which for a damped contact comes while d > 0); an open one closes when d > d_po = -F_po / Kc and
 // F > -F_po both hold. What an open contact does (nothing, or an adhesive's attraction) is the kind's.
-class UnilateralContact : public ForceElement {
+class UnilateralContact : public PointContact {
 public:
-    [[nodiscard]] const std::string& name() const override { return name_; }
-    [[nodiscard]] const std::vector<int>& dofs() const override { return dofs_; }
-    [[nodiscard]] int modes() const override { return 2; }
 
     void add_force(const ElementState& s, int mode, double* f) const override;
     void add_tangent(const ElementState& s, int mode, double* dfdq, double* dfdv) const override;
     // Closed: Cc (dd/dt)^2 [W]; open: 0.
     [[nodiscard]] double dissipated_power(const ElementState& s, int mode) const override;
-    [[nodiscard]] double input_power(const ElementState&, int) const override { return 0.0; }
 
     // Open: min(s (d - d_po), F + F_po) with s = Kc (1 when Kc = 0), so that it crosses zero upward
     // exactly when both become positive; closed: -(F + F_po).
     [[nodiscard]] double switching_function(const ElementState& s, int mode) const override;
-    [[nodiscard]] int mode_after_switch(int mode) const override { return 1 - mode; }
     // Closed where d > d_po (statically F = Kc d); a relative 1e-12 of the lengths in play counts as
     // touching, not penetrating.
     [[nodiscard]] int static_mode(const ElementState& s) const override;
     // Closed where d > d_po and F > -F_po, and where it touches (d = d_po to roundoff) and moves in.
     [[nodiscard]] int initial_mode(const ElementState& s) const override;
 
-    // 0: dd/dt (direction -1: maxima of d); 1: dF/dt while closed (maxima of F), 1 while open.
-    [[nodiscard]] int watch_count() const override { return 2; }
+    // 0: dd/dt; 1: dF/dt while closed, 1 while open (PointContact).
     void watch_functions(const ElementState& s, int mode, double* g) const override;
-    [[nodiscard]] std::vector<int> watch_directions() const override { return {-1, -1}; }
-    [[nodiscard]] bool watch_needs_acceleration(int mode) const override { return mode == 1; }
 
-    [[nodiscard]] bool is_contact() const override { return true; }
-    [[nodiscard]] int contact_mode() const override { return 1; }
     // d, the closed force F (negative while an adhesive contact pulls) and the point's velocity.
     [[nodiscard]] ContactReading contact_reading(const ElementState& s) const override;
-    [[nodiscard]] double position() const override { return x_; }
-
-    [[nodiscard]] double penetration(const ElementState& s) const { return sign_ * (surface_ - s.q[0]); }
-    [[nodiscard]] double penetration_rate(const ElementState& s) const { return -sign_ * s.v[0]; }
     // F = Kc d + Cc dd/dt [N], whether or not the contact is closed.
     [[nodiscard]] double force_magnitude(const ElementState& s) const {
         return stiffness_ * penetration(s) + damping_ * penetration_rate(s);
@@ -72,9 +58,7 @@ protected:
     virtual void add_open_force(const ElementState& /*s*/, double* /*f*/) const {}
     virtual void add_open_tangent(const ElementState& /*s*/, double* /*dfdq*/) const {}
 
-    std::string name_;
-    std::vector<int> dofs_;
-    double sign_, surface_, stiffness_, damping_, x_;
+    double stiffness_, damping_;
     double pull_off_;  // F_po [N]
     double d_po_;      // where an open contact closes, -F_po / Kc [m] (0 without pull-off)
 };

@@ -102,6 +102,11 @@ SectionSpec supports_section() {
                 &Support::stiffness);
     add_damper_keys(s);
     add_adhesion_keys(s);
+    // The law lives with its section; each law a force family brings adds its option
+    // (register_option) and its own keys. Its value is read by those families alone.
+    KeySpec& law = s.add_key(choice_key("law", {"kelvin-voigt"})).otherwise(std::string("kelvin-voigt"));
+    law.means("the contact's force law: `\"kelvin-voigt\"` (linear, Kc and Cc)");
+    bind_to_params(law, "supports");
     return s;
 }
 

@@ -56,6 +56,8 @@ ParameterSet& params_of(const std::string& section, Case& c, std::size_t i) {
     return *p;
 }
 
+}  // namespace
+
 // Accessors for a registered key: its value in the entry's ParameterSet, its default when absent.
 void bind_to_params(KeySpec& k, const std::string& section) {
     k.in_params = true;
@@ -92,8 +94,6 @@ void bind_to_params(KeySpec& k, const std::string& section) {
         }
     }
 }
-
-}  // namespace
 
 bool is_numeric(KeyKind k) {
     return k == KeyKind::number || k == KeyKind::integer || k == KeyKind::number_pair || k == KeyKind::integer_pair;
@@ -300,8 +300,12 @@ const CaseSchema& case_schema() {
 SchemaRegistration::SchemaRegistration(std::string section, std::vector<std::string> keys)
     : section_(std::move(section)), keys_(std::move(keys)) {}
 
+SchemaRegistration::SchemaRegistration(std::string section, std::string key, std::string option, std::string meaning)
+    : section_(std::move(section)), keys_{std::move(key)}, option_(std::move(option)), meaning_(std::move(meaning)) {}
+
 SchemaRegistration::SchemaRegistration(SchemaRegistration&& other) noexcept
-    : section_(std::move(other.section_)), keys_(std::move(other.keys_)) {
+    : section_(std::move(other.section_)), keys_(std::move(other.keys_)), option_(std::move(other.option_)),
+      meaning_(std::move(other.meaning_)) {
     other.section_.clear();
 }
 
@@ -310,6 +314,8 @@ SchemaRegistration& SchemaRegistration::operator=(SchemaRegistration&& other) no
         SchemaRegistration old(std::move(*this));
         section_ = std::move(other.section_);
         keys_ = std::move(other.keys_);
+        option_ = std::move(other.option_);
+        meaning_ = std::move(other.meaning_);
         other.section_.clear();
     }
     return *this;
@@ -323,7 +329,17 @@ SchemaRegistration::~SchemaRegistration() {
         std::erase_if(all, [&](const SectionSpec& s) { return s.name == section_ && s.registered; });
         return;
     }
-    if (SectionSpec* s = find_section(section_)) {
+    SectionSpec* s = find_section(section_);
+    if (s != nullptr && !option_.empty()) {
+        for (KeySpec& k : s->keys) {
+            if (k.name != keys_.front()) continue;
+            std::erase(k.options, option_);
+            const std::size_t at = k.meaning.rfind(meaning_);
+            if (at != std::string::npos) k.meaning.erase(at, meaning_.size());
+        }
+        return;
+    }
+    if (s != nullptr) {
         std::erase_if(s->keys, [&](const KeySpec& k) {
             return k.in_params && std::find(keys_.begin(), keys_.end(), k.name) != keys_.end();
         });
@@ -373,6 +389,26 @@ SchemaRegistration register_keys(std::string_view section, std::vector<KeySpec> 
         s->keys.push_back(std::move(k));
     }
     return SchemaRegistration(std::string(section), names);
+}
+
+SchemaRegistration register_option(std::string_view section, std::string_view key, std::string option,
+                                   std::string meaning) {
+    const std::lock_guard<std::mutex> lock(registry_mutex());
+    SectionSpec* s = find_section(section);
+    KeySpec* k = nullptr;
+    if (s != nullptr) {
+        for (KeySpec& candidate : s->keys)
+            if (candidate.name == key) k = &candidate;
+    }
+    if (k == nullptr || k->kind != KeyKind::choice ||
+        std::find(k->options.begin(), k->options.end(), option) != k->options.end()) {
+        throw std::invalid_argument("register_option: " + std::string(section) + "." + std::string(key) +
+                                    " is not a choice that lacks \"" + option + "\"");
+    }
+    const std::string added = " or `\"" + option + "\"` (" + meaning + ")";
+    k->options.push_back(option);
+    k->meaning += added;
+    return SchemaRegistration(std::string(section), std::string(key), option, added);
 }
 
 KeyCondition when_chosen(std::string section, std::string selector, std::vector<std::string> values) {

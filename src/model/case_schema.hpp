@@ -166,6 +166,10 @@ struct SectionSpec {
     // Where registered keys of entry i keep their values; empty: the section takes none.
     std::function<ParameterSet*(Case&, std::size_t)> params;
     bool registered = false;  // added by register_section (its entries are Case::sections[name])
+    // A registered section's heading and paragraph in docs/case-files.md (model/case_schema_docs.hpp),
+    // which lists it with its key table where the page gives it no block of its own.
+    std::string title;
+    std::string doc;
 
     [[nodiscard]] const KeySpec* key(std::string_view name) const;
     // The path of entry i ("supports[1]", "beam", "" for the top level).
@@ -196,6 +200,8 @@ class SchemaRegistration {
 public:
     SchemaRegistration() = default;
     SchemaRegistration(std::string section, std::vector<std::string> keys);
+    // An option added to the choice `key` of `section`, with the words added to its meaning.
+    SchemaRegistration(std::string section, std::string key, std::string option, std::string meaning);
     SchemaRegistration(SchemaRegistration&& other) noexcept;
     SchemaRegistration& operator=(SchemaRegistration&& other) noexcept;
     SchemaRegistration(const SchemaRegistration&) = delete;
@@ -206,6 +212,8 @@ public:
 private:
     std::string section_;             // empty: nothing to undo
     std::vector<std::string> keys_;   // the keys added to a section; empty: the whole section
+    std::string option_;              // an option added to the choice keys_[0]; empty: none
+    std::string meaning_;             // what that option appended to the choice's meaning
 };
 
 // Adds a section whose entries are ParameterSets in Case::sections[spec.name]; its keys' accessors
@@ -214,6 +222,18 @@ private:
 // Adds keys to a section that keeps registered keys (SectionSpec::params), e.g. a law's own keys
 // beside a choice that selects it; their values live in the entries' ParameterSets.
 [[nodiscard]] SchemaRegistration register_keys(std::string_view section, std::vector<KeySpec> keys);
+
+// Adds `option` to the choice `key` of `section`, and " or `\"option\"` (meaning)" to the key's
+// meaning: a law a force family brings to a choice that lives with its section (supports' `law`),
+// so that the next law adds its own option without touching the file of the one before. Throws
+// std::invalid_argument for an unknown key, a key that is not a choice, or an option it has.
+[[nodiscard]] SchemaRegistration register_option(std::string_view section, std::string_view key, std::string option,
+                                                 std::string meaning);
+
+// Gives k accessors to its value in the ParameterSet of its section's entry (KeySpec::in_params):
+// what register_section and register_keys do for a registered key, and what a built-in key uses
+// whose value is read by a higher layer alone (supports' `law`).
+void bind_to_params(KeySpec& k, const std::string& section);
 
 // A condition for a registered key: the entry's choice (or text) key `selector` is one of `values`.
 KeyCondition when_chosen(std::string section, std::string selector, std::vector<std::string> values);

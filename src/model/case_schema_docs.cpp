@@ -10,6 +10,8 @@ namespace {
 const std::string kBegin = "<!-- case-keys:";
 const std::string kEnd = "<!-- /case-keys:";
 const std::string kTopLevel = "top-level";
+const std::string kRegisteredBegin = "<!-- registered-sections -->";
+const std::string kRegisteredEnd = "<!-- /registered-sections -->";
 
 // A default as the docs write it: 1e-10, 0.01, 200, and whole numbers in full (50000000).
 std::string doc_number(double v) {
@@ -96,6 +98,35 @@ std::string cell(const std::string& text) {
 
 std::string block_name(const SectionSpec& s) { return s.name.empty() ? kTopLevel : s.name; }
 
+bool has_own_block(const std::string& page, const SectionSpec& s) {
+    return page.find(kBegin + block_name(s) + " -->") != std::string::npos;
+}
+
+// The registered sections without a block of their own: heading, paragraph, table.
+std::string registered_sections(const std::string& page, const CaseSchema& schema) {
+    std::string out;
+    for (const SectionSpec& s : schema.sections) {
+        if (!s.registered || has_own_block(page, s)) continue;
+        const std::string head = s.array ? "[[" + s.name + "]]" : "[" + s.name + "]";
+        out += "\n### `" + head + "`" + (s.title.empty() ? "" : " " + s.title) + "\n\n";
+        if (!s.doc.empty()) out += s.doc + "\n\n";
+        out += case_key_table(s);
+    }
+    return out;
+}
+
+// page with its block of registered sections filled (unchanged when it has none).
+std::string with_registered_sections(const std::string& page, const CaseSchema& schema) {
+    const std::size_t begin = page.find(kRegisteredBegin);
+    if (begin == std::string::npos) return page;
+    const std::size_t line_end = page.find('\n', begin);
+    const std::size_t end = page.find(kRegisteredEnd, begin);
+    if (line_end == std::string::npos || end == std::string::npos || end < line_end) {
+        throw std::invalid_argument("a registered-sections block without its end");
+    }
+    return page.substr(0, line_end + 1) + registered_sections(page, schema) + "\n" + page.substr(end);
+}
+
 }  // namespace
 
 std::string case_key_table(const SectionSpec& s) {
@@ -128,13 +159,15 @@ std::string with_case_key_tables(const std::string& page, const CaseSchema& sche
         out += page.substr(at, line_end + 1 - at) + case_key_table(*s);
         at = end;
     }
-    return out + page.substr(at);
+    return with_registered_sections(out + page.substr(at), schema);
 }
 
 std::vector<std::string> undocumented_sections(const std::string& page, const CaseSchema& schema) {
     std::vector<std::string> out;
+    const bool registered_block = page.find(kRegisteredBegin) != std::string::npos;
     for (const SectionSpec& s : schema.sections) {
-        if (page.find(kBegin + block_name(s) + " -->") == std::string::npos) out.push_back(block_name(s));
+        if (has_own_block(page, s) || (s.registered && registered_block)) continue;
+        out.push_back(block_name(s));
     }
     return out;
 }
