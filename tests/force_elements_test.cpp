@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -26,6 +27,8 @@
 #include "forces/midplane_stretching.hpp"
 #include "forces/point_load_element.hpp"
 #include "forces/squeeze_film.hpp"
+#include "problem/element_families.hpp"
+#include "support/contract_elements.hpp"
 #include "support/pad_points.hpp"
 #include "support/test_elements.hpp"
 
@@ -105,33 +108,30 @@ ForceElementPtr stretching() {
     return std::make_shared<MidplaneStretching>("beam.stretching", G, 1e6);
 }
 
-struct Named {
-    std::string label;
-    std::function<ForceElementPtr()> make;
-    bool linear = true;     // has a LinearForm (else the exact solver refuses it)
-    bool potential = true;  // its force at rest is minus the gradient of its stored energy (not a prescribed load)
-};
+using Named = test::ContractElement;
 
-std::vector<Named> elements() {
+// The samples of the elements this file holds; an element's own test file adds its samples
+// (support/contract_elements.hpp).
+std::vector<Named> own_elements() {
     return {
-        {"contact below, damped",
+        {"contact below, damped", "support contacts",
          [] { return std::make_shared<KelvinVoigtContact>("supports[0]", 0, 1.0, 0.2e-6, 1000.0, 5e-5, 1e-4); }},
-        {"contact above, undamped",
+        {"contact above, undamped", "support contacts",
          [] { return std::make_shared<KelvinVoigtContact>("supports[1]", 0, -1.0, -0.3e-6, 50.0, 0.0, 1e-4); }},
         // Pull-off 1 uN, range 0.3 um: the samples' +-1 um reach every piece of the cohesive law.
-        {"adhesive contact below, damped",
+        {"adhesive contact below, damped", "support contacts",
          [] {
              return std::make_shared<AdhesiveContact>("supports[2]", 0, 1.0, 0.2e-6, 1000.0, 5e-5, 1e-4, 1e-6, 0.3e-6,
                                                       "DMT");
          },
          false},
-        {"adhesive contact above, undamped",
+        {"adhesive contact above, undamped", "support contacts",
          [] {
              return std::make_shared<AdhesiveContact>("supports[3]", 0, -1.0, -0.3e-6, 50.0, 0.0, 1e-4, 5e-6, 0.2e-6,
                                                       "JKR");
          },
          false},
-        {"step load on four DOFs",
+        {"step load on four DOFs", "point loads",
          [] {
              TimeFunction g;
              g.kind = TimeFunction::Kind::step;
@@ -141,7 +141,7 @@ std::vector<Named> elements() {
          },
          true,
          false},
-        {"harmonic load",
+        {"harmonic load", "point loads",
          [] {
              TimeFunction g;
              g.kind = TimeFunction::Kind::harmonic;
@@ -155,13 +155,13 @@ std::vector<Named> elements() {
          false},
         // One element 1 m long: its rotations then move the film's points by as much as its
         // displacements do, so that the central differences (steps of 1e-12) resolve both.
-        {"squeeze film below, slip flow",
+        {"squeeze film below, slip flow", "squeeze films",
          [] {
              const double L = 1.0;
              return std::make_shared<SqueezeFilm>("films[0]", std::vector<int>{0, 1, 2, 3}, test::one_element_points(L),
                                                   FilmGeometry{-1.0, 3e-6, 30e-6, 0.0, L}, FilmGas{1.85e-5, 68e-9});
          }},
-        {"squeeze film above, rarefied",
+        {"squeeze film above, rarefied", "squeeze films",
          [] {
              const double L = 1.0;
              return std::make_shared<SqueezeFilm>("films[1]", std::vector<int>{0, 1, 2, 3}, test::one_element_points(L),
@@ -169,29 +169,49 @@ std::vector<Named> elements() {
          }},
         // The layers on one element 1 m long (as the films), their face 0.1 um from the axis, so that
         // the samples' +-1 um press in, pass through the attraction's range and leave it.
-        {"dielectric contact below",
+        {"dielectric contact below", "dielectric layers",
          [] { return dielectric_layer(-1.0, std::nullopt); },
          false},
         // W = 0.1 k r^2: the rest penetration lies where the layer's stiffness comes in (d_0 < r).
-        {"adhesive dielectric contact below, soft pull",
+        {"adhesive dielectric contact below, soft pull", "dielectric layers",
          [] { return dielectric_layer(-1.0, AdhesiveLayerLaw(1e3, 0.1 * 1e3 * 0.3e-6 * 0.3e-6, 0.3e-6)); },
          false},
         // W = 5 k r^2: it lies beyond (d_0 > r), where the layer is a linear spring.
-        {"adhesive dielectric contact above, strong pull",
+        {"adhesive dielectric contact above, strong pull", "dielectric layers",
          [] { return dielectric_layer(1.0, AdhesiveLayerLaw(1e3, 5.0 * 1e3 * 0.2e-6 * 0.2e-6, 0.2e-6)); },
          false},
-        {"electrode above, parallel plate", [] { return electrode(1.0, Fringing::none); }, false},
-        {"electrode below, Meijs-Fokkema fringing", [] { return electrode(-1.0, Fringing::meijs_fokkema); }, false},
-        {"mid-plane stretching", [] { return stretching(); }, false},
+        {"electrode above, parallel plate", "electrostatic pads", [] { return electrode(1.0, Fringing::none); }, false},
+        {"electrode below, Meijs-Fokkema fringing", "electrostatic pads", [] { return electrode(-1.0, Fringing::meijs_fokkema); }, false},
+        {"mid-plane stretching", "mid-plane stretching", [] { return stretching(); }, false},
         // k of gold on gold through R = 2 um (9.05e7 N/m^(3/2)); alpha 0.5 s/m keeps 1 + alpha dd/dt
         // in (0.75, 1.25) over the samples' +-0.5 m/s.
-        {"Hertz contact below, Hunt-Crossley damped",
+        {"Hertz contact below, Hunt-Crossley damped", "Hertz contacts",
          [] { return std::make_shared<HertzContact>("supports[4]", 0, 1.0, 0.2e-6, 1e-4, 9.05e7, 0.5, 2e-6); },
          false},
-        {"Hertz contact above, undamped",
+        {"Hertz contact above, undamped", "Hertz contacts",
          [] { return std::make_shared<HertzContact>("supports[5]", 0, -1.0, -0.3e-6, 1e-4, 9.05e7, 0.0, 2e-6); },
          false},
     };
+}
+
+const bool kOwnElementsAdded = [] {
+    for (Named& n : own_elements()) test::add_contract_element(std::move(n));
+    return true;
+}();
+
+// Every sample, this file's and those the elements' own test files add.
+const std::vector<Named>& elements() { return test::contract_elements(); }
+
+// Every family of the registry has its elements in the contract: a new family's test file adds
+// samples of its element (add_contract_element), or this fails naming the family.
+TEST(ForceElementContractCoverage, EveryRegisteredFamilyHasSamples) {
+    ASSERT_TRUE(kOwnElementsAdded);
+    for (const ElementFamily* family : element_families()) {
+        const bool sampled = std::any_of(elements().begin(), elements().end(),
+                                         [&](const Named& n) { return n.family == family->name(); });
+        EXPECT_TRUE(sampled) << "the family \"" << family->name()
+                             << "\" has no sample in the force-element contract (test::add_contract_element)";
+    }
 }
 
 class ForceElementContract : public ::testing::TestWithParam<std::size_t> {};
@@ -363,8 +383,8 @@ TEST(AdhesiveContact, SwitchingFunctionsStateThePullOffRule) {
 
 TEST(ForceSet, TheFirstElementThatIsNotPiecewiseLinearIsNamed) {
     // An element with no linear form rules the exact solver out; the set names it.
-    ForceSet set{elements()[0].make(), std::make_shared<test::CubicSpring>(0, 1.0), elements()[4].make()};
-    ASSERT_EQ(elements()[4].label, "step load on four DOFs");
+    ForceSet set{own_elements()[0].make(), std::make_shared<test::CubicSpring>(0, 1.0), own_elements()[4].make()};
+    ASSERT_EQ(own_elements()[4].label, "step load on four DOFs");
     ASSERT_NE(first_nonlinear(set), nullptr);
     EXPECT_EQ(first_nonlinear(set)->name(), "springs[0]");
     set.erase(set.begin() + 1);
