@@ -159,7 +159,8 @@ TEST(CsvNames, UnitOrDimensionlessNameInEveryColumn) {
                            "m50_tau1", "tau_p", "Tp_reason", "ratio_3", "impacts", "impact2_episodes", "impact1_support", "Y_2",
                            "Phi_3_1", "status", "supports[0].gap_m", "supports[1].position_over_l", "damping.ratios[0]",
                            "material.density_kg_m3", "supports[0].work_of_adhesion_j_m2", "best_y_max_m", "low_supports[0].gap_m",
-                           "data_tip_m", "residual_tip_velocity_m_s", "residual_over_sigma", "value_in_feature_unit", "critical_work_of_adhesion_j_m2", "pressure_pa"}) {
+                           "data_tip_m", "residual_tip_velocity_m_s", "residual_over_sigma", "value_in_feature_unit", "critical_work_of_adhesion_j_m2", "pressure_pa",
+                           "curvature_per_m", "stress_gradient_pa_per_m"}) {
         EXPECT_TRUE(csv_column_name_ok(ok)) << ok;
     }
     for (const char* bad : {"", "time [µs]", "tip_m [µm]", "voltage_V", "f1_Hz", "contact_force_N", "z_max_m50", "data", "residual",
@@ -172,6 +173,9 @@ TEST(CsvNames, UnitOrDimensionlessNameInEveryColumn) {
     EXPECT_EQ(csv_column_unit("impulse_n_s").unit, "N s");
     EXPECT_EQ(csv_column_unit("t_us").unit, "µs");
     EXPECT_EQ(csv_column_unit("z_max").unit, "");
+    EXPECT_EQ(csv_column_unit("stress_gradient_pa_per_m").unit, "Pa/m");
+    EXPECT_EQ(csv_column_unit("stress_gradient_pa_per_m").stem, "stress_gradient");
+    EXPECT_EQ(csv_column_unit("curvature_per_m").unit, "1/m");
     EXPECT_THROW(csv_unit_suffix("furlong"), std::invalid_argument);
 }
 

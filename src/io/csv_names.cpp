@@ -29,6 +29,8 @@ const std::vector<Suffix>& suffixes() {
             {"_us", "µs"}, {"_ns", "ns"}, {"_ms", "ms"}, {"_um", "µm"}, {"_nm", "nm"}, {"_mm", "mm"}, {"_un", "µN"},
             {"_pj", "pJ"}, {"_ff", "fF"}, {"_s", "s"}, {"_m", "m"}, {"_n", "N"}, {"_j", "J"}, {"_w", "W"},
             {"_v", "V"}, {"_f", "F"}, {"_k", "K"}, {"_ohm_m2", "Ω m²"}, {"_ohm_m", "Ω m"}, {"_ohm", "Ω"},
+            // a curvature, and a gradient of a stress through a thickness
+            {"_per_m", "1/m"}, {"_pa_per_m", "Pa/m"},
         };
         std::stable_sort(v.begin(), v.end(), [](const Suffix& a, const Suffix& b) {
             return std::string_view(a.suffix).size() > std::string_view(b.suffix).size();
@@ -98,7 +100,7 @@ std::string csv_unit_suffix(std::string_view unit) {
         {"N/m", "_n_m"},     {"N s/m", "_n_s_m"},   {"J/m^2", "_j_m2"},  {"1/s", "_per_s"}, {"m/s", "_m_s"},
         {"Hz", "_hz"},       {"rad", "_rad"},       {"V", "_v"},         {"K", "_k"},       {"Pa s", "_pa_s"},
         {"x/l", "_over_l"},  {"periods", "_periods"}, {"-", ""}, {"ohm", "_ohm"}, {"ohm m", "_ohm_m"},
-        {"ohm m^2", "_ohm_m2"},
+        {"ohm m^2", "_ohm_m2"}, {"1/m", "_per_m"}, {"Pa/m", "_pa_per_m"},
     };
     for (const auto& [u, suffix] : si) {
         if (u == unit) return std::string(suffix);
