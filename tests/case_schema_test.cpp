@@ -153,6 +153,7 @@ TEST(CaseSchema, WrittenCaseReadsBackToTheSameCase) {
 class ToyRegistration : public ::testing::Test {
 protected:
     void SetUp() override {
+        sections_before_ = case_schema().sections.size();
         SectionSpec springs;
         springs.name = "springs";
         springs.array = true;
@@ -188,6 +189,7 @@ protected:
 
     SchemaRegistration section_;
     SchemaRegistration law_;
+    std::size_t sections_before_ = 0;  // the built-in sections and those the element families keep
 };
 
 const std::string kToySupport = "[[supports]]\nposition = 1.0\nstiffness = \"50 N/m\"\ntoy_law = \"toy\"\ntoy_exponent = 2.5\n";
@@ -280,8 +282,11 @@ TEST_F(ToyRegistration, RegisteredKeysAreSweptResolvedAndDocumented) {
 // and table fill the block of registered sections.
 TEST_F(ToyRegistration, RegisteredSectionIsDocumentedWithoutEditingThePage) {
     const std::string page = "# Keys\n<!-- registered-sections -->\nold text\n<!-- /registered-sections -->\nend\n";
-    EXPECT_TRUE(undocumented_sections(page, case_schema()).size() + 1 ==
-                undocumented_sections("# Keys\n", case_schema()).size());
+    const auto lists_springs = [](const std::vector<std::string>& names) {
+        return std::find(names.begin(), names.end(), "springs") != names.end();
+    };
+    EXPECT_FALSE(lists_springs(undocumented_sections(page, case_schema())));
+    EXPECT_TRUE(lists_springs(undocumented_sections("# Keys\n", case_schema())));
     const std::string fresh = with_case_key_tables(page, case_schema());
     EXPECT_EQ(fresh.find("old text"), std::string::npos) << fresh;
     EXPECT_NE(fresh.find("\n### `[[springs]]`\n\n| Key |"), std::string::npos) << fresh;
@@ -319,7 +324,7 @@ TEST_F(ToyRegistration, RegistrationEndsWithItsHandle) {
     EXPECT_EQ(case_schema().section("springs"), nullptr);
     EXPECT_EQ(case_schema().section("supports")->key("toy_exponent"), nullptr);
     EXPECT_EQ(error_of(test::kBaseCase + kSprings).rfind("toy.toml:11: springs: unknown key", 0), 0u);
-    EXPECT_EQ(case_schema().sections.size(), builtin_case_schema().sections.size());
+    EXPECT_EQ(case_schema().sections.size(), sections_before_);
     EXPECT_THROW((void)register_section(SectionSpec{}), std::invalid_argument);
 }
 

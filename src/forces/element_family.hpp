@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 #include <cstddef>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -50,6 +51,10 @@ public:
     // Registers the case keys it reads that are not built in (register_section, register_keys),
     // for the program's life; called once, before the first case is read.
     virtual void register_case_keys() const {}
+    // One item of the validation report's list of checks that run in the test suite
+    // (docs/validation.md, "Validated in the test suite"): its test file, the closed forms it checks
+    // and their sources, in Markdown without the leading "- "; empty: the list names it already.
+    [[nodiscard]] virtual std::string validation() const { return {}; }
 };
 
 }  // namespace vi

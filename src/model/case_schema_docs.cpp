@@ -39,7 +39,11 @@ std::string type_cell(const KeySpec& k) {
     switch (k.kind) {
         case KeyKind::number:
             if (k.dimension != Dimension::dimensionless) return std::string(dimension_label(k.dimension));
-            return k.unit == "-" ? "dimensionless" : "dimensionless (" + k.unit + ")";
+            if (k.unit == "-") return "dimensionless";
+            // A ratio or an angle is dimensionless; a unit no Dimension has (ohm, 1/m) is read as
+            // a plain number in that SI unit.
+            if (k.unit == "x/l" || k.unit == "rad" || k.unit == "periods") return "dimensionless (" + k.unit + ")";
+            return "a number in " + k.unit + " (SI, no unit text)";
         case KeyKind::integer: return "integer (a TOML integer: `50`, not `50.0` or `\"50\"`)";
         case KeyKind::number_pair: return "array of 2 dimensionless numbers";
         case KeyKind::integer_pair: return "array of 2 integers";

@@ -1,12 +1,19 @@
-// Section 11 of the validation report: the checks that run in the test suite only (their measured
+// Section 12 of the validation report: the checks that run in the test suite only (their measured
 // figures are in the documents named), with the published formulas they test against. Static text:
-// nothing here is computed, so nothing here can go stale against the code's output.
+// nothing here is computed, so nothing here can go stale against the code's output. A force element's
+// family adds its own item (ElementFamily::validation), after these.
 
 #include "validation/report.hpp"
+
+#include "problem/element_families.hpp"
 
 namespace vi::validation_detail {
 
 std::string section_elsewhere() {
+    std::string families;
+    for (const ElementFamily* family : element_families()) {
+        if (const std::string item = family->validation(); !item.empty()) families += "- " + item + "\n";
+    }
     return "## 12. Validated in the test suite (figures in the documents named)\n\n"
            "These checks run in `ctest`; their measured figures are in the documents named, not recomputed here.\n\n"
            "- **Beams held at both ends** (`tests/axial_stress_test.cpp`; docs/electrostatics.md §8): frequencies "
@@ -63,7 +70,8 @@ std::string section_elsewhere() {
            "259; Jansen, *Comput. Phys. Commun.* 117 (1999) 35) to 0.01, their bootstrap intervals holding the "
            "closed forms in 94 % of 360 cases; the coverage of the mean's t interval, the quantiles' order-statistic "
            "intervals (Hahn and Meeker 1991) and Wilson's yield interval (Wilson 1927) over 2000 independent "
-           "samples; a resumed study and one on another thread count give the same uq.json byte for byte.\n";
+           "samples; a resumed study and one on another thread count give the same uq.json byte for byte.\n" +
+           families;
 }
 
 }  // namespace vi::validation_detail
