@@ -3,6 +3,7 @@
 #include "model/case_schema.hpp"
 
 #include "forces/hertz_contact.hpp"
+#include "forces/intrinsic_curvature.hpp"
 #include "forces/midplane_stretching.hpp"
 #include "forces/point_load_element.hpp"
 #include "forces/support_contacts.hpp"
@@ -21,6 +22,7 @@ const std::vector<const ElementFamily*>& element_families() {
         &dielectric_layers(),  // [[electrodes]] with a dielectric layer: contacts
         &squeeze_films(),      // [air]: the electrodes' films and [[films]]
         &beam_stretching(),    // beam.stretching
+        &intrinsic_curvatures(),  // [curl]: the released beam's curvature
     };
     return families;
 }
