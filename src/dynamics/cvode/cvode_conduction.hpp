@@ -17,6 +17,8 @@ public:
     using DenseOutput = std::function<const double*(double)>;
 
     ConductionRecorder(const ModalSystem& system, TransientResult& result);
+    // Some contact has a threshold to watch.
+    [[nodiscard]] bool active() const { return !tracks_.empty(); }
     // The state at t = 0 in the elements' initial modes: a contact that starts closed below its
     // threshold conducts from 0.
     void start(const double* y, const std::vector<int>& modes);

@@ -291,6 +291,7 @@ double Driver::handle_roots(double tret) {
 }
 
 void Driver::advance_conduction(double t) {
+    if (!conduction_.active()) return;
     double tcur = 0.0, hlast = 0.0;
     check(CVodeGetCurrentTime(s_.mem, &tcur), "CVodeGetCurrentTime");
     check(CVodeGetLastStep(s_.mem, &hlast), "CVodeGetLastStep");
