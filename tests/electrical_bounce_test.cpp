@@ -9,12 +9,14 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <utility>
 
 #include "dynamics/cvode/cvode_solver.hpp"
 #include "forces/hertz_contact.hpp"
 #include "impacts/electrical_ledger.hpp"
 #include "impacts/simulation.hpp"
 #include "io/case_reader.hpp"
+#include "report/contact_resistance.hpp"
 #include "report/transient_output.hpp"
 #include "support/run_command.hpp"
 #include "sweep/columns.hpp"
@@ -193,6 +195,36 @@ TEST(ElectricalBounce, DoesNotDependOnTheOutputStep) {
     const double step = a.result.history.t[1];
     EXPECT_LE(j["below_r_on_from_s"].get<double>() - *l->settle_time, step);
     EXPECT_GE(j["below_r_on_from_s"].get<double>(), *l->settle_time);
+}
+
+// Every sample of the history agrees with the stretches: below r_on inside one, at or above it (or
+// open) outside, but for samples within 1e-13 s of a stretch's end; the switch example's closures
+// sag and rise above r_on while closed, so this covers the crossings inside a closure too.
+TEST(ElectricalBounce, StretchesHoldEverySampleBelowTheThreshold) {
+    // At rtol 1e-3 CVODE's steps are long enough that one closure sags above 0.5 ohm and back within
+    // a single step (34.03 to 34.28 us, about 15 samples above r_on): the dip between two returns.
+    for (const auto& [r_on, rtol] : {std::pair{0.5, 0.0}, {0.2, 0.0}, {0.12, 0.0}, {0.5, 1e-3}}) {
+        SCOPED_TRACE("r_on " + std::to_string(r_on) + ", rtol " + std::to_string(rtol));
+        Case c = switch_case(r_on);
+        if (rtol > 0.0) c.solver.rtol = rtol;
+        const SimulationRun run = run_quiet(c);
+        const std::vector<ResistanceSeries> series = contact_resistances(run.built.model, run.result);
+        ASSERT_EQ(series.size(), 1u);
+        const std::vector<ConductionStretch>& st = run.result.conduction[0].stretches;
+        const TimeHistory& h = run.result.history;
+        std::size_t inside = 0, mismatched = 0;
+        for (std::size_t i = 0; i < h.t.size(); ++i) {
+            bool in = false, near_end = false;
+            for (const ConductionStretch& s : st) {
+                in = in || (h.t[i] >= s.t_on && h.t[i] <= s.t_off);
+                near_end = near_end || std::abs(h.t[i] - s.t_on) < 1e-13 || std::abs(h.t[i] - s.t_off) < 1e-13;
+            }
+            inside += in ? 1 : 0;
+            if (in != (series[0].ohm[i] < r_on) && !near_end) ++mismatched;
+        }
+        EXPECT_EQ(mismatched, 0u);
+        EXPECT_GT(inside, 50u);
+    }
 }
 
 // The sweep's columns: the ledger of the first resistive support, empty without a resistance model.

@@ -24,8 +24,10 @@ public:
     void start(const double* y, const std::vector<int>& modes);
     // A return of CVODE at t with state y, the modes unchanged since the previous return: a change of
     // conduction since then is located by bisection on `at`, valid from step_start to t. Between
-    // returns the penetration is monotone (its maxima are the contacts' watch roots, each a return),
-    // so the resistance crosses the threshold at most once there.
+    // returns the penetration has no interior maximum (its maxima are the contacts' watch roots, each
+    // a return), so it is monotone there or falls to one minimum and rises again: the resistance
+    // crosses the threshold once, or, conducting at both ends, rises above it and back around that
+    // minimum, which is looked for where the penetration falls at the start and rises at the end.
     void advance(double t, const double* y, const std::vector<int>& modes, double step_start, const DenseOutput& at);
     // The elements switched mode at t (state y, the new modes): a contact that opened stops
     // conducting at t.
@@ -43,6 +45,12 @@ private:
     // Element e closed (in its contact mode) with a resistance below r_on at y.
     [[nodiscard]] bool conducting(const Track& k, double t, const double* y, const std::vector<int>& modes) const;
     void change(Track& k, double t, double resistance);
+    // The first time in (lo, hi] at which conducting(...) == want, it being != want at lo [s].
+    [[nodiscard]] double crossing(const Track& k, double lo, double hi, bool want, const std::vector<int>& modes,
+                                  const DenseOutput& at) const;
+    // Conducting at lo and at t: an interior minimum of the penetration where the contact stops
+    // conducting is recorded as an off and an on crossing.
+    void dip(Track& k, double lo, double t, const double* y, const std::vector<int>& modes, const DenseOutput& at);
 
     const ModalSystem& sys_;
     TransientResult& r_;
