@@ -96,9 +96,9 @@ FigureSpec sobol_bars(const std::string& column, const nlohmann::json& sobol, co
     const auto total = [](const Row& r) { return r.x["total"].is_number() ? r.x["total"].get<double>() : 0.0; };
     std::stable_sort(rows.begin(), rows.end(), [&](const Row& a, const Row& b) { return total(a) > total(b); });
     CsvTable t;
-    // position: the input's place on the chart's x axis (0, 1, ...), for the interactive chart.
+    // input_index: the input's place on the chart's x axis (0, 1, ...), for the interactive chart.
     t.header = {"input", "sobol_first", "sobol_first_low", "sobol_first_high", "sobol_total", "sobol_total_low",
-                "sobol_total_high", "position"};
+                "sobol_total_high", "input_index"};
     const auto num = [](const nlohmann::json& v) { return v.is_number() ? csv_number(v.get<double>()) : csv_missing(); };
     for (const Row& r : rows) {
         const nlohmann::json& fc = r.x["first_ci"];
@@ -131,7 +131,7 @@ FigureSpec sobol_bars(const std::string& column, const nlohmann::json& sobol, co
     const auto index_bars = [](const char* label, const std::string& stem, double offset, const char* color) {
         ChartSeries b;
         b.label = label;
-        b.x = "position";
+        b.x = "input_index";
         b.x_offset = offset;
         b.y = stem;
         b.y_low = stem + "_low";
