@@ -5,11 +5,13 @@
 #include <memory>
 #include <string>
 
+#include "impacts/electrical_ledger.hpp"
 #include "impacts/simulation.hpp"
 #include "commands.hpp"
 #include "io/case_reader.hpp"
 #include "model/input_error.hpp"
 #include "io/output_files.hpp"
+#include "io/units.hpp"
 #include "model/run_control.hpp"
 #include "report/transient_output.hpp"
 #include "stop_signals.hpp"
@@ -39,6 +41,44 @@ void print_switching(const SwitchingLedger& l) {
     } else if (l.stuck) {
         std::printf("  stuck on supports[%d]: restoring force %.4g N vs pull-off force %.4g N (the contact pulls %.4g N)\n",
                     l.stuck->support, l.stuck->restoring_force, l.stuck->pull_off_force, -l.stuck->contact_force);
+    }
+}
+
+// --r-on TEXT: the on threshold of every support with a resistivity, as its key r_on [ohm]. One line
+// naming the option when the value is not a positive finite number or no support has a resistance.
+void apply_r_on(Case& c, const std::string& text) {
+    double v = 0.0;
+    try {
+        v = parse_quantity(text, Dimension::dimensionless);
+    } catch (const std::invalid_argument& e) {
+        throw InputError("--r-on " + in_quotes(text) + ": " + e.what());
+    }
+    if (!(v > 0.0)) throw InputError("--r-on " + in_quotes(text) + ": the threshold must be above 0 ohm");
+    bool any = false;
+    for (Support& s : c.supports) {
+        if (s.params.numbers.count("resistivity") == 0) continue;
+        s.params.numbers["r_on"] = v;
+        any = true;
+    }
+    if (!any) throw InputError("--r-on: no support of " + c.name + " has a resistivity (a contact resistance to threshold)");
+}
+
+std::string ohm_text(double r) { return significant(r, 4) + " ohm"; }
+
+// The electrical bounce ledger of each contact with a threshold: one line each.
+void print_electrical(const SimulationRun& run) {
+    for (const ContactConduction& c : run.result.conduction) {
+        const std::string& name = run.built.model.contacts[static_cast<std::size_t>(c.contact)].name;
+        const std::optional<ElectricalLedger> l = electrical_ledger(c);
+        const std::string end = std::isfinite(c.end_resistance) ? ohm_text(c.end_resistance) : "open";
+        if (!l) {
+            std::printf("Contact resistance %s: %s at the end; no r_on, no electrical bounce ledger\n", name.c_str(), end.c_str());
+            continue;
+        }
+        const std::string settled = l->settle_time ? "settled from " + us(l->settle_time) : "never settled below r_on";
+        std::printf("Contact resistance %s: %s at the end; below r_on = %s first at %s, %d electrical bounce(s), %s\n",
+                    name.c_str(), end.c_str(), ohm_text(l->r_on).c_str(), us(l->first_closure).c_str(), l->bounces,
+                    settled.c_str());
     }
 }
 
@@ -77,15 +117,21 @@ CommandBody add_simulate_command(CLI::App& app) {
         std::string case_path;
         bool json = false;
         std::string out_dir;
+        std::string r_on;
+        CLI::Option* r_on_option = nullptr;
     };
     auto opt = std::make_shared<SimulateCommandOptions>();
     CLI::App* sub = app.add_subcommand("simulate", "Free impact transient: release, bouncing, settling");
     sub->add_option("case", opt->case_path, "Case file (TOML) with [initial] and [solver] horizon")->required();
     sub->add_flag("--json", opt->json, "Print the summary JSON on stdout instead of a table");
     sub->add_option("--out,-o", opt->out_dir, "Folder for history.csv, events.csv and summary.json");
+    opt->r_on_option = sub->add_option("--r-on", opt->r_on,
+                    "On threshold of the contact resistance [ohm] for every support with a resistivity (sets their "
+                    "r_on): the electrical bounce ledger");
 
     return [opt]() {
-        const Case c = read_case_file(opt->case_path);
+        Case c = read_case_file(opt->case_path);
+        if (opt->r_on_option->count() > 0) apply_r_on(c, opt->r_on);
         SimulationRun run;
         try {
             run = run_simulation(c);
@@ -129,6 +175,7 @@ CommandBody add_simulate_command(CLI::App& app) {
         std::printf("  Tp (transient duration)          %s  [%s]\n", us(s.Tp).c_str(), s.Tp_reason.c_str());
         if (s.y_max) std::printf("  y_max %.4g m, z_max %.4g\n", *s.y_max, *s.z_max);
         if (run.switching) print_switching(*run.switching);
+        print_electrical(run);
         if (!opt->out_dir.empty()) std::printf("Written to %s/\n", opt->out_dir.c_str());
         return kExitOk;
     };

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <stdexcept>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -14,6 +15,7 @@
 #include "commands.hpp"
 #include "figure_output.hpp"
 #include "study/uq/uq_figures.hpp"
+#include "study/uq/uq_report.hpp"
 #include "io/case_reader.hpp"
 #include "io/output_files.hpp"
 #include "io/text_file.hpp"
@@ -162,14 +164,18 @@ int finish_on_root(const UqCommandOptions& o, const UqPlan& uq, SweepStore& stor
     // the exit code says the figures are missing.
     std::string figure_trouble;
     const std::vector<FigureSpec> figures = uq_figures(j, table, uq.design, uq.settings.specs, uq.plots);
+    std::map<std::string, std::string> png;
     if (!figures.empty()) {
         try {
             const std::string gnuplot = require_gnuplot(o.gnuplot, "the histograms and Sobol charts");
-            for (auto& [name, text] : figure_files(figures, render_figures(gnuplot, figures, 1))) files[name] = std::move(text);
+            for (auto& [name, text] : figure_files(figures, render_figures(gnuplot, figures, 1), &png)) files[name] = std::move(text);
         } catch (const std::runtime_error& e) {
             figure_trouble = e.what();
+            png.clear();
         }
     }
+    // The page holds the tables in any case; its figures where gnuplot drew them.
+    files["uq.html"] = uq_html(j, uq.plots, figures, png);
     {
         const CommitSection commit;
         store.finish_with(o.out_dir, files);
@@ -179,7 +185,7 @@ int finish_on_root(const UqCommandOptions& o, const UqPlan& uq, SweepStore& stor
     } else {
         print_summary(j, uq.settings);
         std::printf("Computed %zu runs in %.3g s on %d threads x %d processes (%zu from the journal); written to %s/ "
-                    "(uq.json, samples.csv%s)\n",
+                    "(uq.json, samples.csv, uq.html%s)\n",
                     info.computed_this_run, info.wall_s, info.threads, info.processes, info.from_journal,
                     o.out_dir.c_str(), figures.empty() || !figure_trouble.empty() ? "" : ", figures");
     }

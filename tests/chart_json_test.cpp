@@ -104,6 +104,43 @@ TEST(ChartJson, RefusesAColumnOrFileTheFigureDoesNotHaveNamingBoth) {
     EXPECT_THROW((void)chart_json(spec("x,y\n1,2\n", s)), std::invalid_argument);
 }
 
+// Bars from x to x_to (a histogram's bins), or bar_width about x moved by x_offset (bars side by
+// side), with interval bars from the y_low and y_high columns, and labelled ticks on x.
+TEST(ChartJson, BarsWithTheirSpansIntervalsAndCategoryTicks) {
+    ChartSeries bins = column_pair("from", "n", ChartSeries::Style::bars);
+    bins.x_to = "to";
+    const json h = json::parse(chart_json(spec("from,to,n\n0,0.5,3\n0.5,1,7\n", bins)));
+    const json& hs = h["panels"][0]["series"];
+    ASSERT_EQ(hs.size(), 1u);
+    EXPECT_EQ(hs[0]["style"], "bars");
+    EXPECT_EQ(hs[0]["x"], json::parse("[0, 0.5]"));
+    EXPECT_EQ(hs[0]["xTo"], json::parse("[0.5, 1]"));
+    EXPECT_EQ(hs[0]["y"], json::parse("[3, 7]"));
+    EXPECT_FALSE(hs[0].contains("yLow"));
+
+    ChartSeries first = column_pair("position", "s", ChartSeries::Style::bars);
+    first.x_offset = -0.2;
+    first.bar_width = 0.35;
+    first.y_low = "s_low";
+    first.y_high = "s_high";
+    FigureSpec f = spec("input,s,s_low,s_high,position\nb,0.6,0.5,nan,0\na,0.3,0.1,0.4,1\n", first);
+    f.charts[0].x_ticks = {{0.0, "b"}, {1.0, "a <x>"}};
+    const json j = json::parse(chart_json(f));
+    const json& s = j["panels"][0]["series"][0];
+    EXPECT_EQ(s["x"], json::parse("[-0.2, 0.8]"));
+    EXPECT_EQ(s["barWidth"], 0.35);
+    EXPECT_FALSE(s.contains("xTo"));
+    EXPECT_EQ(s["yLow"], json::parse("[0.5, 0.1]"));
+    EXPECT_EQ(s["yHigh"], json::parse("[null, 0.4]"));  // an interval the data cannot give: a gap
+    EXPECT_EQ(j["panels"][0]["xTicks"], json::parse(R"([[0, "b"], [1, "a <x>"]])"));
+    // Bars are never joined as a curve is; two at one x are split as a cloud is, one per x in each part.
+    const json same = json::parse(chart_json(spec("x,y\n0,1\n0,2\n1,3\n", column_pair("x", "y", ChartSeries::Style::bars))));
+    EXPECT_EQ(same["panels"][0]["series"].size(), 2u);
+    EXPECT_EQ(same["panels"][0]["series"][0]["x"], json::parse("[0, 1]"));
+    bins.y_low = "missing";
+    EXPECT_THROW(chart_json(spec("from,to,n\n0,1,2\n", bins)), std::invalid_argument);
+}
+
 TEST(ChartJson, FigureChartsHoldsOnlyTheFiguresThatHaveCharts) {
     FigureSpec plain;
     plain.name = "png_only";

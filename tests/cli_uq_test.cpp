@@ -196,6 +196,59 @@ TEST(CliUq, FailedSamplesAreCountedAndReported) {
     fs::remove_all(dir);
 }
 
+// The chart data of figure `stem` in a report page (the JSON inside its <script class="vi-chart-data">).
+json chart_of(const std::string& page, const std::string& stem) {
+    const std::size_t fig = page.find("<figure id=\"" + stem + "\"");
+    if (fig == std::string::npos) return json();
+    const std::string open = "class=\"vi-chart-data\">";
+    const std::size_t from = page.find(open, fig);
+    const std::size_t to = page.find("</script>", from);
+    if (from == std::string::npos || to == std::string::npos) return json();
+    return json::parse(page.substr(from + open.size(), to - from - open.size()));
+}
+
+// uq.html: the interactive histogram holds the histogram's CSV bins, the Sobol chart uq.json's indices
+// with their intervals as interval bars, largest total first, the inputs named on the x axis.
+void check_uq_page(const std::string& out) {
+    const std::string page = read_text(out + "/uq.html");
+    const json j = json::parse(read_text(out + "/uq.json"));
+    ASSERT_FALSE(page.empty());
+    EXPECT_NE(page.find("uPlot"), std::string::npos);
+    const json hist = chart_of(page, "hist_pullin_voltage_v");
+    ASSERT_TRUE(hist.is_object());
+    const json& bars = hist["panels"][0]["series"][0];
+    EXPECT_EQ(bars["style"], "bars");
+    double total = 0.0;
+    for (const json& n : bars["y"]) total += n.get<double>();
+    EXPECT_EQ(total, 64.0);
+    ASSERT_EQ(bars["x"].size(), bars["xTo"].size());
+    for (std::size_t k = 0; k + 1 < bars["x"].size(); ++k) EXPECT_EQ(bars["xTo"][k], bars["x"][k + 1]);
+    EXPECT_EQ(hist["panels"][0]["marks"], json::parse("[60]"));
+    const json sobol = chart_of(page, "sobol_pullin_voltage_v");
+    ASSERT_TRUE(sobol.is_object());
+    const json& panel = sobol["panels"][0];
+    ASSERT_EQ(panel["series"].size(), 2u);
+    ASSERT_EQ(panel["xTicks"].size(), 2u);
+    const json& indices = j["columns"]["pullin_voltage_v"]["sobol"];
+    for (std::size_t k = 0; k < 2; ++k) {
+        const std::string input = panel["xTicks"][k][1];
+        const json& x = indices[input];
+        const json& first = panel["series"][0];
+        const json& tot = panel["series"][1];
+        // 7 significant digits in the chart (plot/chart_json.hpp).
+        EXPECT_NEAR(first["y"][k].get<double>(), x["first"].get<double>(), 1e-6 * std::abs(x["first"].get<double>()) + 1e-12);
+        EXPECT_NEAR(tot["y"][k].get<double>(), x["total"].get<double>(), 1e-6 * std::abs(x["total"].get<double>()) + 1e-12);
+        EXPECT_NEAR(first["yLow"][k].get<double>(), x["first_ci"][0].get<double>(), 1e-6);
+        EXPECT_NEAR(tot["yHigh"][k].get<double>(), x["total_ci"][1].get<double>(), 1e-6);
+        EXPECT_NEAR(first["x"][k].get<double>(), k - 0.2, 1e-12);
+        EXPECT_NEAR(tot["x"][k].get<double>(), k + 0.2, 1e-12);
+    }
+    EXPECT_GE(indices[panel["xTicks"][0][1].get<std::string>()]["total"].get<double>(),
+              indices[panel["xTicks"][1][1].get<std::string>()]["total"].get<double>());
+    // The page's tables: the yield with its interval.
+    EXPECT_NE(page.find("pullin_voltage_v&lt;=60"), std::string::npos);
+}
+
 // The figures of the columns the specs and --plot name: a histogram holding every value, the specs'
 // bounds drawn, and the Sobol chart's inputs by falling total index.
 TEST(CliUq, HistogramsAndSobolChartsOfTheNamedColumns) {
@@ -222,6 +275,7 @@ TEST(CliUq, HistogramsAndSobolChartsOfTheNamedColumns) {
     // The gap's total index is the larger (0.64 against 0.36): it comes first.
     const std::string sobol = read_text(dir + "/out/sobol_pullin_voltage_v.csv");
     EXPECT_LT(sobol.find("electrodes[0].gap"), sobol.find("beam.thickness")) << sobol;
+    check_uq_page(dir + "/out");
     const CommandResult bad = run_vibroimpact(uq_args(dir + "/bad", {"--plot", "pullin_volts"}));
     EXPECT_EQ(bad.exit_code, 2);
     EXPECT_EQ(bad.err.rfind("vibroimpact: error: --plot pullin_volts: no numeric column 'pullin_volts'", 0), 0u) << bad.err;

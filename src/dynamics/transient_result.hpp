@@ -1,6 +1,7 @@
 #pragma once
 // TransientResult: sampled time history, contact episodes and energy ledger of one transient.
 
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -97,6 +98,25 @@ struct RunEndEvent {
     RunEnd reading;
 };
 
+// One stretch during which a contact conducts as a threshold detector sees it: closed with its
+// resistance below the contact's on threshold r_on (docs/hertz-contact.md §7).
+struct ConductionStretch {
+    double t_on = 0.0;             // the resistance falls below r_on [s]
+    double t_off = 0.0;            // it rises to r_on or the contact opens [s] (the horizon if still on)
+    double min_resistance = 0.0;   // smallest resistance in the stretch [ohm]
+    bool on_at_end = false;        // still below r_on when the horizon ended
+};
+
+// A contact with a resistance model (ForceElement::contact_resistance) over the run, recorded at the
+// solver's own steps and events, not at the history's samples.
+struct ContactConduction {
+    int contact = 0;  // index among the contacts (ContactEpisode::support)
+    // Its on threshold [ohm]; NaN when none is set, and then no stretches are recorded.
+    double r_on = std::numeric_limits<double>::quiet_NaN();
+    std::vector<ConductionStretch> stretches;  // in time order
+    double end_resistance = std::numeric_limits<double>::infinity();  // at t_end; +inf when open [ohm]
+};
+
 struct TransientResult {
     TimeHistory history;
     std::vector<ContactEpisode> episodes;  // in onset order
@@ -105,6 +125,7 @@ struct TransientResult {
     Extremes extremes;
     double t_end = 0.0;
     std::optional<RunEndEvent> ended_by;   // set when an element's terminal mode ended the run
+    std::vector<ContactConduction> conduction;  // per contact with a resistance model (CVODE only)
     SolverStats stats;
 };
 

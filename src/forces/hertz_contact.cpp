@@ -230,7 +230,7 @@ std::vector<KeySpec> resistance_keys() {
     mfp.default_text = "- (Holm's term alone)";
     KeySpec on = number_key("r_on", Dimension::dimensionless, "ohm");
     on.in(positive()).only(hertz).needing("resistivity", needs)
-        .means("the resistance below which the contact counts as on (summary: the time it stays below)");
+        .means("the resistance below which the contact counts as on: the electrical bounce ledger (`simulate --r-on` sets it)");
     on.default_text = "-";
     return {rho, film, hard, mfp, on};
 }

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -81,6 +82,7 @@ const char* style_name(ChartSeries::Style s) {
     switch (s) {
         case ChartSeries::Style::points: return "points";
         case ChartSeries::Style::linespoints: return "linespoints";
+        case ChartSeries::Style::bars: return "bars";
         case ChartSeries::Style::lines: break;
     }
     return "lines";
@@ -88,6 +90,7 @@ const char* style_name(ChartSeries::Style s) {
 
 struct Points {
     std::vector<double> x, y;
+    std::vector<double> x_to, y_low, y_high;  // where the series names those columns
 };
 
 // The series' points in row order, in parts that a chart can draw: it joins a curve's points in the
@@ -106,7 +109,13 @@ std::vector<Points> series_points(const FigureSpec& f, const std::map<std::strin
     const std::size_t cy = column(t, s.y, f, file);
     std::vector<std::pair<std::size_t, std::string>> where;
     for (const auto& [name, value] : s.where) where.emplace_back(column(t, name, f, file), value);
-    const bool cloud = s.style == ChartSeries::Style::points;
+    const auto optional_column = [&](const std::string& name) {
+        return name.empty() ? std::optional<std::size_t>() : std::optional<std::size_t>(column(t, name, f, file));
+    };
+    const std::optional<std::size_t> cx_to = optional_column(s.x_to), c_low = optional_column(s.y_low),
+                                     c_high = optional_column(s.y_high);
+    // Bars and intervals stand alone at their x: never joined, so never cut.
+    const bool cloud = s.style == ChartSeries::Style::points || s.style == ChartSeries::Style::bars;
     std::vector<Points> parts;
     std::map<double, std::size_t> seen;  // cloud: x -> points at it so far
     int direction = 0;                   // curve: +1 or -1 once the current run has two points
@@ -115,7 +124,7 @@ std::vector<Points> series_points(const FigureSpec& f, const std::map<std::strin
         bool keep = true;
         for (const auto& [c, value] : where) keep = keep && c < row.size() && row[c] == value;
         if (!keep) continue;
-        const double x = number(row, cx) * s.x_scale;
+        const double x = number(row, cx) * s.x_scale + s.x_offset;
         double y = number(row, cy) * s.y_scale;
         if (s.abs_y) y = std::abs(y);
         if (!std::isfinite(x) || (panel.log_x && x <= 0.0)) {
@@ -147,6 +156,13 @@ std::vector<Points> series_points(const FigureSpec& f, const std::map<std::strin
         if (part == parts.size()) parts.emplace_back();
         parts[part].x.push_back(x);
         parts[part].y.push_back(y);
+        const auto scaled_y = [&](std::size_t c) {
+            const double v = number(row, c) * s.y_scale;
+            return panel.log_y && !(v > 0.0) ? NAN : v;
+        };
+        if (cx_to) parts[part].x_to.push_back(number(row, *cx_to) * s.x_scale + s.x_offset);
+        if (c_low) parts[part].y_low.push_back(scaled_y(*c_low));
+        if (c_high) parts[part].y_high.push_back(scaled_y(*c_high));
     }
     if (parts.empty()) parts.emplace_back();  // an empty series still has its legend entry
     return parts;
@@ -171,6 +187,10 @@ std::string chart_json(const FigureSpec& f) {
         for (std::size_t b = 0; b < panel.x_bands.size(); ++b) {
             s << (b ? "," : "") << "[" << json_number(panel.x_bands[b].first) << "," << json_number(panel.x_bands[b].second) << "]";
         }
+        s << "],\"xTicks\":[";
+        for (std::size_t k = 0; k < panel.x_ticks.size(); ++k) {
+            s << (k ? "," : "") << "[" << json_number(panel.x_ticks[k].first) << "," << json_string(panel.x_ticks[k].second) << "]";
+        }
         s << "],\"series\":[";
         bool first = true;
         for (const ChartSeries& series : panel.series) {
@@ -182,7 +202,14 @@ std::string chart_json(const FigureSpec& f) {
                 s << (first ? "" : ",") << "{\"label\":" << json_string(series.label) << ",\"group\":" << json_string(group)
                   << ",\"style\":\"" << style_name(series.style) << "\",\"dash\":" << (series.dashed ? "true" : "false")
                   << ",\"right\":" << (series.right_axis ? "true" : "false") << ",\"color\":" << json_string(series.color)
-                  << ",\"x\":" << json_numbers(part.x) << ",\"y\":" << json_numbers(part.y) << "}";
+                  << ",\"x\":" << json_numbers(part.x) << ",\"y\":" << json_numbers(part.y);
+                if (series.style == ChartSeries::Style::bars) {
+                    s << ",\"barWidth\":" << json_number(series.bar_width);
+                    if (!series.x_to.empty()) s << ",\"xTo\":" << json_numbers(part.x_to);
+                }
+                if (!series.y_low.empty()) s << ",\"yLow\":" << json_numbers(part.y_low);
+                if (!series.y_high.empty()) s << ",\"yHigh\":" << json_numbers(part.y_high);
+                s << "}";
                 first = false;
             }
         }

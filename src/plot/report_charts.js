@@ -77,6 +77,65 @@
     };
   }
 
+  // A series' bars from 0 to y, each from x to xTo or barWidth about x, in its own points (not the
+  // joined table's), as a uPlot paths builder.
+  function barPaths(s) {
+    return function (u, sidx) {
+      var path = new Path2D(), scale = u.series[sidx].scale;
+      var zero = u.valToPos(0, scale, true);
+      s.x.forEach(function (x, i) {
+        var y = s.y[i];
+        if (y === null || x === null) return;
+        var lo = s.xTo ? x : x - s.barWidth / 2, hi = s.xTo ? s.xTo[i] : x + s.barWidth / 2;
+        if (hi === null) return;
+        var x0 = u.valToPos(lo, 'x', true), x1 = u.valToPos(hi, 'x', true), py = u.valToPos(y, scale, true);
+        path.rect(Math.min(x0, x1), Math.min(py, zero), Math.max(1, Math.abs(x1 - x0)), Math.abs(zero - py));
+      });
+      return { stroke: path, fill: path };
+    };
+  }
+
+  // Interval bars (yLow to yHigh at each x, with caps) of the series shown, on top of the curves.
+  function intervals(panel) {
+    return function (u) {
+      var ctx = u.ctx, cap = 4 * uPlot.pxRatio;
+      ctx.save();
+      ctx.beginPath();
+      ctx.rect(u.bbox.left, u.bbox.top, u.bbox.width, u.bbox.height);
+      ctx.clip();
+      ctx.lineWidth = 1.5 * uPlot.pxRatio;
+      ctx.strokeStyle = '#222';
+      panel.series.forEach(function (s, k) {
+        if (!s.yLow || !s.yHigh || !u.series[k + 1].show) return;
+        var scale = u.series[k + 1].scale;
+        s.x.forEach(function (x, i) {
+          if (x === null || s.yLow[i] === null || s.yHigh[i] === null) return;
+          var px = u.valToPos(x, 'x', true), lo = u.valToPos(s.yLow[i], scale, true), hi = u.valToPos(s.yHigh[i], scale, true);
+          ctx.beginPath();
+          ctx.moveTo(px, lo); ctx.lineTo(px, hi);
+          ctx.moveTo(px - cap, lo); ctx.lineTo(px + cap, lo);
+          ctx.moveTo(px - cap, hi); ctx.lineTo(px + cap, hi);
+          ctx.stroke();
+        });
+      });
+      ctx.restore();
+    };
+  }
+
+  // The y range of a panel with bars or intervals: 0 (the bars' base) and every interval's ends in it.
+  function barRange(panel) {
+    return function (u, min, max) {
+      var lo = Math.min(0, min), hi = Math.max(0, max);
+      panel.series.forEach(function (s) {
+        [s.y, s.yLow || [], s.yHigh || []].forEach(function (list) {
+          list.forEach(function (v) { if (v !== null) { lo = Math.min(lo, v); hi = Math.max(hi, v); } });
+        });
+      });
+      var pad = 0.05 * ((hi - lo) || 1);
+      return [lo < 0 ? lo - pad : 0, hi + pad];
+    };
+  }
+
   // One uPlot chart for one panel; calls `drawn` after its first complete draw.
   function drawPanel(panel, box, width, drawn) {
     var tables = [], series = [{ label: panel.xLabel || 'x', value: function (u, v) { return fmt(v); } }];
@@ -86,16 +145,21 @@
       s.y.forEach(function (v) { if (v !== null) points++; });
       var color = s.color || (s.group && groupColor[s.group]) || palette[next++ % palette.length];
       if (s.group && !groupColor[s.group]) groupColor[s.group] = color;
-      var onlyPoints = s.style === 'points';
+      var onlyPoints = s.style === 'points', bars = s.style === 'bars';
       var opt = {
         label: s.label,
         stroke: color,
         width: onlyPoints ? 0 : 1.6,
         scale: s.right ? 'y2' : 'y',
         value: function (u, v) { return fmt(v); },
-        points: { show: s.style !== 'lines', size: 4.5, width: 1, stroke: color, fill: color }
+        points: { show: s.style !== 'lines' && !bars, size: 4.5, width: 1, stroke: color, fill: color }
       };
       if (onlyPoints) opt.paths = function () { return null; };
+      if (bars) {
+        opt.paths = barPaths(s);
+        opt.fill = color + '99';
+        opt.width = 1;
+      }
       if (s.dash) opt.dash = [8, 5];
       series.push(opt);
       groupOf.push(s.group || null);
@@ -108,6 +172,17 @@
       { label: panel.yLabel, size: axisSize, values: function (u, splits) { return splits.map(tick); } }
     ];
     var scales = { x: { time: false }, y: {} };
+    var boxed = panel.series.some(function (s) { return s.style === 'bars' || s.yLow; });
+    if (boxed && !panel.logY) scales.y.range = barRange(panel);
+    if (panel.xTicks && panel.xTicks.length) {
+      axes[0].splits = function () { return panel.xTicks.map(function (t) { return t[0]; }); };
+      axes[0].values = function (u, splits) {
+        return splits.map(function (v) {
+          var t = panel.xTicks.filter(function (p) { return p[0] === v; })[0];
+          return t ? t[1] : '';
+        });
+      };
+    }
     if (panel.logX) { scales.x.distr = 3; scales.x.log = 10; }
     if (panel.logY) { scales.y.distr = 3; scales.y.log = 10; }
     if (panel.y2Label) {
@@ -126,7 +201,7 @@
       cursor: { drag: { x: true, y: true, uni: 40 } },
       hooks: {
         drawClear: [xDecor(panel, false)],
-        draw: [xDecor(panel, true), function () { if (first) { first = false; drawn(points); } }],
+        draw: [xDecor(panel, true), intervals(panel), function () { if (first) { first = false; drawn(points); } }],
         // Series of one group share a legend entry: showing or hiding it applies to all of them.
         setSeries: [function (u, idx, o) {
           if (syncing || !o || o.show === undefined || !groupOf[idx]) return;

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "impacts/electrical_ledger.hpp"
+
 namespace vi {
 
 std::vector<ResistanceSeries> contact_resistances(const BeamModel& model, const TransientResult& r) {
@@ -23,7 +25,35 @@ std::vector<ResistanceSeries> contact_resistances(const BeamModel& model, const 
     return out;
 }
 
-nlohmann::json contact_resistance_json(const std::vector<ResistanceSeries>& series, const TimeHistory& h) {
+namespace {
+
+nlohmann::json optional_json(const std::optional<double>& v) { return v ? nlohmann::json(*v) : nlohmann::json(nullptr); }
+
+// The electrical bounce ledger's keys of contact k: null without a threshold or a record.
+void add_electrical(nlohmann::json& row, std::size_t k, const std::vector<ContactConduction>& conduction) {
+    std::optional<ElectricalLedger> l;
+    for (const ContactConduction& c : conduction) {
+        if (static_cast<std::size_t>(c.contact) == k) l = electrical_ledger(c);
+    }
+    if (!l) {
+        for (const char* key : {"first_closure_s", "electrical_bounces", "settle_time_s", "openings"}) row[key] = nullptr;
+        return;
+    }
+    nlohmann::json openings = nlohmann::json::array();
+    for (const ElectricalOpening& o : l->openings) {
+        openings.push_back({{"t_s", o.t}, {"duration_s", optional_json(o.duration)},
+                            {"closure_min_resistance_ohm", o.closure_min_resistance}});
+    }
+    row["first_closure_s"] = optional_json(l->first_closure);
+    row["electrical_bounces"] = l->bounces;
+    row["settle_time_s"] = optional_json(l->settle_time);
+    row["openings"] = openings;
+}
+
+}  // namespace
+
+nlohmann::json contact_resistance_json(const std::vector<ResistanceSeries>& series, const TimeHistory& h,
+                                       const std::vector<ContactConduction>& conduction) {
     nlohmann::json out = nlohmann::json::array();
     for (const ResistanceSeries& s : series) {
         const double end = s.ohm.empty() ? INFINITY : s.ohm.back();
@@ -37,6 +67,7 @@ nlohmann::json contact_resistance_json(const std::vector<ResistanceSeries>& seri
             while (from > 0 && s.ohm[from - 1] < s.r_on) --from;
             row["below_r_on_from_s"] = h.t[from];
         }
+        add_electrical(row, s.contact, conduction);
         out.push_back(row);
     }
     return out;

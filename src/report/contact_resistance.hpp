@@ -27,7 +27,11 @@ std::vector<ResistanceSeries> contact_resistances(const BeamModel& model, const 
 
 // Per series: {"contact", "closed_at_end", "resistance_end_ohm" (null while open: JSON has no
 // infinity), "r_on_ohm", "below_r_on_from_s" (the first sample from which every later one is below
-// r_on; null when the last is not, or without r_on)}.
-nlohmann::json contact_resistance_json(const std::vector<ResistanceSeries>& series, const TimeHistory& h);
+// r_on; null when the last is not, or without r_on)}, and the electrical bounce ledger of the run's
+// conduction record (impacts/electrical_ledger.hpp): "first_closure_s", "electrical_bounces",
+// "settle_time_s", "openings" [{"t_s", "duration_s", "closure_min_resistance_ohm"}], each null
+// without r_on (settle_time_s also when the resistance is not below r_on at the end).
+nlohmann::json contact_resistance_json(const std::vector<ResistanceSeries>& series, const TimeHistory& h,
+                                       const std::vector<ContactConduction>& conduction);
 
 }  // namespace vi

@@ -238,7 +238,7 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
     }
     // Only where a contact has a resistance model, so that the summaries of other cases stay as they were.
     const std::vector<ResistanceSeries> resistances = contact_resistances(b.model, r);
-    if (!resistances.empty()) j["contact_resistance"] = contact_resistance_json(resistances, r.history);
+    if (!resistances.empty()) j["contact_resistance"] = contact_resistance_json(resistances, r.history, r.conduction);
     j["resolved"] = resolved_case_json(c, b, s);
     return j;
 }

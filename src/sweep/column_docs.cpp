@@ -54,6 +54,15 @@ const std::vector<SweepColumnDoc>& simulate_docs() {
         {{"impact<k>_peak_penetration_m"}, "m", "largest penetration"},
         {{"impact<k>_duration_s"}, "s", "end minus onset (`nan` if still closed at the horizon)"},
         {{"impact<k>_episodes"}, "count", "contact episodes grouped into the impact"},
+        {{"electrical_bounces"}, "count",
+         "electrical bounce ledger of the first support with a `resistivity` (docs/hertz-contact.md §7): every "
+         "rise of its resistance to `r_on` (or opening) after it first fell below; `nan` without a resistance model "
+         "or without `r_on`"},
+        {{"settle_time_s"}, "s",
+         "time from the start until that resistance stays below `r_on` to the end of the run; `nan` when it is not "
+         "below `r_on` at the end (it never settles in the horizon), without `r_on` or a resistance model"},
+        {{"resistance_end_ohm"}, "ohm",
+         "that contact's resistance at the end of the run; `nan` when it is open then, or without a resistance model"},
     };
     return d;
 }

@@ -1,7 +1,9 @@
 #include "sweep/columns.hpp"
 
+#include <cmath>
 #include <optional>
 
+#include "impacts/electrical_ledger.hpp"
 #include "io/number_text.hpp"
 #include "model/input_error.hpp"
 
@@ -24,6 +26,21 @@ SweepCell opt_cell(const std::optional<double>& v) { return v ? SweepCell(*v) : 
 SweepCell scaled_cell(const std::optional<double>& v, double k) { return v ? SweepCell(*v * k) : SweepCell(); }
 
 std::string impact_prefix(int k) { return "impact" + std::to_string(k) + "_"; }
+
+// The electrical bounce ledger of the first contact with a resistance model: bounces and settle time
+// (empty without its threshold r_on, the settle time also when it does not settle), the resistance
+// at the end (empty while open); all empty without a resistance model.
+void add_electrical_cells(std::vector<SweepCell>& cells, const std::vector<ContactConduction>& conduction) {
+    if (conduction.empty()) {
+        cells.insert(cells.end(), 3, SweepCell());
+        return;
+    }
+    const ContactConduction& c = conduction.front();
+    const std::optional<ElectricalLedger> l = electrical_ledger(c);
+    cells.push_back(l ? SweepCell(static_cast<std::int64_t>(l->bounces)) : SweepCell());
+    cells.push_back(l ? opt_cell(l->settle_time) : SweepCell());
+    cells.push_back(std::isfinite(c.end_resistance) ? SweepCell(c.end_resistance) : SweepCell());
+}
 
 // x/l values as one text cell, each read back exactly, so the cell is the same wherever it is computed.
 std::string positions_text(const std::vector<double>& xs) {
@@ -119,6 +136,9 @@ std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes)
         cols.push_back({p + "duration_s", "s"});
         cols.push_back({p + "episodes", ""});
     }
+    cols.push_back({"electrical_bounces", ""});
+    cols.push_back({"settle_time_s", "s"});
+    cols.push_back({"resistance_end_ohm", "ohm"});
     return cols;
 }
 
@@ -175,6 +195,7 @@ std::vector<SweepCell> simulate_cells(const SimulationRun& run) {
         cells.push_back(im.closed_at_end ? SweepCell() : SweepCell(im.t_off - im.t_on));
         cells.push_back(static_cast<std::int64_t>(im.episodes));
     }
+    add_electrical_cells(cells, run.result.conduction);
     return cells;
 }
 

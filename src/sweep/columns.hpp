@@ -57,7 +57,8 @@ std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes)
 // y_max_contact_m, tip_min_m, unproven_excess, closing_time_s, bounces, stable_contact_s,
 // release_time_s, grouped_bounces, switching_state, collapse_time_s (the switching ledger, empty
 // without electrodes), then per impact k = 1..3 impact<k>_support, _t_on_s, _v_in_m_s,
-// _peak_force_n, _peak_penetration_m, _duration_s, _episodes.
+// _peak_force_n, _peak_penetration_m, _duration_s, _episodes; then electrical_bounces, settle_time_s,
+// resistance_end_ohm (the first contact with a resistance model; empty without one).
 std::vector<SweepCell> simulate_cells(const SimulationRun& run);
 
 // A modal study's values in the order of sweep_result_columns(modes, modes): per mode i,

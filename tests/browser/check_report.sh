@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The interactive report pages in a real browser: generates report.html with `vibroimpact paper` (a
-# coarse run) and `vibroimpact switch-report` (the example switch), loads each in headless Chromium
+# coarse run), `vibroimpact switch-report` (the example switch) and uq.html with `vibroimpact uq` (a
+# small Sobol study of the switch's pull-in), loads each in headless Chromium
 # and fails unless every <figure> reports its charts drawn (data-drawn="1", set by the page script
 # src/plot/report_charts.js from uPlot's draw hook, with points in it) and the page recorded no error
 # or console.error, and Chromium logged no console message. Then checks that it can fail: three broken
@@ -89,6 +90,11 @@ status=0
 check_page "$tmp/paper/report.html" "paper report.html" || status=1
 "$exe" switch-report "$src/examples/switch/cantilever_switch.toml" --out "$tmp/switch" >/dev/null
 check_page "$tmp/switch/report.html" "switch-report report.html" || status=1
+# uq.html: histograms (bars from bin to bin) and Sobol bar charts with their interval bars.
+"$exe" uq "$src/examples/switch/cantilever_switch.toml" --analysis pullin --vary 'beam.thickness=normal:2um:0.05um' \
+  --vary 'electrodes[0].gap=normal:2um:0.05um' --spec 'pullin_voltage_v<=60' --sensitivity --samples 32 \
+  --method sobol --bootstrap 200 --threads 1 --progress none --out "$tmp/uq" >/dev/null
+check_page "$tmp/uq/uq.html" "uq uq.html" || status=1
 
 # The check must be able to fail: a chart whose drawing throws, a console.error, and a figure left
 # without its chart must each be rejected.

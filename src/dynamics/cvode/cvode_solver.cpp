@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "dynamics/cvode/cvode_conduction.hpp"
 #include "dynamics/cvode/cvode_episodes.hpp"
 #include "dynamics/cvode/cvode_linear_solver.hpp"
 #include "dynamics/cvode/cvode_system.hpp"
@@ -135,6 +136,8 @@ private:
     // ended the run at t.
     bool ended_by_element(double t);
     double locate_missed_switch(int e, double tret);
+    // The contacts' conduction at a return of CVODE at t, located on the last step's dense output.
+    void advance_conduction(double t);
     void toggle(double t, const std::vector<int>& which);
     void restart(double t);
     void add_counters();
@@ -156,6 +159,7 @@ private:
     std::size_t samples_ = 0, next_sample_ = 0;
     std::vector<int> modes_;             // each element's mode
     cvode_detail::EpisodeRecorder episodes_{sys_, r_};
+    cvode_detail::ConductionRecorder conduction_{sys_, r_};
     // Energy that appears or vanishes in an element at a switch: a Kelvin-Voigt contact opening with
     // d > 0 (the damped case: F = 0 before d = 0) drops 1/2 Kc d^2 from its stored energy. A massless
     // element left alone relaxes through its damper, which dissipates exactly that, so it is booked
@@ -277,9 +281,25 @@ double Driver::handle_roots(double tret) {
     sample_until(t_ev, true);
     episodes_.update_peaks(t_ev, N_VGetArrayPointer(s_.y));
     episodes_.update_extremes(t_ev, N_VGetArrayPointer(s_.y), modes_);
-    if (!which.empty()) toggle(t_ev, which);
+    advance_conduction(t_ev);
+    if (!which.empty()) {
+        toggle(t_ev, which);
+        conduction_.switched(t_ev, N_VGetArrayPointer(s_.y), modes_);
+    }
     episodes_.update_extremes(t_ev, N_VGetArrayPointer(s_.y), modes_);
     return t_ev;
+}
+
+void Driver::advance_conduction(double t) {
+    if (!conduction_.active()) return;
+    double tcur = 0.0, hlast = 0.0;
+    check(CVodeGetCurrentTime(s_.mem, &tcur), "CVodeGetCurrentTime");
+    check(CVodeGetLastStep(s_.mem, &hlast), "CVodeGetLastStep");
+    const auto at = [this](double ts) {
+        check(CVodeGetDky(s_.mem, ts, 0, s_.tmp), "CVodeGetDky");
+        return static_cast<const double*>(N_VGetArrayPointer(s_.tmp));
+    };
+    conduction_.advance(t, N_VGetArrayPointer(s_.y), modes_, std::max(tcur - hlast, t_restart_), at);
 }
 
 // Bisection on the dense output of the last step for the instant element e's switching function
@@ -455,6 +475,7 @@ std::optional<double> Driver::step(double t, double t_stop) {
         sample_until(tret, true);
         episodes_.update_peaks(tret, N_VGetArrayPointer(s_.y));
         episodes_.update_extremes(tret, N_VGetArrayPointer(s_.y), modes_);
+        advance_conduction(tret);
         t = flag == CV_TSTOP_RETURN ? t_stop : tret;
     }
     t_done_ = t;
@@ -525,6 +546,7 @@ void Driver::finish() {
     add_counters();
     const double* y = N_VGetArrayPointer(s_.y);
     episodes_.close_at_end(t_final_, y);
+    conduction_.finish(t_final_, y, modes_);
     r_.final_energy = sys_.energy(t_final_, y, jump_);
     r_.t_end = t_final_;
     r_.stats.method = "cvode";
@@ -545,6 +567,7 @@ TransientResult Driver::run() {
     // restarts and sampling, is propagation_s; event_location_s stays 0.
     const auto t_run = Clock::now();
     enter_initial_modes(start);
+    conduction_.start(y0_.data(), modes_);
     r_.initial_energy = sys_.energy(0.0, y0_.data(), jump_);
     sample_until(0.0, false);
     integrate();

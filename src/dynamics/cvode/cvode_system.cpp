@@ -197,6 +197,10 @@ ContactReading ModalSystem::reading(int e, double t, const double* y) const {
     return element(e).contact_reading(own_state(e, element_time(t), y));
 }
 
+double ModalSystem::resistance(int e, double t, const double* y) const {
+    return element(e).contact_resistance(own_state(e, element_time(t), y));
+}
+
 RunEnd ModalSystem::run_end(int e, double t, const double* y) const {
     return element(e).run_end(own_state(e, element_time(t), y));
 }

@@ -75,6 +75,8 @@ public:
     // Element e at y in mode `mode`: switching function, contact reading, stored energy.
     [[nodiscard]] double switching_function(int e, int mode, double t, const double* y) const;
     [[nodiscard]] ContactReading reading(int e, double t, const double* y) const;
+    // Element e's contact resistance at y taken as closed [ohm] (ForceElement::contact_resistance).
+    [[nodiscard]] double resistance(int e, double t, const double* y) const;
     [[nodiscard]] RunEnd run_end(int e, double t, const double* y) const;
     [[nodiscard]] double stored_energy(int e, int mode, double t, const double* y) const;
     // The mode each element starts in at y: the problem's modes0, turned to the contact mode where a

@@ -66,6 +66,23 @@ FigureSpec histogram(const std::string& column, const std::vector<double>& value
     }
     plot += "plot " + gp_quote(file) + " using (($1+$2)/2):3:($2-$1) with boxes lc rgb '#1f77b4' notitle\n";
     f.plot = plot;
+    ChartPanel panel;
+    panel.x_label = axis_label(column);
+    panel.y_label = "samples";
+    panel.x_min = edges.front();
+    panel.x_max = edges.back();
+    for (const YieldSpec& s : specs) {
+        if (s.column == column) panel.x_marks.push_back(s.bound);
+    }
+    ChartSeries bars;
+    bars.label = "samples per bin";
+    bars.x = t.header[0];
+    bars.x_to = t.header[1];
+    bars.y = "samples";
+    bars.style = ChartSeries::Style::bars;
+    bars.color = "#1f77b4";
+    panel.series = {bars};
+    f.charts = {panel};
     return f;
 }
 
@@ -79,15 +96,17 @@ FigureSpec sobol_bars(const std::string& column, const nlohmann::json& sobol, co
     const auto total = [](const Row& r) { return r.x["total"].is_number() ? r.x["total"].get<double>() : 0.0; };
     std::stable_sort(rows.begin(), rows.end(), [&](const Row& a, const Row& b) { return total(a) > total(b); });
     CsvTable t;
+    // input_index: the input's place on the chart's x axis (0, 1, ...), for the interactive chart.
     t.header = {"input", "sobol_first", "sobol_first_low", "sobol_first_high", "sobol_total", "sobol_total_low",
-                "sobol_total_high"};
+                "sobol_total_high", "input_index"};
     const auto num = [](const nlohmann::json& v) { return v.is_number() ? csv_number(v.get<double>()) : csv_missing(); };
     for (const Row& r : rows) {
         const nlohmann::json& fc = r.x["first_ci"];
         const nlohmann::json& tc = r.x["total_ci"];
         const nlohmann::json none;
         t.add_row({csv_text(r.input), num(r.x["first"]), num(fc.is_array() ? fc[0] : none), num(fc.is_array() ? fc[1] : none),
-                   num(r.x["total"]), num(tc.is_array() ? tc[0] : none), num(tc.is_array() ? tc[1] : none)});
+                   num(r.x["total"]), num(tc.is_array() ? tc[0] : none), num(tc.is_array() ? tc[1] : none),
+                   csv_count(static_cast<std::int64_t>(&r - rows.data()))});
     }
     FigureSpec f;
     f.name = "sobol_" + column;
@@ -103,6 +122,28 @@ FigureSpec sobol_bars(const std::string& column, const nlohmann::json& sobol, co
              "plot " + gp_quote(file) + " skip 1 using ($0-0.2):2:3:4:(0.35):xtic(1) with boxerrorbars lc rgb '#1f77b4' "
              "title 'first order S_i', '' skip 1 using ($0+0.2):5:6:7:(0.35) with boxerrorbars lc rgb '#ff7f0e' "
              "title 'total S_{Ti}'\n";
+    ChartPanel panel;
+    panel.x_label = "input";
+    panel.y_label = "Sobol index";
+    panel.x_min = -0.6;
+    panel.x_max = static_cast<double>(rows.size()) - 0.4;
+    for (std::size_t k = 0; k < rows.size(); ++k) panel.x_ticks.emplace_back(static_cast<double>(k), rows[k].input);
+    const auto index_bars = [](const char* label, const std::string& stem, double offset, const char* color) {
+        ChartSeries b;
+        b.label = label;
+        b.x = "input_index";
+        b.x_offset = offset;
+        b.y = stem;
+        b.y_low = stem + "_low";
+        b.y_high = stem + "_high";
+        b.style = ChartSeries::Style::bars;
+        b.bar_width = 0.35;
+        b.color = color;
+        return b;
+    };
+    panel.series = {index_bars("first order S_i", "sobol_first", -0.2, "#1f77b4"),
+                    index_bars("total S_Ti", "sobol_total", 0.2, "#ff7f0e")};
+    f.charts = {panel};
     return f;
 }
 
