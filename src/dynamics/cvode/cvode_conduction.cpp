@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "model/golden_section.hpp"
+
 namespace vi::cvode_detail {
 namespace {
 
@@ -65,25 +67,9 @@ void ConductionRecorder::dip(Track& k, double lo, double t, const double* y, con
     const double h = 1e-6 * span;
     // Falling at the start and rising at the end: one minimum inside (no maximum between returns).
     if (!(depth(lo + h) < depth(lo) && depth(t - h) < depth(t))) return;
-    // Golden-section search for it; the penetration is unimodal on [lo, t].
-    const double g = 0.5 * (std::sqrt(5.0) - 1.0);
-    double a = lo, b = t, x1 = b - g * (b - a), x2 = a + g * (b - a), f1 = depth(x1), f2 = depth(x2);
-    for (int it = 0; it < 200 && b - a > 4.0 * kEps * std::max(std::abs(t), 1e-300); ++it) {
-        if (f1 < f2) {
-            b = x2;
-            x2 = x1;
-            f2 = f1;
-            x1 = b - g * (b - a);
-            f1 = depth(x1);
-        } else {
-            a = x1;
-            x1 = x2;
-            f1 = f2;
-            x2 = a + g * (b - a);
-            f2 = depth(x2);
-        }
-    }
-    const double t_min = 0.5 * (a + b);
+    // The penetration is unimodal on [lo, t]: its minimum is the deepest sag of the closure.
+    const double t_min =
+        golden_section_max([&](double s) { return -depth(s); }, lo, t, 4.0 * kEps * std::max(std::abs(t), 1e-300)).x;
     if (conducting(k, t_min, at(t_min), modes)) return;
     change(k, crossing(k, lo, t_min, false, modes, at), 0.0);
     const double t_on = crossing(k, t_min, t, true, modes, at);
