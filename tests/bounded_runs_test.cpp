@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <random>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -251,6 +252,32 @@ TEST(BoundedRuns, AnUndampedFullModelEndsOnItsPaceBeforeTheStepBudget) {
                                                                      {"rtol = 1e-8", "rtol = 1e-8\nreduced_modes = 16"}});
     const json j = simulate_json(reduced, "undamped, reduced to 16 modes");
     EXPECT_TRUE(j.contains("switching")) << j.dump();
+}
+
+// air-q of a beam under two film spans (the switch example with a second electrode from the clamp
+// to x/l = 0.1): every pressure's ring-down answers with the Q of the film's modal damping, to the
+// 1e-3 that 10 periods of a ring-down at Q up to 1e6 keep (tests/cases/air_q_two_films.toml).
+TEST(BoundedRuns, AirQOfABeamUnderTwoFilmSpansAnswers) {
+    const std::string dir = test::make_temp_dir();
+    const std::string out = dir + "/out";
+    const CommandResult r = run({"air-q", test::source_path("tests/cases/air_q_two_films.toml"), "--out", out}, "air-q, two films");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<std::string> rows = [&] {
+        std::vector<std::string> v;
+        std::istringstream in(test::read_text(out + "/air_q.csv"));
+        for (std::string line; std::getline(in, line);) v.push_back(line);
+        return v;
+    }();
+    ASSERT_EQ(rows.size(), 18u) << "a header and 17 pressures";
+    EXPECT_EQ(rows.front(), "pressure_pa,knudsen,viscosity_ratio,squeeze_number,q_modal,q_ringdown,maxima");
+    for (std::size_t i = 1; i < rows.size(); ++i) {
+        std::vector<double> x;
+        std::istringstream in(rows[i]);
+        for (std::string cell; std::getline(in, cell, ',');) x.push_back(std::strtod(cell.c_str(), nullptr));
+        ASSERT_EQ(x.size(), 7u) << rows[i];
+        EXPECT_NEAR(x[5], x[4], 3e-3 * x[4]) << rows[i];
+        EXPECT_EQ(x[6], 10.0) << rows[i];
+    }
 }
 
 }  // namespace

@@ -37,6 +37,7 @@ ModalBasis make_basis(const TransientProblem& p, const CvodeOptions& o) {
     if (o.reduced_modes <= 0 || o.reduced_modes >= p.size()) return full_basis(p.K, p.M);
     std::vector<Eigen::VectorXd> loads;
     for (const ForceElementPtr& e : p.forces) {
+        if (!o.static_corrections) break;
         for (const std::vector<double>& pattern : e->load_patterns()) {
             Eigen::VectorXd f = Eigen::VectorXd::Zero(p.size());
             for (std::size_t i = 0; i < pattern.size(); ++i) f[e->dofs()[i]] += pattern[i];
