@@ -2,7 +2,7 @@
 // through T_p, for the exact solver (with its time split) and the nonlinear path (full and reduced
 // order, with their error against the exact solver); and the
 // exact transient over the example's whole horizon (150 us) with the support moved inside the beam,
-// as a support-position sweep runs it.
+// as a support-position sweep runs it; and the same impact on a Hertz dimple (CVODE, full and reduced).
 
 #include <benchmark/benchmark.h>
 
@@ -124,6 +124,23 @@ BENCHMARK(BM_CvodeThroughTp)
     ->Args({8, 5})
     ->ArgNames({"rtol_exp", "reduced_modes"})
     ->Unit(benchmark::kMillisecond);
+
+// The same free impact on a Hertz dimple (bench/cases/free_impact_hertz.toml, CVODE, 80 us: through
+// the full model's T_p of 74.9 us), as `simulate` runs it (history and energy ledger on), with
+// range(0) reduced modes (0: the full model); counter "Tp_us" is each model's own T_p.
+void BM_HertzFreeImpact(benchmark::State& state) {
+    vi::Case c = vi::read_case_file(std::string(VI_SOURCE_DIR) + "/bench/cases/free_impact_hertz.toml");
+    c.solver.reduced_modes = static_cast<int>(state.range(0));
+    vi::SimulationRun run;
+    for (auto _ : state) {
+        run = vi::run_simulation(c, vi::SimulationOptions{});
+        benchmark::DoNotOptimize(run.result.episodes.data());
+    }
+    state.counters["episodes"] = static_cast<double>(run.result.episodes.size());
+    state.counters["steps"] = run.result.stats.steps;
+    state.counters["Tp_us"] = run.summary.Tp ? *run.summary.Tp * 1e6 : 0.0;
+}
+BENCHMARK(BM_HertzFreeImpact)->Arg(0)->Arg(10)->ArgName("reduced_modes")->Unit(benchmark::kMillisecond);
 
 // Building the problem (modes, static step) is part of every run of a sweep.
 void BM_BuildProblem(benchmark::State& state) {
