@@ -221,7 +221,7 @@ double number_after(const std::string& text, const std::string& label) {
 // The switch example without damping on the full model: CVODE follows the mesh's undamped top mode
 // (4.85 GHz) at a steady pace once the voltage step has set it ringing, about 4 million steps over
 // the 50 us horizon. The run does not spend the whole default budget of solver.max_steps to learn
-// that: it ends from the pace of its first window of steps (exit 1, nothing written), with the steps
+// that: it ends at half of it from the pace of its last window of steps (exit 1, nothing written), with the steps
 // the horizon needs, the limit and the keys that help; so does switch-report, whose transient is the
 // same. The reduced model of 16 modes, also undamped, answers.
 TEST(BoundedRuns, AnUndampedFullModelEndsOnItsPaceBeforeTheStepBudget) {
@@ -256,8 +256,8 @@ TEST(BoundedRuns, AnUndampedFullModelEndsOnItsPaceBeforeTheStepBudget) {
 
 // The switch example with Rayleigh ratios of 1e-6: its top modes are damped (about 6e-3 of critical)
 // but the bouncing keeps exciting them, and CVODE keeps a pace of about 54 000 steps per us, some 2.7
-// million steps over the horizon. Three windows in a row at that pace end the run (exit 1, nothing
-// written), not an impact's burst; the message names the budget and its key.
+// million steps over the horizon. Three windows in a row at that pace, once half the budget is spent,
+// end the run (exit 1, nothing written), not an impact's burst; the message names the budget and its key.
 TEST(BoundedRuns, ASustainedPaceBeyondTheStepBudgetEndsTheRun) {
     const std::string dir = test::make_temp_dir();
     const std::string out = dir + "/out";
