@@ -35,35 +35,9 @@ namespace fs = std::filesystem;
 using test::CommandResult;
 using test::Mutant;
 
-constexpr std::uint64_t kDefaultSeed = 20250611;
-constexpr long kMaxMutants = 10000000;
-// A run that has not ended by the limit is a hang, a defect. The sanitizers slow a run 3 to 10 times.
-#if VI_SANITIZE_BUILD
-constexpr double kLimitSeconds = 60.0;
-#else
-constexpr double kLimitSeconds = 20.0;
-#endif
-// The short run (sanitizer builds: tests/CMakeLists.txt, VI_SHORT_TESTS) is the first 300 mutants of
-// the same sequence, about 1 minute under AddressSanitizer + UBSan; the whole 3000 run in Release
-// (about 1.5 minutes).
-#if VI_SHORT_TESTS
-constexpr long kDefaultMutants = 300;
-#else
-constexpr long kDefaultMutants = 3000;
-#endif
-
 const std::vector<std::string> kSources = {"examples/paper/free_impact_tip.toml",
                                            "examples/paper/free_impact_prestress.toml",
                                            "examples/paper/cantilever.toml"};
-
-// Known defects a mutant can reach (in the solvers' internals): each is recognised, counted and printed,
-// never passed silently. Empty: every finding so far was fixed where it arose.
-struct KnownFinding {
-    const char* name;
-    const char* what;  // the case, the command, what happens
-    bool (*matches)(const Mutant&, const CommandResult&);
-};
-const std::vector<KnownFinding> kKnownFindings = {};
 
 // A failing mutant saved where the message says, to replay with `vibroimpact COMMAND FILE`.
 std::string save_finding(const Mutant& m, std::uint64_t seed, long index) {
@@ -75,14 +49,10 @@ std::string save_finding(const Mutant& m, std::uint64_t seed, long index) {
 }
 
 TEST(FuzzCli, EveryMutantEndsInTimeWithExitZeroOneOrTwo) {
-    const auto seed = static_cast<std::uint64_t>(test::env_number("VI_FUZZ_SEED", static_cast<long>(kDefaultSeed)));
-    const long seconds = test::env_number("VI_FUZZ_SECONDS", 0);
-    const long mutants = seconds > 0 ? kMaxMutants : std::min(test::env_number("VI_FUZZ_MUTANTS", kDefaultMutants), kMaxMutants);
-    const long only = test::env_number("VI_FUZZ_ONLY", -1);
-    const bool verbose = test::env_number("VI_FUZZ_VERBOSE", 0) > 0;
-    std::printf("fuzz: seed %llu, %s\n", static_cast<unsigned long long>(seed),
-                seconds > 0 ? ("for " + std::to_string(seconds) + " s").c_str()
-                            : (std::to_string(mutants) + " mutants").c_str());
+    const test::FuzzSettings f = test::fuzz_settings();
+    const std::uint64_t seed = f.seed;
+    const long only = f.only;
+    std::printf("fuzz: %s, limit per run %.0f s of wall time\n", f.describe().c_str(), test::kFuzzLimitSeconds);
 
     std::vector<std::string> sources;
     for (const std::string& s : kSources) sources.push_back(test::read_text(test::source_path(s)));
@@ -90,13 +60,12 @@ TEST(FuzzCli, EveryMutantEndsInTimeWithExitZeroOneOrTwo) {
 
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
-    std::map<std::string, long> tally;               // "exit 0", "exit 1", ... "defect"
+    std::map<std::string, long> tally{{"killed", 0}};  // "exit 0", "exit 1", ... "killed", "defect"
     std::map<std::string, long> failures_by_reason;  // exit-1 reasons, for review
-    std::map<std::string, long> known;
     long tried = 0, defects = 0;
     double slowest = 0.0;
-    for (long i = only >= 0 ? only : 0; i < (only >= 0 ? only + 1 : mutants); ++i) {
-        if (seconds > 0 && std::chrono::duration<double>(Clock::now() - start).count() > static_cast<double>(seconds)) break;
+    for (long i = f.first(); i < f.first() + f.count(); ++i) {
+        if (f.seconds > 0 && std::chrono::duration<double>(Clock::now() - start).count() > static_cast<double>(f.seconds)) break;
         const Mutant m = test::mutate_case(sources[static_cast<std::size_t>(i) % sources.size()], seed,
                                            static_cast<std::uint64_t>(i));
         const std::string command = i % 4 == 3 ? "modes" : "simulate";
@@ -105,29 +74,22 @@ TEST(FuzzCli, EveryMutantEndsInTimeWithExitZeroOneOrTwo) {
         const std::string out = dir + "/out";
         test::write_text(path, m.text);
         if (only >= 0) std::printf("fuzz: mutant %ld saved as %s\n", i, save_finding(m, seed, i).c_str());
-        const CommandResult r = test::run_vibroimpact({command, path, "--out", out}, kLimitSeconds);
+        const CommandResult r = test::run_vibroimpact({command, path, "--out", out}, test::kFuzzLimitSeconds);
         ++tried;
         slowest = std::max(slowest, r.seconds);
-        if (verbose) {
+        if (f.verbose) {
             const std::vector<std::string> err = test::lines_of(r.err);
             std::printf("fuzz: mutant %ld %s exit %d: %s\n", i, command.c_str(), r.exit_code,
                         err.empty() ? "" : err.back().substr(0, 200).c_str());
         }
         const test::FuzzRun run{dir, path, out, out + (command == "modes" ? "/modes.json" : "/summary.json"),
-                                "a wall-clock time of " + std::to_string(static_cast<int>(kLimitSeconds)) + " s"};
-        std::string reason = test::run_defect(r, run);
-        for (const KnownFinding& k : kKnownFindings) {
-            if (!reason.empty() && k.matches(m, r)) {
-                ++known[k.name];
-                std::printf("fuzz: mutant %ld: known finding %s: %s\n", i, k.name, k.what);
-                reason.clear();
-            }
-        }
+                                "a wall-clock time of " + std::to_string(static_cast<int>(test::kFuzzLimitSeconds)) + " s"};
+        const std::string reason = test::run_defect(r, run);
         if (reason.empty()) {
-            ++tally[r.hung ? "timeout" : "exit " + std::to_string(r.exit_code)];
+            ++tally["exit " + std::to_string(r.exit_code)];
             if (r.exit_code == 1) ++failures_by_reason[test::lines_of(r.err).back().substr(0, 90)];
         } else {
-            ++tally["defect"];
+            ++tally[r.hung ? "killed" : "defect"];
             if (++defects <= 20) {
                 std::string steps;
                 for (const std::string& s : m.steps) steps += "\n    " + s;
@@ -144,9 +106,11 @@ TEST(FuzzCli, EveryMutantEndsInTimeWithExitZeroOneOrTwo) {
     for (const auto& [what, n] : tally) counts += (counts.empty() ? "" : ", ") + what + ": " + std::to_string(n);
     std::printf("fuzz: %ld mutants in %.1f s (slowest run %.2f s): %s\n", tried, elapsed, slowest, counts.c_str());
     for (const auto& [what, n] : failures_by_reason) std::printf("fuzz: exit 1 x%ld: %s\n", n, what.c_str());
-    for (const auto& [what, n] : known) std::printf("fuzz: known finding %s x%ld\n", what.c_str(), n);
     RecordProperty("mutants", static_cast<int>(tried));
     RecordProperty("tally", counts);
+    if (f.seconds <= 0) {
+        EXPECT_EQ(tried, f.count());
+    }
     EXPECT_GT(tried, 0);
 }
 

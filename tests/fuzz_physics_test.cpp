@@ -43,21 +43,10 @@ namespace fs = std::filesystem;
 using test::CommandResult;
 using test::Mutant;
 
-constexpr std::uint64_t kDefaultSeed = 20250611;
-constexpr long kMaxMutants = 10000000;
-// A run that has not ended by the limit is a hang, a defect: every command on every example ends
-// within a few seconds of CPU. The limit is on CPU time, which other work on a shared machine does
-// not stretch, with a wall-clock backstop for a run that waits without computing.
-#if VI_SANITIZE_BUILD
-constexpr test::RunLimits kLimits{60.0, 600.0};
-#else
-constexpr test::RunLimits kLimits{20.0, 300.0};
-#endif
-#if VI_SHORT_TESTS
-constexpr long kDefaultMutants = 300;
-#else
-constexpr long kDefaultMutants = 3000;
-#endif
+// A run that has not ended by the limit is a hang, a defect. The limit is on CPU time, which other
+// work on a shared machine does not stretch, with a wall-clock backstop for a run that waits without
+// computing (300 s in Release, 600 s under the sanitizers).
+constexpr test::RunLimits kLimits{test::kFuzzLimitSeconds, test::kFuzzLimitSeconds * (VI_SANITIZE_BUILD ? 10.0 : 15.0)};
 
 // The commands that take a case, with how often each is drawn (out of the sum), and the file a run
 // that ends with exit 0 must have written. air-q runs 17 ring-down transients (4.7 s of CPU on the
@@ -78,60 +67,6 @@ std::string command_name(const Command& c) {
     for (const std::string& a : c.after) s += " " + a;
     return s;
 }
-
-// Known defects a mutant reaches that are left for another change: a run killed at its limit whose
-// case has the feature named is counted and printed with the reason, never passed silently. Each
-// matcher looks at the case's text, so a kill of any other kind still fails the test.
-struct KnownFinding {
-    const char* name;
-    const char* what;  // the case, the command, what happens
-    bool (*matches)(const Mutant&, const std::string& command);
-};
-
-bool runs_a_transient(const std::string& command) { return command != "pullin" && command != "stiction"; }
-
-// No structural damping: no [damping] table, or ratios below 1e-4.
-bool undamped(const Mutant& m, const std::string& command) {
-    if (!runs_a_transient(command)) return false;
-    const auto table = m.text.find("\n[damping]");
-    if (table == std::string::npos) return true;
-    const auto ratios = m.text.find("ratios = [", table);
-    if (ratios == std::string::npos) return false;
-    return std::strtod(m.text.c_str() + ratios + 10, nullptr) < 1e-4;
-}
-
-std::size_t count_of(const std::string& text, const std::string& what) {
-    std::size_t n = 0;
-    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
-    return n;
-}
-
-// air-q of a beam under two or more film spans (electrodes or [[films]]).
-bool air_q_of_two_films(const Mutant& m, const std::string& command) {
-    return command == "air-q" && count_of(m.text, "[[electrodes]]") + count_of(m.text, "[[films]]") >= 2;
-}
-
-// A beam that can land on an electrode's dielectric layer.
-bool on_a_dielectric(const Mutant& m, const std::string& command) {
-    return runs_a_transient(command) && m.text.find("dielectric_thickness") != std::string::npos;
-}
-
-const std::vector<KnownFinding> kKnownFindings = {
-    {"undamped-transient",
-     "a transient without structural damping (no [damping], or ratios below 1e-4): CVODE follows the mesh's undamped "
-     "top modes (the switch example without [damping]: 102 s instead of 0.9 s), a bounded run under repair",
-     undamped},
-    {"air-q-two-films",
-     "air-q of a beam under two or more film spans: the switch example with a second electrode from x = 0 to 0.1 "
-     "takes 27 s of CPU (4.7 s without), 179 000 CVODE steps for a ring-down of 10 periods at 1 atm (68 000), "
-     "tests/fuzz_findings/air_q_two_films.toml",
-     air_q_of_two_films},
-    {"dielectric-landing",
-     "a beam landing on an electrode's dielectric layer: CVODE follows its vibration on the stiff layer "
-     "(docs/adhesion.md, section 11); a bridge switch without its stop on a layer of half the gap, 78 modes over "
-     "80 us: 671 000 steps, 21 s of CPU, tests/fuzz_findings/bridge_on_dielectric.toml",
-     on_a_dielectric},
-};
 
 // Every example case file under examples/, in a fixed order.
 std::vector<std::string> example_cases() {
@@ -200,7 +135,6 @@ struct Tally {
     std::map<std::string, long> exits;               // "exit 0", "exit 1", "exit 2", "defect"
     std::map<std::string, std::map<int, long>> by_command;
     std::map<std::string, long> failures_by_reason;  // exit-1 reasons, for review
-    std::map<std::string, long> known;
     std::map<std::string, double> cpu;               // CPU seconds by command
     long tried = 0, defects = 0;
     double slowest = 0.0;                            // the most CPU one run took [s]
@@ -208,11 +142,11 @@ struct Tally {
 };
 
 TEST(FuzzPhysics, EveryMutantOfEveryExampleEndsInTimeUnderEveryCommand) {
-    const auto seed = static_cast<std::uint64_t>(test::env_number("VI_FUZZ_SEED", static_cast<long>(kDefaultSeed)));
-    const long seconds = test::env_number("VI_FUZZ_SECONDS", 0);
-    const long mutants = seconds > 0 ? kMaxMutants : std::min(test::env_number("VI_FUZZ_MUTANTS", kDefaultMutants), kMaxMutants);
-    const long only = test::env_number("VI_FUZZ_ONLY", -1);
-    const bool verbose = test::env_number("VI_FUZZ_VERBOSE", 0) > 0;
+    const test::FuzzSettings f = test::fuzz_settings();
+    const std::uint64_t seed = f.seed;
+    const long seconds = f.seconds;
+    const long only = f.only;
+    const bool verbose = f.verbose;
     const auto jobs = static_cast<std::size_t>(std::max(1L, test::env_number("VI_FUZZ_JOBS", 2)));
 
     const std::vector<std::string> names = example_cases();
@@ -225,18 +159,16 @@ TEST(FuzzPhysics, EveryMutantOfEveryExampleEndsInTimeUnderEveryCommand) {
         std::printf("fuzz: source %zu %s (V_PI %s)\n", sources.size() - 1, n.c_str(),
                     sources.back().pullin_voltage > 0.0 ? (std::to_string(sources.back().pullin_voltage) + " V").c_str() : "none");
     }
-    std::printf("fuzz: seed %llu, %s, %zu at a time, limit per run %.0f s of CPU (%.0f s of wall time)\n",
-                static_cast<unsigned long long>(seed),
-                seconds > 0 ? ("for " + std::to_string(seconds) + " s").c_str() : (std::to_string(mutants) + " mutants").c_str(),
-                jobs, kLimits.cpu_s, kLimits.wall_s);
-    for (const KnownFinding& k : kKnownFindings) std::printf("fuzz: known finding excluded: %s: %s\n", k.name, k.what);
+    std::printf("fuzz: %s, %zu at a time, limit per run %.0f s of CPU (%.0f s of wall time)\n", f.describe().c_str(), jobs,
+                kLimits.cpu_s, kLimits.wall_s);
 
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
-    const long first = only >= 0 ? only : 0;
-    const long count = only >= 0 ? 1 : mutants;
+    const long first = f.first();
+    const long count = f.count();
     std::map<std::size_t, std::pair<Planned, std::string>> under_way;  // index -> plan, folder
     Tally t;
+    t.exits["killed"] = 0;  // printed in the tally even when none was
 
     auto start_run = [&](std::size_t k) {
         const long i = first + static_cast<long>(k);
@@ -276,18 +208,8 @@ TEST(FuzzPhysics, EveryMutantOfEveryExampleEndsInTimeUnderEveryCommand) {
                         command.c_str(), r.exit_code, r.cpu_seconds, r.seconds,
                         err.empty() ? "" : err.back().substr(0, 200).c_str());
         }
-        std::string reason = test::run_defect(r, run);
-        for (const KnownFinding& kf : kKnownFindings) {
-            if (r.hung && !reason.empty() && kf.matches(p.mutant, command)) {
-                ++t.known[kf.name];
-                std::printf("fuzz: mutant %ld of %s (%s): known finding %s, %s; saved as %s\n", i, names[p.source].c_str(),
-                            command.c_str(), kf.name, reason.c_str(), save_finding(p.mutant, seed, i).c_str());
-                reason.clear();
-            }
-        }
-        if (r.hung && reason.empty()) {
-            ++t.exits["killed, known"];
-        } else if (reason.empty()) {
+        const std::string reason = test::run_defect(r, run);
+        if (reason.empty()) {
             ++t.exits["exit " + std::to_string(r.exit_code)];
             ++t.by_command[command][r.exit_code];
             if (r.exit_code == 1) ++t.failures_by_reason[command + ": " + test::lines_of(r.err).back().substr(0, 100)];
@@ -324,7 +246,6 @@ TEST(FuzzPhysics, EveryMutantOfEveryExampleEndsInTimeUnderEveryCommand) {
         std::printf("fuzz: %-17s%s; %.1f s of CPU\n", command.c_str(), line.c_str(), t.cpu[command]);
     }
     for (const auto& [what, n] : t.failures_by_reason) std::printf("fuzz: exit 1 x%ld: %s\n", n, what.c_str());
-    for (const auto& [what, n] : t.known) std::printf("fuzz: known finding %s x%ld\n", what.c_str(), n);
     RecordProperty("mutants", static_cast<int>(t.tried));
     RecordProperty("tally", counts);
     if (seconds <= 0) {

@@ -144,7 +144,8 @@ SectionSpec solver_section() {
     bounded_count(s, "max_steps", static_cast<double>(kDefaultMaxSteps), 1000, 1e11, &Settings::max_steps)
         .means("bound on the work of one transient: the exact solver's event- and extremum-search evaluations, or "
                "CVODE's internal steps (10 to 100 us each at 50 elements, [Limits](#limits)); reaching it stops the "
-               "run with an error that names this key (exit 1); a periodic drive whose periods over the horizon "
+               "run with an error that names this key (exit 1), and so does a pace of CVODE's steps that would "
+               "reach it before the horizon; a periodic drive whose periods over the horizon "
                "need more (at least 10 steps each) is refused before the run");
     bounded_count(s, "max_static_iterations", 200, 1, 1e6, &Settings::max_static_iterations)
         .means("bound on the Newton iterations of a static solution (each contact set tried counts); reaching it "

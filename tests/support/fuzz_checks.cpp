@@ -1,5 +1,6 @@
 #include "support/fuzz_checks.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
@@ -21,6 +22,21 @@ long env_number(const char* name, long fallback) {
     char* end = nullptr;
     const long n = std::strtol(v, &end, 10);
     return end != v && *end == '\0' && n >= 0 ? n : fallback;
+}
+
+FuzzSettings fuzz_settings() {
+    FuzzSettings f;
+    f.seed = static_cast<std::uint64_t>(env_number("VI_FUZZ_SEED", static_cast<long>(kFuzzSeed)));
+    f.seconds = env_number("VI_FUZZ_SECONDS", 0);
+    f.mutants = f.seconds > 0 ? kMaxFuzzMutants : std::min(env_number("VI_FUZZ_MUTANTS", kFuzzMutants), kMaxFuzzMutants);
+    f.only = env_number("VI_FUZZ_ONLY", -1);
+    f.verbose = env_number("VI_FUZZ_VERBOSE", 0) > 0;
+    return f;
+}
+
+std::string FuzzSettings::describe() const {
+    return "seed " + std::to_string(seed) + ", " +
+           (seconds > 0 ? "for " + std::to_string(seconds) + " s" : std::to_string(mutants) + " mutants");
 }
 
 std::vector<std::string> lines_of(const std::string& text) {

@@ -3,12 +3,47 @@
 // 1 or 2; exit 2 with one error line naming file, line and key, and nothing written; exit 1 with one
 // failure line after any warnings, and nothing written; exit 0 with its files; no sanitizer report.
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
 #include "support/run_command.hpp"
 
 namespace vi::test {
+
+// The fuzz tests' fixed sequence, and the most mutants a timed run (VI_FUZZ_SECONDS) draws.
+inline constexpr std::uint64_t kFuzzSeed = 20250611;
+inline constexpr long kMaxFuzzMutants = 10000000;
+// Mutants of a run by count: the first 300 of the same sequence in the short run (sanitizer builds:
+// tests/CMakeLists.txt, VI_SHORT_TESTS), 3000 in Release.
+#if VI_SHORT_TESTS
+inline constexpr long kFuzzMutants = 300;
+#else
+inline constexpr long kFuzzMutants = 3000;
+#endif
+// The CPU seconds one run may take before it counts as a hang (a defect): every command on every
+// example ends within a few. The sanitizers slow a run 3 to 10 times.
+#if VI_SANITIZE_BUILD
+inline constexpr double kFuzzLimitSeconds = 60.0;
+#else
+inline constexpr double kFuzzLimitSeconds = 20.0;
+#endif
+
+// What a fuzz run is asked for, from the environment: VI_FUZZ_SEED=N (another sequence),
+// VI_FUZZ_MUTANTS=N (count), VI_FUZZ_SECONDS=S (draw until S seconds have passed instead, at most
+// kMaxFuzzMutants), VI_FUZZ_ONLY=I (mutant I alone, saved), VI_FUZZ_VERBOSE=1 (one line per run).
+struct FuzzSettings {
+    std::uint64_t seed = kFuzzSeed;
+    long seconds = 0;           // 0: run `mutants`
+    long mutants = kFuzzMutants;
+    long only = -1;             // -1: every mutant
+    bool verbose = false;
+    [[nodiscard]] long first() const { return only >= 0 ? only : 0; }
+    [[nodiscard]] long count() const { return only >= 0 ? 1 : mutants; }
+    // The line that opens a run's output, e.g. "seed 20250611, 3000 mutants".
+    [[nodiscard]] std::string describe() const;
+};
+FuzzSettings fuzz_settings();
 
 // What one run was asked to do.
 struct FuzzRun {

@@ -24,6 +24,10 @@ struct CvodeOptions {
     // 0: every bending mode (the full FE model, an exact change of coordinates); N > 0: a
     // reduced-order model on the N lowest modes plus static corrections (solver.reduced_modes).
     int reduced_modes = 0;
+    // Whether a reduced basis adds the static response to each element's load patterns (an
+    // electrode's pull, a film's force over its span). A free ring-down has no prescribed load and
+    // leaves them out.
+    bool static_corrections = true;
     // End the run at the first contact onset (the result's t_end is then that time, the episode
     // closed_at_end): a question that the first contact answers (dynamic pull-in) needs no more.
     bool stop_at_first_contact = false;

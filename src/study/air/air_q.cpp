@@ -119,6 +119,12 @@ AirQPoint air_q_point(const Case& base, double pressure, const AirQOptions& o) {
     // base case, measured), a stability limit, not accuracy. The uniform film's damping matrix is
     // (c / rho A) M, so the modes do not couple except through the film's nonlinearity.
     co.reduced_modes = kAirQModes;
+    // Without the films' static corrections: a ring-down has no prescribed load, and a film over a
+    // short span by the clamp corrects with a stiff, undamped vector whose period held CVODE's steps
+    // (the switch example with a second electrode from x/l = 0 to 0.1: 27 s of CPU for the 17
+    // pressures, 0.7 s without, Q of the ring-down within 1e-5 of it at 1 atm, 1.5e-3 at 1 Pa; a
+    // film over the whole beam gives the same Q to every digit printed either way).
+    co.static_corrections = false;
     const TransientResult r = solve_cvode(p, {}, co);
     // Maxima within 1e5 absolute tolerances of zero carry the solver's error, not the film's decay,
     // above 1e-5 of themselves (a ring-down at Q = 1 falls 20 times a period, to 1e-7 in 6).
