@@ -224,23 +224,37 @@ double number_after(const std::string& text, const std::string& label) {
 // that: it ends at half of it from the pace of its last window of steps (exit 1, nothing written), with the steps
 // the horizon needs, the limit and the keys that help; so does switch-report, whose transient is the
 // same. The reduced model of 16 modes, also undamped, answers.
+// The step budget these pace tests run at: the default in Release; a tenth in the short run of the
+// sanitizer builds (tests/CMakeLists.txt, VI_SHORT_TESTS), where half a million steps take minutes.
+// Each case edit that sets it, and the window of steps the pace is measured over (max(1000, budget / 20)).
+#if VI_SHORT_TESTS
+const std::pair<std::string, std::string> kBudgetEdit{"rtol = 1e-8", "rtol = 1e-8\nmax_steps = 100000"};
+const std::string kBudget = "100000";
+const std::string kWindow = "5000";
+#else
+const std::pair<std::string, std::string> kBudgetEdit{"rtol = 1e-8", "rtol = 1e-8"};
+const std::string kBudget = "1000000";
+const std::string kWindow = "50000";
+#endif
+
 TEST(BoundedRuns, AnUndampedFullModelEndsOnItsPaceBeforeTheStepBudget) {
     const std::string dir = test::make_temp_dir();
     const std::string out = dir + "/out";
-    const std::string undamped = switch_variant(dir, "undamped.toml", {{"ratios = [0.005, 0.005]", "ratios = [0, 0]"}});
+    const std::string undamped = switch_variant(dir, "undamped.toml", {{"ratios = [0.005, 0.005]", "ratios = [0, 0]"}, kBudgetEdit});
     for (const char* command : {"simulate", "switch-report"}) {
         const CommandResult r = run({command, undamped, "--out", out}, command);
         EXPECT_EQ(r.exit_code, 1) << command << ": " << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-        EXPECT_NE(r.err.find("vibroimpact: failure: solve_cvode: at the pace of its last 1 window of 50000 steps"), std::string::npos)
+        EXPECT_NE(r.err.find("vibroimpact: failure: solve_cvode: at the pace of its last 1 window of " + kWindow + " steps"),
+                  std::string::npos)
             << r.err;
         // The steps it carries to the horizon exceed the budget, and lie below what the whole run
         // takes with the budget raised (measured: 4.2e6).
         const double need = number_after(r.err, "the horizon needs about ");
-        EXPECT_GT(need, 1e6) << r.err;
+        EXPECT_GT(need, std::stod(kBudget)) << r.err;
         EXPECT_LT(need, 5e6) << r.err;
-        EXPECT_NE(r.err.find("more than solver.max_steps = 1000000: the full model without damping keeps its highest "
-                             "mode (4.85e+09 Hz) ringing"),
+        EXPECT_NE(r.err.find("more than solver.max_steps = " + kBudget +
+                             ": the full model without damping keeps its highest mode (4.85e+09 Hz) ringing"),
                   std::string::npos)
             << r.err;
         EXPECT_NE(r.err.find("set solver.reduced_modes (e.g. 16) or add [damping], or raise solver.max_steps"),
@@ -261,14 +275,15 @@ TEST(BoundedRuns, AnUndampedFullModelEndsOnItsPaceBeforeTheStepBudget) {
 TEST(BoundedRuns, ASustainedPaceBeyondTheStepBudgetEndsTheRun) {
     const std::string dir = test::make_temp_dir();
     const std::string out = dir + "/out";
-    const std::string light = switch_variant(dir, "light.toml", {{"ratios = [0.005, 0.005]", "ratios = [1e-6, 1e-6]"}});
+    const std::string light = switch_variant(dir, "light.toml", {{"ratios = [0.005, 0.005]", "ratios = [1e-6, 1e-6]"}, kBudgetEdit});
     const CommandResult r = run({"simulate", light, "--out", out}, "ratios 1e-6");
     EXPECT_EQ(r.exit_code, 1) << r.err;
-    EXPECT_NE(r.err.find("vibroimpact: failure: solve_cvode: at the pace of its last 3 windows of 50000 steps"),
+    EXPECT_NE(r.err.find("vibroimpact: failure: solve_cvode: at the pace of its last 3 windows of " + kWindow + " steps"),
               std::string::npos)
         << r.err;
-    EXPECT_GT(number_after(r.err, "the horizon needs about "), 1e6) << r.err;
-    EXPECT_NE(r.err.find("more than solver.max_steps = 1000000; raise solver.max_steps"), std::string::npos) << r.err;
+    EXPECT_GT(number_after(r.err, "the horizon needs about "), std::stod(kBudget)) << r.err;
+    EXPECT_NE(r.err.find("more than solver.max_steps = " + kBudget + "; raise solver.max_steps"), std::string::npos)
+        << r.err;
     EXPECT_FALSE(fs::exists(out));
 }
 
