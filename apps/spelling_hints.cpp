@@ -35,7 +35,7 @@ std::string spelling_hint(const CLI::App& app, int argc, const char* const* argv
     if (sub == nullptr) {
         if (first.empty() || first.front() == '-') return "";
         const auto guess = closest_spelling(first, std::vector<std::string_view>(commands.begin(), commands.end()));
-        return guess ? hint(first, *guess) : "";
+        return guess ? hint(first, *guess) : "; '" + first + "' is not a command";
     }
     const std::vector<std::string> names = long_names(*sub);
     for (int i = 2; i < argc; ++i) {

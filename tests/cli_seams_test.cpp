@@ -76,6 +76,7 @@ TEST(DidYouMean, NamesTheNearestCommandAndOption) {
     const auto far = run_vibroimpact({"xyzzy"});
     EXPECT_EQ(far.exit_code, 2);
     EXPECT_EQ(far.err.find("did you mean"), std::string::npos) << far.err;
+    EXPECT_NE(far.err.find("'xyzzy' is not a command"), std::string::npos) << far.err;
 }
 
 TEST(JsonEverywhere, SweepPrintsItsSummaryAndTable) {

@@ -16,12 +16,13 @@ bool has(const fs::path& dir, const char* file) {
     return fs::is_regular_file(dir / file, ec);
 }
 
-// The case's name as the folder's JSON records it (summary.json's resolved.name, sweep.json's
-// case_name); empty when it does not.
+// The case's name as the folder's JSON records it (summary.json's resolved.name, sweep.json's and
+// modes.json's case_name); empty when it does not.
 std::string case_name_of(const std::string& dir, RunKind kind) {
-    const nlohmann::json j = read_run_json(dir + (kind == RunKind::sweep ? "/sweep.json" : "/summary.json"));
+    const char* file = kind == RunKind::sweep ? "/sweep.json" : kind == RunKind::modes ? "/modes.json" : "/summary.json";
+    const nlohmann::json j = read_run_json(dir + file);
     const nlohmann::json* name = nullptr;
-    if (kind == RunKind::sweep && j.is_object() && j.contains("case_name")) name = &j["case_name"];
+    if (kind != RunKind::transient && j.is_object() && j.contains("case_name")) name = &j["case_name"];
     if (kind == RunKind::transient && j.is_object() && j.contains("resolved") && j["resolved"].is_object() &&
         j["resolved"].contains("name")) {
         name = &j["resolved"]["name"];
@@ -58,7 +59,7 @@ RunPlots run_plots(const std::string& dir) {
         case RunKind::modes: p.figures = modes_figures(dir); break;
         case RunKind::sweep: p.figures = sweep_figures(dir, p.skipped); break;
     }
-    const std::string name = p.kind == RunKind::modes ? std::string() : case_name_of(dir, p.kind);
+    const std::string name = case_name_of(dir, p.kind);
     // Every figure says what it shows and of which case, so that one copied out of its folder still does.
     for (FigureSpec& f : p.figures) {
         const std::string title = name.empty() ? f.title : f.title + " - " + name;
