@@ -38,9 +38,9 @@ CommandBody add_modes_command(CLI::App& app) {
         } catch (const InputError& e) {
             throw locate_in_case(c, e);
         }
-        if (!opt->out_dir.empty()) write_output_files(opt->out_dir, modal_study_files(study, c.name));
+        if (!opt->out_dir.empty()) write_output_files(opt->out_dir, modal_study_files(study));
         if (opt->json) {
-            std::printf("%s\n", modal_study_json(study, c.name).dump(2).c_str());
+            std::printf("%s\n", modal_study_json(study).dump(2).c_str());
         } else {
             std::printf("Case %s: %s\n%s", opt->case_path.c_str(), c.name.c_str(), modal_study_text(study).c_str());
             if (!opt->out_dir.empty()) std::printf("Written to %s/\n", opt->out_dir.c_str());

@@ -150,7 +150,7 @@ CommandBody add_simulate_command(CLI::App& app) {
         SimulationRun run;
         try {
             SimulationOptions so;
-            so.field = opt->field;
+            so.field = opt->field || c.solver.field_step > 0.0;
             run = run_simulation(c, so);
         } catch (const InputError& e) {
             throw locate_in_case(c, e);

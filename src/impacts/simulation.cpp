@@ -129,8 +129,7 @@ CvodeOptions cvode_options(const SolverSettings& s) {
     return c;
 }
 
-long field_every(const SolverSettings& s, bool wanted, int dofs) {
-    if (!(s.field_step > 0.0) && !wanted) return 0;
+long field_every(const SolverSettings& s, int dofs) {
     const double out = s.output_step > 0.0 ? s.output_step : s.horizon / 2000.0;
     const double step = s.field_step > 0.0 ? s.field_step : s.horizon / 200.0;
     const double samples = std::floor(s.horizon / out * (1 + 1e-12)) + 1;
@@ -154,7 +153,7 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
     SimulationRun run;
     run.built = build_transient_problem(c);
     TransientOptions to = transient_options(c.solver, o);
-    to.field_every = field_every(c.solver, o.field, run.built.problem.size());
+    to.field_every = o.field && o.history ? field_every(c.solver, run.built.problem.size()) : 0;
     run.result = solve_transient(c, run.built.problem, to);
     const bool at_rest = released_at_rest(run.built);
     require_first_impact(c, run, at_rest);

@@ -83,9 +83,8 @@ void bending_table(std::string& out, const std::vector<Mode>& modes, const std::
 
 }  // namespace
 
-nlohmann::json modal_study_json(const ModalStudy& study, const std::string& case_name) {
+nlohmann::json modal_study_json(const ModalStudy& study) {
     nlohmann::json j;
-    if (!case_name.empty()) j["case_name"] = case_name;
     j["dofs"] = study.unsupported.dofs;
     j["unsupported"] = {{"dofs", study.unsupported.dofs},
                         {"bending", modes_json(study.unsupported.bending, true)},
@@ -142,9 +141,9 @@ CsvTable mode_shapes_csv(const ModalResult& result, int per_element) {
     return t;
 }
 
-OutputFiles modal_study_files(const ModalStudy& study, const std::string& case_name) {
+OutputFiles modal_study_files(const ModalStudy& study) {
     OutputFiles files;
-    files["modes.json"] = modal_study_json(study, case_name).dump(2) + "\n";
+    files["modes.json"] = modal_study_json(study).dump(2) + "\n";
     CsvTable freq;
     freq.header = {"mode", "unsupported_hz", "unsupported_rad_s", "supported_hz", "supported_rad_s", "ratio"};
     for (std::size_t i = 0; i < study.unsupported.bending.size(); ++i) {

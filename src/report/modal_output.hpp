@@ -12,9 +12,8 @@
 
 namespace vi {
 
-// {"dofs", "unsupported": {"bending", "axial"}, "supported": {"bending", "axial", "ratios"}, ...},
-// and "case_name" when one is given (figures drawn from the folder carry it).
-nlohmann::json modal_study_json(const ModalStudy& study, const std::string& case_name = "");
+// {"dofs", "unsupported": {"bending", "axial"}, "supported": {"bending", "axial", "ratios"}, ...}
+nlohmann::json modal_study_json(const ModalStudy& study);
 
 // Plain-text tables of frequencies, ratios, nodal points and peaks for a terminal.
 std::string modal_study_text(const ModalStudy& study);
@@ -23,8 +22,8 @@ std::string modal_study_text(const ModalStudy& study);
 // (mass normalised, SI).
 CsvTable mode_shapes_csv(const ModalResult& result, int per_element);
 
-// Every file `modes --out` writes: modes.json (with case_name when given), frequencies.csv, shapes_*.csv.
-OutputFiles modal_study_files(const ModalStudy& study, const std::string& case_name = "");
+// Every file `modes --out` writes: modes.json, frequencies.csv, shapes_*.csv.
+OutputFiles modal_study_files(const ModalStudy& study);
 
 // One row per support position: x0_over_l, ratio_<i> = omega_i/omega_in, f_supported_<i>_hz.
 CsvTable support_scan_csv(const std::vector<SupportScanPoint>& points, int count);

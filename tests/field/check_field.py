@@ -141,8 +141,10 @@ def gif_frames(path):
 
 with tempfile.TemporaryDirectory() as tmp:
     out = os.path.join(tmp, "run")
-    r = run("simulate", paper, "--field", "--out", out, "--set", "solver.field_step=3us")
-    check(r.returncode == 0, "simulate --field for the animation")
+    # The key alone (no --field) records the field too.
+    r = run("simulate", paper, "--out", out, "--set", "solver.field_step=3us")
+    check(r.returncode == 0 and os.path.isfile(os.path.join(out, "field.pvd")),
+          "solver.field_step without --field: simulate writes the field")
     r = run("plot", out)
     gif = os.path.join(out, "plots", "field_animation.gif")
     check(r.returncode == 0 and os.path.isfile(gif), f"plot writes plots/field_animation.gif ({r.stderr.strip()[:200]})")
