@@ -26,8 +26,9 @@ inline constexpr int kMaxCvodeElements = 400;
 // distributed force (an electrode or a squeeze film): its tangent couples every DOF it faces. The
 // Newton matrix is factorised in the FE DOFs, where it is sparse, but every step still carries its
 // state between the n modal coordinates and the DOFs (products by the dense n x n basis, O(n^2)):
-// the switch example takes 0.3 s of CPU at m = 50, 0.9 s at 100, 3.2 s at 200 and 12.5 s at 400
-// (bench/cvode_mesh_bench.cpp); on a reduced model of 10 modes 0.4 s at m = 200.
+// the switch example takes 0.34 s of CPU at m = 50, 0.88 s at 100, 3.2 s at 200 and 12.7 s at 400
+// (bench/cvode_mesh_bench.cpp; docs/electrostatics.md §9); on a reduced model of 10 modes 0.38 s at
+// m = 200.
 inline constexpr int kMaxFullModelFieldElements = 200;
 // Most elements at which `pullin --dynamic` confirms its bracket on the full model with an electrode
 // (above: on its finest reduced model): its bisection runs the model tens of times.
