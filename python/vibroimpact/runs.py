@@ -149,8 +149,8 @@ def uq(case, vary, analysis="simulate", samples=256, method="mc", seed=1, specs=
 
 
 def _settings(values, what):
-    """``["PATH=LOW:HIGH", ...]`` from a list of such texts or a dict ``{path: (low, high)}``,
-    ``{path: "LOW:HIGH"}`` or ``{path: None}`` (a fit's path without bounds)."""
+    """``["PATH=LOW:HIGH", ...]`` from a list of such texts or a dict ``{path: (low, high)}`` (numbers
+    [SI] or texts with units), ``{path: "LOW:HIGH"}`` or ``{path: None}`` (a fit's path without bounds)."""
     if isinstance(values, str):
         raise TypeError(f"{what}: a list of texts or a dict {{path: bounds}}, not one str")
     if not isinstance(values, dict):
@@ -163,8 +163,14 @@ def _settings(values, what):
             out.append(f"{path}={bounds}")
         else:
             low, high = bounds
-            out.append(f"{path}={float(low)!r}:{float(high)!r}")
+            out.append(f"{path}={_bound_text(low)}:{_bound_text(high)}")
     return out
+
+
+def _bound_text(value):
+    """A bound as a setting writes it: a text with its unit as is, a number [SI] as the shortest
+    text that reads back the same float."""
+    return value if isinstance(value, str) else repr(float(value))
 
 
 def _path_or_empty(path):
@@ -181,7 +187,8 @@ def fit(case, parameters, data=None, features=None, column=None, time_shift=Fals
         The model; its values are the start of every fitted value (:func:`load`).
     parameters : list of str or dict
         The fitted values: ``["PATH", "PATH=LOW:HIGH"]`` as ``--fit`` (bounds SI or with units,
-        ``"supports[0].gap=0.1um:2um"``), or ``{path: (low, high)}`` [SI], ``{path: None}`` for no bounds.
+        ``"supports[0].gap=0.1um:2um"``), or ``{path: (low, high)}`` with numbers [SI] or texts
+        with units (``("0.1 um", "2 um")``), ``{path: None}`` for no bounds.
     data : str or os.PathLike, optional
         CSV trajectory: ``t_s`` [s], the measured column and optionally ``sigma`` (docs/calibration.md).
     features : str or os.PathLike, optional
@@ -229,7 +236,8 @@ def optimize(case, vary, minimize=None, maximize=None, constraints=(), analysis=
     case : Case, str, os.PathLike or dict
         The base design (:func:`load`).
     vary : list of str or dict
-        ``["PATH=LOW:HIGH"]`` as ``--vary`` (SI or with units), or ``{path: (low, high)}`` [SI].
+        ``["PATH=LOW:HIGH"]`` as ``--vary`` (SI or with units), or ``{path: (low, high)}`` with
+        numbers [SI] or texts with units.
     minimize, maximize : str
         One of them: a reported quantity, a sweep column of the analysis (``"z_max"``, ``"Tp_s"``).
     constraints : sequence of str, optional
