@@ -115,7 +115,7 @@ namespace {
 
 // The models a case on its full model is bisected on, coarsest first: the reduced model of n modes,
 // then of 2n, 4n, ... while that stays below half the beam's `modes`, then the full model (0) when
-// `full` (a mesh above kMaxFullModelFieldElements ends on its finest reduced model).
+// `full` (a mesh above kMaxFullModelBisectionElements ends on its finest reduced model).
 std::vector<int> model_ladder(int n, int modes, bool full) {
     std::vector<int> out;
     for (int k = n; k > 0 && 2 * k <= modes; k *= 2) out.push_back(k);
@@ -176,7 +176,7 @@ DynamicPullinResult dynamic_pullin(const Case& c, double static_voltage, const D
     // model agrees at both of its ends, a modal convergence check (docs/electrostatics.md §6). A
     // full model costs far more: an undamped one follows its mesh's top modes at every step.
     const bool reduce = c.solver.reduced_modes == 0 && o.reduced_modes > 0 && modes > 2 * o.reduced_modes;
-    const bool full = c.beam.elements <= kMaxFullModelFieldElements;
+    const bool full = c.beam.elements <= kMaxFullModelBisectionElements;
     const std::vector<int> ladder =
         reduce ? model_ladder(o.reduced_modes, modes, full) : std::vector<int>{c.solver.reduced_modes};
     out.reduced_modes = c.solver.reduced_modes;

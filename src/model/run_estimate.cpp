@@ -133,10 +133,11 @@ std::vector<CaseProblem> check_transient_run(const Case& c, bool history, double
                        std::to_string(c.beam.elements) + " elements are more than a transient on the full model takes with " +
                            (c.electrodes.empty() ? "a squeeze film" : "an electrode") + " (at most " +
                            std::to_string(kMaxFullModelFieldElements) +
-                           ", docs/case-files.md, Limits): its distributed force makes each Newton matrix a dense " +
-                           std::to_string(static_cast<long>(e.bending_dofs)) + " x " +
+                           ", docs/case-files.md, Limits): with its distributed force every step carries the state "
+                           "through the dense modal basis of all " +
                            std::to_string(static_cast<long>(e.bending_dofs)) +
-                           " factorisation; set solver.reduced_modes (e.g. 16) or use fewer elements"});
+                           " bending DOFs, a cost that grows as their square; set solver.reduced_modes (e.g. 16) or use "
+                           "fewer elements"});
     }
     const auto corners = [&](const std::string& key, const TimeFunction& g, bool exact) {
         if (g.kind != TimeFunction::Kind::table || c.solver.horizon <= 0.0) return;

@@ -23,11 +23,16 @@ inline constexpr int kMaxExactElements = 400;
 // 8.5 s (38 MB) at 400, where roundoff in K already moves T by 7e-7.
 inline constexpr int kMaxCvodeElements = 400;
 // Most elements of a CVODE transient on the full model (solver.reduced_modes = 0) with a
-// distributed force (an electrode or a squeeze film): its tangent couples every DOF it faces, so each
-// Newton matrix is a dense n x n factorisation and projection. The switch example takes 0.3 s at
-// m = 50, 1.3 s at 100, 7 s at 200 and 54 s at 400; on a reduced model of 16 modes 1.7 s at m = 400
-// with the same closing time to 1e-6.
-inline constexpr int kMaxFullModelFieldElements = 100;
+// distributed force (an electrode or a squeeze film): its tangent couples every DOF it faces. The
+// Newton matrix is factorised in the FE DOFs, where it is sparse, but every step still carries its
+// state between the n modal coordinates and the DOFs (products by the dense n x n basis, O(n^2)):
+// the switch example takes 0.34 s of CPU at m = 50, 0.88 s at 100, 3.2 s at 200 and 12.7 s at 400
+// (bench/cvode_mesh_bench.cpp; docs/electrostatics.md §9); on a reduced model of 10 modes 0.38 s at
+// m = 200.
+inline constexpr int kMaxFullModelFieldElements = 200;
+// Most elements at which `pullin --dynamic` confirms its bracket on the full model with an electrode
+// (above: on its finest reduced model): its bisection runs the model tens of times.
+inline constexpr int kMaxFullModelBisectionElements = 100;
 // Most supports: every closed set of two or more is a dense 2n x 2n eigen problem (100 took 42 s, 2 GB).
 inline constexpr std::size_t kMaxSupports = 100;
 // At most this many electrodes: each one is a force element integrated over its span at every step.

@@ -1,5 +1,7 @@
 #include "dynamics/cvode/cvode_system.hpp"
 
+#include "dynamics/cvode/dual_product.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -32,6 +34,7 @@ ModalSystem::ModalSystem(const TransientProblem& p, ModalBasis basis)
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
     union_rows_ = rows_of(basis_.phi, all);
+    union_dofs_ = all;
     for (const ForceElementPtr& e : p.forces) {
         std::vector<int> at;
         for (int d : e->dofs()) at.push_back(static_cast<int>(std::lower_bound(all.begin(), all.end(), d) - all.begin()));
@@ -68,13 +71,15 @@ double ModalSystem::element_time(double t) const {
 }
 
 void ModalSystem::gather_union(const double* y, const double* acc) const {
-    uq_.noalias() = union_rows_ * ConstVec(y, r_);
-    uv_.noalias() = union_rows_ * ConstVec(y + r_, r_);
+    // One pass over the union's rows for both (on a full basis of a fine mesh these products are
+    // most of a step's work).
+    uqv_.resize(union_rows_.rows(), 2);
+    dual_product(union_rows_, y, y + r_, uqv_.col(0), uqv_.col(1));
     if (acc) ua_.noalias() = union_rows_ * ConstVec(acc, r_);
 }
 
 const ElementState& ModalSystem::union_state(int e, double t, bool acc) const {
-    return assembler_.gather(element(e), local_[static_cast<std::size_t>(e)], uq_.data(), uv_.data(),
+    return assembler_.gather(element(e), local_[static_cast<std::size_t>(e)], uqv_.col(0).data(), uqv_.col(1).data(),
                              acc ? ua_.data() : nullptr, t);
 }
 
@@ -137,10 +142,14 @@ void ModalSystem::acceleration(double t, const double* y, Eigen::VectorXd& acc) 
     static_cast<void>(add_element_forces(element_time(t), y, out, nullptr, nullptr));
 }
 
+bool ModalSystem::needs_acceleration(int e) const {
+    const ForceElement& el = element(e);
+    return el.watch_count() > 0 && el.watch_needs_acceleration(modes_[static_cast<std::size_t>(e)]);
+}
+
 bool ModalSystem::watches_need_acceleration() const {
     for (int e = 0; e < elements(); ++e) {
-        const ForceElement& el = element(e);
-        if (el.watch_count() > 0 && el.watch_needs_acceleration(modes_[static_cast<std::size_t>(e)])) return true;
+        if (needs_acceleration(e)) return true;
     }
     return false;
 }
@@ -151,7 +160,13 @@ void ModalSystem::root_functions(double t, const double* y, double* g) const {
     const bool need = watches_need_acceleration();
     if (need) {
         acceleration(t, y, acc_);
-        ua_.noalias() = union_rows_ * acc_;
+        // a only at the DOFs of the elements whose watches read it (a contact's one DOF), not on
+        // the whole union: on a full basis that product is O(|U| r).
+        ua_.resize(union_rows_.rows());
+        for (int e = 0; e < elements(); ++e) {
+            if (!needs_acceleration(e)) continue;
+            for (int u : local_[static_cast<std::size_t>(e)]) ua_[u] = union_rows_.row(u).dot(acc_);
+        }
     } else {
         gather_union(y, nullptr);
     }
@@ -159,7 +174,7 @@ void ModalSystem::root_functions(double t, const double* y, double* g) const {
         const ForceElement& el = element(e);
         const std::size_t ue = static_cast<std::size_t>(e);
         if (switch_root_[ue] < 0 && el.watch_count() == 0) continue;
-        const ElementState& s = union_state(e, te, need);
+        const ElementState& s = union_state(e, te, need && needs_acceleration(e));
         if (switch_root_[ue] >= 0) g[switch_root_[ue]] = el.switching_function(s, modes_[ue]);
         if (el.watch_count() > 0) el.watch_functions(s, modes_[ue], g + watch_root_[ue]);
     }

@@ -46,6 +46,9 @@ public:
     // basis rows (|U| x r), and the position in it of each of element e's DOFs.
     [[nodiscard]] const Eigen::MatrixXd& union_rows() const { return union_rows_; }
     [[nodiscard]] const std::vector<int>& union_positions(int e) const { return local_[static_cast<std::size_t>(e)]; }
+    // The FE DOF of each row of union_rows().
+    [[nodiscard]] const std::vector<int>& union_dofs() const { return union_dofs_; }
+    [[nodiscard]] const TransientProblem& problem() const { return p_; }
 
     [[nodiscard]] int rayleigh_index() const { return 2 * r_; }
     [[nodiscard]] int dissipation_index() const { return 2 * r_ + 1; }
@@ -121,6 +124,8 @@ private:
                               double* film) const;
     // Whether a watch function needs the accelerations in the elements' current modes.
     [[nodiscard]] bool watches_need_acceleration() const;
+    // Whether element e's watch functions read the accelerations in its current mode.
+    [[nodiscard]] bool needs_acceleration(int e) const;
 
     const TransientProblem& p_;
     ModalBasis basis_;
@@ -128,6 +133,7 @@ private:
     Eigen::VectorXd w2_, d_;                 // omega^2, alpha + beta omega^2
     std::vector<Eigen::MatrixXd> rows_;      // per element: basis rows of its DOFs (|D_e| x r)
     Eigen::MatrixXd union_rows_;             // basis rows of the union of the elements' DOFs (|U| x r)
+    std::vector<int> union_dofs_;            // the union's DOFs, ascending
     std::vector<std::vector<int>> local_;    // per element: positions of its DOFs in the union
     Eigen::RowVectorXd watched_row_;
     std::vector<int> contacts_;
@@ -139,7 +145,8 @@ private:
     std::vector<int> identity_;                  // 0, 1, ..., the largest element's DOF count - 1
     mutable ElementAssembler assembler_;
     mutable Eigen::VectorXd own_q_, own_v_;      // one element's q and v through its own rows
-    mutable Eigen::VectorXd uq_, uv_, ua_, uf_;  // on the union: q, v, a, summed element forces
+    mutable Eigen::MatrixXd uqv_;                // on the union: q and v (two columns)
+    mutable Eigen::VectorXd ua_, uf_;            // on the union: a, summed element forces
     mutable Eigen::VectorXd acc_;
 };
 
