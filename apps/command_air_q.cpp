@@ -1,4 +1,4 @@
-// `vibroimpact air-q CASE --out DIR`: the quality factor of the first mode against air pressure, from
+// `vibroimpact air-q CASE [--out DIR]`: the quality factor of the first mode against air pressure, from
 // the squeeze film's modal damping and from ring-down transients; a CSV and a figure.
 
 #include <cstdio>
@@ -8,6 +8,7 @@
 #include <string>
 
 #include "commands.hpp"
+#include "json_output.hpp"
 #include "figure_output.hpp"
 #include "progress.hpp"
 #include "io/case_reader.hpp"
@@ -25,7 +26,8 @@ namespace vi::cli {
 CommandBody add_air_q_command(CLI::App& app) {
     struct AirQCommandOptions {
         std::string case_path;
-        std::string out = "out/air-q";
+        std::string out;
+        bool json = false;
         std::string gap = "1 um";
         std::string gnuplot = "gnuplot";
         ProgressSettings progress;
@@ -34,7 +36,8 @@ CommandBody add_air_q_command(CLI::App& app) {
     CLI::App* sub = app.add_subcommand("air-q", "Quality factor of mode 1 against air pressure (squeeze film), 1 atm to 1 Pa");
     sub->add_option("case", opt->case_path, "Case file (TOML): the beam; its [air], electrodes or [[films]] if any")
         ->required();
-    sub->add_option("--out,-o", opt->out, "Folder for air_q.csv and the figure air_q.png/.svg")->capture_default_str();
+    sub->add_option("--out,-o", opt->out, "Folder for air_q.csv and the figure air_q.png/.svg (without it nothing is written)");
+    sub->add_flag("--json", opt->json, "Print the table as JSON on stdout (the columns and rows of air_q.csv)");
     CLI::Option* gap_option =
         sub->add_option("--gap", opt->gap, "Film gap under the whole beam when the case has no electrode or film")
             ->capture_default_str();
@@ -58,7 +61,8 @@ CommandBody add_air_q_command(CLI::App& app) {
             throw InputError("--gap " + opt->gap + ": outside the magnitudes the tool computes with (1e-100 to 1e100 m; "
                              "docs/case-files.md, Limits)");
         }
-        const std::string gnuplot = require_gnuplot(opt->gnuplot, "the Q figure");
+        // The figure is a file: without --out nothing is drawn, and gnuplot is not needed.
+        const std::string gnuplot = opt->out.empty() ? std::string() : require_gnuplot(opt->gnuplot, "the Q figure");
         const ProgressStyle style = progress_style(opt->progress);
         std::vector<AirQPoint> points;
         try {
@@ -74,21 +78,26 @@ CommandBody add_air_q_command(CLI::App& app) {
         } catch (const InputError& e) {
             throw locate_in_case(base, e);
         }
+        const FigureSpec figure = air_q_figure(points, base.name);
         const std::optional<std::string> figure_failed =
-            write_with_figures(opt->out, {}, {air_q_figure(points, base.name)}, gnuplot);
-        std::printf("%12s %10s %12s %10s %12s %12s\n", "pressure_Pa", "Kn", "mu_eff/mu", "sigma", "Q_modal", "Q_ringdown");
-        for (const AirQPoint& x : points) {
-            std::printf("%12.4g %10.4g %12.4g %10.4g %12.5g %12s\n", x.pressure, x.knudsen, x.viscosity_ratio,
-                        x.squeeze_number, x.q_modal,
-                        x.q_ringdown ? std::to_string(*x.q_ringdown).c_str() : "overdamped");
+            opt->out.empty() ? std::nullopt : write_with_figures(opt->out, {}, {figure}, gnuplot);
+        if (opt->json) {
+            print_json(csv_as_json(figure.data.front().second, figure.data.front().first));
+        } else {
+            std::printf("%12s %10s %12s %10s %12s %12s\n", "pressure_Pa", "Kn", "mu_eff/mu", "sigma", "Q_modal", "Q_ringdown");
+            for (const AirQPoint& x : points) {
+                std::printf("%12.4g %10.4g %12.4g %10.4g %12.5g %12s\n", x.pressure, x.knudsen, x.viscosity_ratio,
+                            x.squeeze_number, x.q_modal,
+                            x.q_ringdown ? std::to_string(*x.q_ringdown).c_str() : "overdamped");
+            }
         }
         if (figure_failed) {
-            std::printf("Written to %s/ (air_q.csv, air_q.gp)\n", opt->out.c_str());
+            if (!opt->json) std::printf("Written to %s/ (air_q.csv, air_q.gp)\n", opt->out.c_str());
             std::fprintf(stderr, "vibroimpact: air-q: the figure was not drawn (%s); air_q.csv is written in %s\n",
                          figure_failed->c_str(), opt->out.c_str());
             return kExitFailure;
         }
-        std::printf("Written to %s/ (air_q.csv, air_q.png, air_q.svg)\n", opt->out.c_str());
+        if (!opt->out.empty() && !opt->json) std::printf("Written to %s/ (air_q.csv, air_q.png, air_q.svg)\n", opt->out.c_str());
         return kExitOk;
     };
 }

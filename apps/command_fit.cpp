@@ -34,7 +34,7 @@ struct FitCommandOptions {
     bool time_shift = false, scale = false, two_stage = false;
     std::string time_shift_range, scale_range;
     int max_iterations = 50, starts = 1, threads = 0;
-    std::string out = "out/fit";
+    std::string out;
     std::string gnuplot = "gnuplot";
     bool json = false;
     ProgressSettings progress;
@@ -112,7 +112,8 @@ CommandBody add_fit_command(CLI::App& app) {
                                                  "the contact values (supports[...]) to the whole record");
     sub->add_option("--max-iterations", opt->max_iterations, "Levenberg-Marquardt iterations at most (per start)")
         ->check(CLI::Range(1, 10000))->capture_default_str();
-    sub->add_option("--out,-o", opt->out, "Folder for fit.json, fit_residuals.csv and the figure")->capture_default_str();
+    sub->add_option("--out,-o", opt->out, "Folder for fit.json, fit_residuals.csv and the figure (required: a fit's result is these files)")
+        ->required();
     sub->add_option("--gnuplot", opt->gnuplot, "gnuplot executable (name on PATH or path)")->capture_default_str();
     sub->add_flag("--json", opt->json, "Print fit.json on stdout instead of text");
     add_progress_options(*sub, opt->progress);

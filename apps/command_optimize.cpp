@@ -72,7 +72,7 @@ struct OptimizeCommandOptions {
     int modes = 3;
     int max_evals = 100, global_evals = 0, threads = 0;
     double point_timeout = 60.0;
-    std::string out = "out/optimize";
+    std::string out;
     std::string gnuplot = "gnuplot";
     bool json = false;
     bool resume = false;
@@ -234,8 +234,10 @@ CommandBody add_optimize_command(CLI::App& app) {
     sub->add_option("--threads,-j", opt->threads,
                     "Worker threads (0: every CPU this process may use, as sweep); the result does not depend on it")
         ->check(CLI::Range(0, 4096))->capture_default_str();
-    sub->add_option("--out,-o", opt->out, "Folder for optimize.json, evaluations.csv and the convergence figure")
-        ->capture_default_str();
+    sub->add_option("--out,-o", opt->out,
+                    "Folder for optimize.json, evaluations.csv, the convergence figure and the journal a --resume reads "
+                    "(required)")
+        ->required();
     sub->add_flag("--resume", opt->resume,
                   "Go on with the optimisation stopped in --out (its journal): the designs computed are not computed "
                   "again, and the result is the one of an uninterrupted run");

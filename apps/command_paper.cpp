@@ -12,6 +12,7 @@
 #include "study/paper/claims.hpp"
 #include "study/paper/study.hpp"
 #include "commands.hpp"
+#include "json_output.hpp"
 #include "progress.hpp"
 #include "model/input_error.hpp"
 #include "io/output_files.hpp"
@@ -53,7 +54,8 @@ void check_output_folder(const std::string& dir) {
 
 CommandBody add_paper_command(CLI::App& app) {
     struct PaperCommandOptions {
-        std::string out = "out/paper";
+        std::string out;
+        bool json = false;
         int threads = 0;
         int positions = 50;
         int modal_positions = 100;
@@ -67,7 +69,10 @@ CommandBody add_paper_command(CLI::App& app) {
     auto opt = std::make_shared<PaperCommandOptions>();
     CLI::App* sub = app.add_subcommand(
         "paper", "The paper's numerical study (Figs. 2-11: PNG, SVG, CSV) and report.html comparing its claims with ours");
-    sub->add_option("--out,-o", opt->out, "Output folder (created; files of the same names are replaced)")->capture_default_str();
+    sub->add_option("--out,-o", opt->out, "Output folder (created; files of the same names are replaced); --out or --json is needed");
+    sub->add_flag("--json", opt->json,
+                  "Print the claims as JSON on stdout (claims.json, with the count that agree); without --out no file is "
+                  "written and no figure drawn");
     sub->add_option("--threads,-j", opt->threads, "Worker threads (0: every CPU this process may use: its affinity and cgroup CPU quota)")->check(CLI::Range(0, 1024))->capture_default_str();
     sub->add_option("--positions", opt->positions,
                     "Support positions of the transient scans, evenly over x0/l in [0.3, 1] (0.67, 0.78, 0.87 always added)")
@@ -108,8 +113,12 @@ CommandBody add_paper_command(CLI::App& app) {
             throw InputError("--scan-horizon: " + std::string(e.what()));
         }
         if (!(scan_horizon > 0.0)) throw InputError("--scan-horizon: must be positive");
-        check_output_folder(opt->out);
-        const auto gnuplot = find_gnuplot(opt->gnuplot);
+        if (opt->out.empty() && !opt->json) {
+            throw InputError("--out: paper writes report.html with its figures and data into a folder: give --out DIR "
+                             "(or --json for the claims alone)");
+        }
+        if (!opt->out.empty()) check_output_folder(opt->out);
+        const auto gnuplot = opt->out.empty() ? std::optional<std::string>("") : find_gnuplot(opt->gnuplot);
         if (!gnuplot) {
             throw std::runtime_error("gnuplot: '" + opt->gnuplot +
                                      "' not found; the figures need it (Debian: apt-get install gnuplot-nox, or bash scripts/install-deps)");
@@ -139,6 +148,13 @@ CommandBody add_paper_command(CLI::App& app) {
                  " threads");
 
         const std::vector<Claim> claims = paper_claims(study);
+        int agree = 0;
+        for (const Claim& c : claims) agree += c.verdict == Verdict::agrees;
+        if (opt->out.empty()) {
+            check_run();
+            print_json({{"agree", agree}, {"claims_total", claims.size()}, {"claims", nlohmann::json::parse(claims_json(claims))}});
+            return kExitOk;
+        }
         const std::vector<FigureSpec> figures = paper_figures(study);
         const auto f0 = Clock::now();
         const std::vector<RenderedFigure> rendered = render_figures(*gnuplot, figures, study.timing.threads);
@@ -160,9 +176,10 @@ CommandBody add_paper_command(CLI::App& app) {
             const CommitSection commit;
             write_output_files(opt->out, files);
         }
-
-        int agree = 0;
-        for (const Claim& c : claims) agree += c.verdict == Verdict::agrees;
+        if (opt->json) {
+            print_json({{"agree", agree}, {"claims_total", claims.size()}, {"claims", nlohmann::json::parse(files.at("claims.json"))}});
+            return kExitOk;
+        }
         std::printf("Wrote %zu files to %s/ (open report.html): %d of %zu claims of the paper agree; %.1f s\n", files.size(),
                     opt->out.c_str(), agree, claims.size(), elapsed());
         return kExitOk;

@@ -13,8 +13,10 @@
 #include "io/output_files.hpp"
 #include "io/units.hpp"
 #include "model/run_control.hpp"
+#include "report/field_output.hpp"
 #include "report/transient_output.hpp"
 #include "stop_signals.hpp"
+#include "sweep/case_paths.hpp"
 #include "model/number_format.hpp"
 
 namespace vi::cli {
@@ -119,6 +121,8 @@ CommandBody add_simulate_command(CLI::App& app) {
         std::string out_dir;
         std::string r_on;
         CLI::Option* r_on_option = nullptr;
+        bool field = false;
+        std::vector<std::string> sets;
     };
     auto opt = std::make_shared<SimulateCommandOptions>();
     CLI::App* sub = app.add_subcommand("simulate", "Free impact transient: release, bouncing, settling");
@@ -129,12 +133,25 @@ CommandBody add_simulate_command(CLI::App& app) {
                     "On threshold of the contact resistance [ohm] for every support with a resistivity (sets their "
                     "r_on): the electrical bounce ledger");
 
+    sub->add_option("--set", opt->sets,
+                    "PATH=VALUE: a value of the case for this run, as --set of sweep takes one (SI, or a unit of the "
+                    "key's dimension: supports[0].gap=0.5um, electrodes[0].voltage=70V); repeat for more")
+        ->allow_extra_args(false)
+        ->type_name("PATH=VALUE");
+    sub->add_flag("--field", opt->field,
+                  "Also record the whole deflected beam (solver.field_step, else horizon / 200) into --out: "
+                  "field.pvd with field/*.vtu (ParaView) and field.csv");
+
     return [opt]() {
+        if (opt->field && opt->out_dir.empty()) throw InputError("--field: the field is written as files; give --out DIR");
         Case c = read_case_file(opt->case_path);
+        apply_case_settings(c, "--set", opt->sets);
         if (opt->r_on_option->count() > 0) apply_r_on(c, opt->r_on);
         SimulationRun run;
         try {
-            run = run_simulation(c);
+            SimulationOptions so;
+            so.field = opt->field || c.solver.field_step > 0.0;
+            run = run_simulation(c, so);
         } catch (const InputError& e) {
             throw locate_in_case(c, e);
         }
@@ -154,8 +171,9 @@ CommandBody add_simulate_command(CLI::App& app) {
                          "solver.fallback_reason; solver.fallback = \"none\" makes this an error)\n",
                          opt->case_path.c_str(), run.result.stats.fallback_reason.c_str());
         }
-        const OutputFiles files =
+        OutputFiles files =
             transient_files(c, run.built, run.result, run.summary, run.switching ? &*run.switching : nullptr);
+        files.merge(field_files(beam_field(run.built.model.system, run.result.history)));
         // Last chance to stop: from here the results are complete and go out together.
         check_run();
         if (!opt->out_dir.empty()) {

@@ -8,6 +8,7 @@
 
 #include "modal/support_scan.hpp"
 #include "commands.hpp"
+#include "json_output.hpp"
 #include "io/case_reader.hpp"
 #include "model/input_error.hpp"
 #include "io/output_files.hpp"
@@ -24,6 +25,7 @@ CommandBody add_support_scan_command(CLI::App& app) {
         int count = 3;
         std::string out_dir;
         std::string support_model = "pin";
+        bool json = false;
     };
     auto opt = std::make_shared<SupportScanCommandOptions>();
     CLI::App* sub = app.add_subcommand(
@@ -35,6 +37,7 @@ CommandBody add_support_scan_command(CLI::App& app) {
     sub->add_option("--count,-n", opt->count, "Number of bending modes")->check(CLI::Range(1, 100))->capture_default_str();
     sub->add_option("--out,-o", opt->out_dir, "Folder for support_scan.csv (otherwise CSV on stdout)");
     add_support_model_option(*sub, opt->support_model);
+    sub->add_flag("--json", opt->json, "Print the scan as JSON on stdout (the columns and rows of support_scan.csv)");
 
     return [opt]() {
         std::vector<double> positions;
@@ -59,10 +62,12 @@ CommandBody add_support_scan_command(CLI::App& app) {
         std::size_t count = static_cast<std::size_t>(opt->count);
         for (const auto& pt : points) count = std::min(count, pt.study.ratios.size());
         const std::string csv = support_scan_csv(points, static_cast<int>(count)).str();
-        if (opt->out_dir.empty()) {
+        if (!opt->out_dir.empty()) write_output_files(opt->out_dir, {{"support_scan.csv", csv}});
+        if (opt->json) {
+            print_json(csv_as_json(csv, "support_scan.csv"));
+        } else if (opt->out_dir.empty()) {
             std::fputs(csv.c_str(), stdout);
         } else {
-            write_output_files(opt->out_dir, {{"support_scan.csv", csv}});
             std::printf("Written %zu positions to %s/support_scan.csv\n", points.size(), opt->out_dir.c_str());
         }
         return kExitOk;

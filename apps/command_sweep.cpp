@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "json_output.hpp"
 #include "io/case_reader.hpp"
 #include "io/text_file.hpp"
 #include "model/input_error.hpp"
@@ -32,6 +33,7 @@ struct SweepCommandOptions {
     int modes = 3;
     std::string support_model = "pin";
     bool resume = false;
+    bool json = false;
     bool retry_failed = false;
     double point_timeout = 60.0;
     ProgressSettings progress;
@@ -66,12 +68,21 @@ int finish_on_root(const SweepCommandOptions& o, const PointRunPlan& plan, Sweep
     info.case_path = o.case_path;
     info.failed = failures.size();
     info.failures = failures;
-    if (o.out_dir.empty()) {
+    const nlohmann::json summary = sweep_summary_json(plan.grid, info);
+    if (o.json) {
+        // Read before finish(): the store's rows are what the CSV holds.
+        nlohmann::json j = summary;
+        j["table"] = csv_as_json(store.csv(), SweepStore::kCsvName);
+        if (!o.out_dir.empty()) {
+            const CommitSection commit;
+            store.finish(o.out_dir, summary.dump(2) + "\n");
+        }
+        print_json(j);
+    } else if (o.out_dir.empty()) {
         std::fputs(store.csv().c_str(), stdout);
     } else {
-        const std::string json = sweep_summary_json(plan.grid, info).dump(2) + "\n";
         const CommitSection commit;
-        store.finish(o.out_dir, json);
+        store.finish(o.out_dir, summary.dump(2) + "\n");
         std::printf("Written %zu points to %s/%s and %s\n", store.points(), o.out_dir.c_str(), SweepStore::kCsvName,
                     SweepStore::kJsonName);
     }
@@ -135,6 +146,9 @@ CommandBody add_sweep_command(CLI::App& app) {
     sub->add_option("--out,-o", opt->out_dir,
                     "Folder for sweep.csv and sweep.json, and for the journal of finished points (otherwise the CSV "
                     "goes to stdout and an interrupted sweep is lost)");
+    sub->add_flag("--json", opt->json,
+                  "Print the result as JSON on stdout (sweep.json's fields and \"table\": the columns and rows of "
+                  "sweep.csv) instead of the CSV or the line naming the files");
     sub->add_flag("--resume", opt->resume, "Finish the sweep interrupted in --out DIR without redoing its points");
     sub->add_flag("--retry-failed", opt->retry_failed,
                   "With --resume: compute again the points the journal holds as failed (error or timeout)");

@@ -45,7 +45,7 @@ struct UqCommandOptions {
     std::uint64_t seed = 1;
     bool sensitivity = false;
     std::size_t resamples = 1000;
-    std::string out_dir = "out/uq";
+    std::string out_dir;
     bool resume = false, retry_failed = false, json = false;
     double point_timeout = 60.0;
     int threads = 0;
@@ -246,7 +246,7 @@ CommandBody add_uq_command(CLI::App& app) {
     sub->add_option("--bootstrap", opt->resamples, "Bootstrap resamples of the intervals of std and Sobol indices")
         ->check(CLI::Range(std::size_t{100}, std::size_t{100000}))
         ->capture_default_str();
-    sub->add_option("--out,-o", opt->out_dir, "Folder for uq.json, samples.csv and the journal")->capture_default_str();
+    sub->add_option("--out,-o", opt->out_dir, "Folder for uq.json, samples.csv, uq.html and the journal (required)")->required();
     sub->add_flag("--resume", opt->resume, "Finish the study interrupted in --out DIR without redoing its runs");
     sub->add_flag("--retry-failed", opt->retry_failed, "With --resume: compute again the runs the journal holds as failed");
     sub->add_option("--point-timeout", opt->point_timeout, "Wall-clock limit of one run [s] (0: none)")

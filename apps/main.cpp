@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "model/input_error.hpp"
 #include "model/run_control.hpp"
+#include "spelling_hints.hpp"
 #include "stop_signals.hpp"
 
 namespace {
@@ -61,7 +62,7 @@ int main(int argc, char** argv) {
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "vibroimpact: error: %s (see --help)\n", e.what());
+        std::fprintf(stderr, "vibroimpact: error: %s%s (see --help)\n", e.what(), spelling_hint(app, argc, argv).c_str());
         return kExitBadInput;
     }
 

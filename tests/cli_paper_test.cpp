@@ -130,7 +130,10 @@ void CliPaper::check_report() {
     // Scripts only inline: each figure's chart data, the page script and the vendored uPlot.
     EXPECT_EQ(count(html, "<script src"), 0u);
     EXPECT_EQ(count(html, "<script type=\"application/json\" class=\"vi-chart-data\">"), 10u);
-    EXPECT_EQ(count(html, "<script"), 12u);
+    // The animated beam's data (the typical transient's field).
+    EXPECT_EQ(count(html, "<script type=\"application/json\" class=\"vi-animation-data\">"), 1u);
+    EXPECT_EQ(count(html, "<figure id=\"beam\" class=\"vi-animation\">"), 1u);
+    EXPECT_EQ(count(html, "<script"), 13u);
     EXPECT_EQ(count(html, "src=\"") , count(html, "src=\"data:"));
     const json c = claims();
     ASSERT_GE(c.size(), 15u);

@@ -110,6 +110,24 @@ TEST_F(CliPlot, SimulateFolderGivesTimeHistoriesForcesEnergyAndPhasePortrait) {
     EXPECT_NE(read_text(out + "/transient_displacement.gp").find("using ($1*1000000):($2*1000000)"), std::string::npos);
 }
 
+TEST_F(CliPlot, SimulateFiguresLeaveOutZeroTermsAndCarryTheCaseName) {
+    const std::string said = plot(root_ + "/sim");
+    const std::string out = root_ + "/sim/plots";
+    // No electrode and no load: the electrical energy and the external work are zero throughout.
+    const std::string energy = read_text(out + "/transient_energy.svg");
+    EXPECT_EQ(energy.find("electrical"), std::string::npos);
+    EXPECT_EQ(energy.find("external work"), std::string::npos);
+    EXPECT_NE(said.find("electrical_j (zero throughout)"), std::string::npos) << said;
+    EXPECT_NE(said.find("external_work_j (zero throughout)"), std::string::npos) << said;
+    EXPECT_NE(energy.find("Energy ledger - paper-free-impact-tip"), std::string::npos);
+    // The figures' data hold what 2400 px can show, not copies of the history.
+    std::uintmax_t copied = 0;
+    for (const auto& e : fs::directory_iterator(out)) {
+        if (e.path().extension() == ".csv") copied += fs::file_size(e.path());
+    }
+    EXPECT_LT(copied, fs::file_size(root_ + "/sim/history.csv"));
+}
+
 TEST_F(CliPlot, ModesFolderGivesShapesWithNodalPoints) {
     plot(root_ + "/modes");
     const std::string out = root_ + "/modes/plots";
@@ -124,9 +142,21 @@ TEST_F(CliPlot, ModesFolderGivesShapesWithNodalPoints) {
 TEST_F(CliPlot, OneAxisSweepGivesEachQuantityAgainstTheAxis) {
     const std::string said = plot(root_ + "/sweep1");
     const std::string out = root_ + "/sweep1/plots";
-    expect_figure(out, "sweep_T_s", {"supports[0].position  [x/l]", "T  [µs]"});
-    expect_figure(out, "sweep_impact1_peak_force_n", {"supports[0].position  [x/l]", "impact1 peak force  [µN]"});
+    // One figure per family: the times together (T, T1, T2 and the impacts' onsets in µs), the
+    // forces together, the dimensionless tau's together; a count alone.
+    expect_figure(out, "sweep_times", {"supports[0].position  [x/l]", "Times  [µs]", ">T<", ">T1<", "impact1 t on"});
+    expect_figure(out, "sweep_forces", {"supports[0].position  [x/l]", "impact1 peak force", "impact2 peak force"});
+    expect_figure(out, "sweep_tau", {">tau<", ">tau1<", ">tau2<"});
     EXPECT_TRUE(fs::exists(out + "/sweep_impacts.png"));
+    EXPECT_FALSE(fs::exists(out + "/sweep_T_s.png"));
+    // A column with one value throughout (every first impact hits support 0) is not drawn, and said.
+    EXPECT_FALSE(fs::exists(out + "/sweep_impact1_support.png"));
+    EXPECT_NE(said.find("impact1_support (constant: 0)"), std::string::npos) << said;
+    std::size_t figures = 0;
+    for (const auto& e : fs::directory_iterator(out)) figures += e.path().extension() == ".png";
+    EXPECT_LE(figures, 12u) << "families, not one figure per column";
+    // Every figure is titled with the case's name.
+    EXPECT_NE(read_text(out + "/sweep_times.svg").find("paper-free-impact-tip"), std::string::npos);
     // Text columns are not drawn, and the command says so.
     EXPECT_FALSE(fs::exists(out + "/sweep_status.png"));
     EXPECT_FALSE(fs::exists(out + "/sweep_Tp_reason.png"));

@@ -190,7 +190,8 @@ TEST(FitOptions, TheDataColumnIsTheCasesWatchedPoint) {
         EXPECT_NE(std::string(e.what()).find("midspan_m and midspan_velocity_m_s"), std::string::npos) << e.what();
     }
     const auto r = test::run_vibroimpact({"fit", test::source_path("examples/paper/free_impact_tip.toml"), "--data",
-                                          "no-such.csv", "--column", "midspan_m", "--fit", "supports[0].stiffness"});
+                                          "no-such.csv", "--column", "midspan_m", "--fit", "supports[0].stiffness",
+                                          "--out", test::make_temp_dir() + "/out"});
     EXPECT_EQ(r.exit_code, 2) << r.err;
     EXPECT_NE(r.err.find("--column midspan_m: this case's watched point is the free end (tip): its columns are tip_m"),
               std::string::npos) << r.err;

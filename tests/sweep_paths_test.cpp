@@ -139,8 +139,8 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
     // 47, the adhesion keys (3), the air keys (4), solver.settle_velocity and the waveform's shape
     // keys beyond t_on and frequency (rise, hold, fall, level, phase, bias); since every number of the
     // schema is a path, the electrode's dielectric_modulus, work_of_adhesion, adhesion_range and
-    // width, and the film's from, to and gap; the Hertz law's 11 numbers.
-    EXPECT_EQ(checked, 79);
+    // width, and the film's from, to and gap; the Hertz law's 11 numbers; solver.field_step.
+    EXPECT_EQ(checked, 80);
 }
 
 TEST(SweepCasePaths, ValuesLandWhereTheCaseFileWouldPutThem) {

@@ -46,7 +46,16 @@ struct TimeHistory {
     std::vector<std::vector<double>> contact_velocity;  // [m/s]
     std::vector<std::vector<double>> contact_force; // F (0 when open) [N]
     std::vector<EnergyLedger> energy;
+    // The whole beam at every TransientOptions::field_every-th sample and the last (empty without):
+    // the index of the sample in t, and the displacement of every bending DOF there [m, rad].
+    std::vector<std::size_t> field_sample;
+    std::vector<std::vector<double>> field_q;
 };
+
+// Whether the sample with this index is a frame of the field: every `every`-th and the last of `count`.
+inline bool is_field_sample(long index, long every, long count) {
+    return every > 0 && (index % every == 0 || index == count - 1);
+}
 
 // Where the solver's time went, for benchmarks [s of wall time] and counts.
 struct SolverStats {

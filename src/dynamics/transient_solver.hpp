@@ -32,6 +32,9 @@ struct TransientOptions {
     // The energy ledger at every sample (history.energy): O(n^2) per sample and per piece for the
     // exact solver, a pass over every element per sample for CVODE.
     bool energy = true;
+    // The whole beam's displacement (history.field) at every field_every-th sample of the history
+    // (samples 0, k, 2k, ... and the last); 0: none. Costs one solve of every DOF per frame.
+    long field_every = 0;
     long max_steps = 50000000;  // solver.max_steps: steps (CVODE) or search evaluations (exact)
     long max_events = 1000000;  // solver.max_events: contact switches and load breakpoints
 };

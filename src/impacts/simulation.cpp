@@ -1,6 +1,7 @@
 #include "impacts/simulation.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <memory>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 #include "dynamics/exact/exact_give_up.hpp"
 #include "dynamics/exact/exact_solver.hpp"
 #include "model/input_error.hpp"
+#include "model/number_format.hpp"
 #include "model/run_estimate.hpp"
 
 namespace vi {
@@ -127,6 +129,22 @@ CvodeOptions cvode_options(const SolverSettings& s) {
     return c;
 }
 
+long field_every(const SolverSettings& s, int dofs) {
+    const double out = s.output_step > 0.0 ? s.output_step : s.horizon / 2000.0;
+    const double step = s.field_step > 0.0 ? s.field_step : s.horizon / 200.0;
+    const double samples = std::floor(s.horizon / out * (1 + 1e-12)) + 1;
+    const double every = std::max(1.0, std::round(step / out));
+    const double frames = std::ceil(samples / every) + 1;
+    const double values = frames * dofs;
+    if (frames > static_cast<double>(kMaxFieldFrames) || values > kMaxFieldValues) {
+        throw InputError("solver.field_step: " + significant(frames, 3) + " frames of " + std::to_string(dofs) +
+                         " values each exceed the field's bounds (" + std::to_string(kMaxFieldFrames) + " frames, " +
+                         significant(kMaxFieldValues, 2) + " values, " + significant(kMaxFieldValues * 8 / 1e6, 2) +
+                         " MB); raise solver.field_step");
+    }
+    return static_cast<long>(every);
+}
+
 SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
     if (!(c.solver.horizon > 0.0)) throw InputError("solver.horizon: required for a transient (e.g. \"200 us\")");
     // What this machine or double precision cannot do is refused before any work.
@@ -134,7 +152,9 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
     if (!limits.empty()) throw InputError(limits.front().key + ": " + limits.front().message);
     SimulationRun run;
     run.built = build_transient_problem(c);
-    run.result = solve_transient(c, run.built.problem, transient_options(c.solver, o));
+    TransientOptions to = transient_options(c.solver, o);
+    to.field_every = o.field && o.history ? field_every(c.solver, run.built.problem.size()) : 0;
+    run.result = solve_transient(c, run.built.problem, to);
     const bool at_rest = released_at_rest(run.built);
     require_first_impact(c, run, at_rest);
     run.summary = summarize_impacts(run.result, impact_settings(c, run.built));

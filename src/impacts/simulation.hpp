@@ -25,7 +25,20 @@ struct SimulationRun {
 struct SimulationOptions {
     bool history = true;  // sampled time history
     bool energy = true;   // energy ledger at every sample (exact solver: O(n^2) per sample and per piece)
+    // The whole beam's deflection (history.field) at solver.field_step, or at horizon / 200 where the
+    // case gives none; only with the history. Off by default, so that sweeps and fits of a case with a
+    // field_step do not record one at every run.
+    bool field = false;
 };
+
+// Bounds of the field output: frames (one file each) and values held in memory (8 bytes each).
+inline constexpr long kMaxFieldFrames = 5000;
+inline constexpr double kMaxFieldValues = 4e6;
+
+// Every how many history samples a frame of the field is taken, from the case's field_step (or
+// horizon / 200 when none is given), rounded to whole output steps. Throws InputError naming
+// solver.field_step when the frames of `dofs` values break the bounds above.
+long field_every(const SolverSettings& s, int dofs);
 
 // The options of a transient run from the case's [solver] table: the common ones, and CVODE's.
 TransientOptions transient_options(const SolverSettings& s, const SimulationOptions& o = {});

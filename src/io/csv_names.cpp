@@ -47,7 +47,7 @@ const std::vector<std::string_view>& dimensionless() {
         // indices, counts and flags
         "index", "mode", "mode_#", "episode", "impact", "support", "j", "impacts", "episodes", "bounces", "maxima",
         "elements", "events", "steps", "iterations", "modes", "modes[#]", "contact", "stable", "closed_at_end",
-        "at_support", "feasible", "stuck", "samples",
+        "at_support", "feasible", "stuck", "samples", "frame",
         // a spread study's figure data: an input's path, its Sobol indices and their intervals' ends
         "input", "sobol_first", "sobol_total", "sobol_first_low", "sobol_first_high", "sobol_total_low",
         "sobol_total_high",

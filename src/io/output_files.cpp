@@ -6,6 +6,15 @@
 #include <vector>
 
 namespace vi {
+namespace {
+
+// A file's temporary name beside it: a name with folders ("field/beam_00000.vtu") keeps them.
+std::filesystem::path partial_path(const std::string& dir, const std::string& name) {
+    const std::filesystem::path p = std::filesystem::path(dir) / name;
+    return p.parent_path() / ("." + p.filename().string() + ".partial");
+}
+
+}  // namespace
 
 void write_output_files(const std::string& dir, const OutputFiles& files) {
     namespace fs = std::filesystem;
@@ -15,13 +24,23 @@ void write_output_files(const std::string& dir, const OutputFiles& files) {
     if (ec) throw std::runtime_error(dir + ": cannot create folder: " + ec.message());
 
     std::vector<fs::path> temps;
+    std::vector<fs::path> made;  // sub-folders this call created, deepest last
     auto cleanup = [&]() {
         std::error_code ignore;
         for (const auto& t : temps) fs::remove(t, ignore);
+        for (auto m = made.rbegin(); m != made.rend(); ++m) fs::remove(*m, ignore);
         if (!existed) fs::remove(dir, ignore);
     };
     for (const auto& [name, text] : files) {
-        const fs::path tmp = fs::path(dir) / ("." + name + ".partial");
+        const fs::path tmp = partial_path(dir, name);
+        if (!fs::exists(tmp.parent_path(), ec)) {
+            fs::create_directories(tmp.parent_path(), ec);
+            if (ec) {
+                cleanup();
+                throw std::runtime_error(tmp.parent_path().string() + ": cannot create folder: " + ec.message());
+            }
+            made.push_back(tmp.parent_path());
+        }
         temps.push_back(tmp);
         std::ofstream out(tmp, std::ios::binary);
         out << text;
@@ -32,7 +51,7 @@ void write_output_files(const std::string& dir, const OutputFiles& files) {
         }
     }
     for (const auto& [name, text] : files) {
-        fs::rename(fs::path(dir) / ("." + name + ".partial"), fs::path(dir) / name, ec);
+        fs::rename(partial_path(dir, name), fs::path(dir) / name, ec);
         if (ec) {
             cleanup();
             throw std::runtime_error((fs::path(dir) / name).string() + ": cannot write file: " + ec.message());

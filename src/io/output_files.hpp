@@ -6,7 +6,7 @@
 
 namespace vi {
 
-// File name (inside the folder) -> full contents.
+// File name (inside the folder; "sub/name" puts it in a sub-folder) -> full contents.
 using OutputFiles = std::map<std::string, std::string>;
 
 // Creates dir if needed and writes every file through a temporary name and a rename, so a reader

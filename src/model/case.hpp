@@ -195,6 +195,7 @@ struct SolverSettings {
     Method method = Method::automatic;
     double horizon = 0.0;            // t_end [s]; 0 = not given (required by `simulate`)
     double output_step = 0.0;        // time-history sampling [s]; 0 = horizon / 2000
+    double field_step = 0.0;         // sampling of the whole beam's deflection [s]; 0 = none
     double group_gap = 0.0;          // flights shorter than this join episodes into one impact [s];
                                      // 0 = a quarter of the first unsupported period
     double settle_tolerance = 0.01;  // impacts below this fraction of the first peak penetration end T_p

@@ -118,6 +118,13 @@ SectionSpec solver_section() {
     step.default_text = "`horizon` / 2000";
     bind_member(step, &Settings::output_step);
     step.is_set = [](const Case& c, std::size_t) { return c.solver.output_step != 0.0; };
+    KeySpec& field = s.add_key(number_key("field_step", Dimension::time)).in(positive());
+    field.means("sampling step of the field output (the whole deflected beam, `simulate --out`: field.pvd and "
+                "field/*.vtu for ParaView, field.csv), rounded to a whole number of `output_step`s; at most 5000 "
+                "frames and 4e6 values ([Limits](#limits))");
+    field.default_text = "no field (`simulate --field`: `horizon` / 200)";
+    bind_member(field, &Settings::field_step);
+    field.is_set = [](const Case& c, std::size_t) { return c.solver.field_step != 0.0; };
     add_impact_rules(s);
     // The floor: below 1e-12 CVODE's error test is asked to resolve the roundoff of the right-hand
     // side (sums over a hundred modal terms, about 1e-14), while the answers no longer move: the switch

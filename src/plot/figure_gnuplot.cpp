@@ -173,8 +173,15 @@ std::string gnuplot_script(const FigureSpec& f) {
     s << "# " << f.title << "\n# Drawn by vibroimpact from ";
     for (std::size_t i = 0; i < f.data.size(); ++i) s << (i ? ", " : "") << f.data[i].first;
     s << "; rerun in this folder with: gnuplot " << f.name << ".gp\n"
-      << "reset\nset encoding utf8\nset datafile separator comma\n"
-      << "# The pngcairo terminal: anti-aliased PNG, DejaVu Sans (fonts-dejavu-core).\n"
+      << "reset\nset encoding utf8\nset datafile separator comma\n";
+    if (f.animation_delay > 0) {
+        // libgd's gif terminal (in gnuplot-nox): one image per plot command, looped.
+        s << "set terminal gif animate delay " << f.animation_delay << " loop 0 optimize size " << f.width << ","
+          << f.height << term.str() << "\nset output " << gp_quote(f.name + ".gif") << "\n"
+          << f.plot << "\nunset output\nreset\n";
+        return s.str();
+    }
+    s << "# The pngcairo terminal: anti-aliased PNG, DejaVu Sans (fonts-dejavu-core).\n"
       << "set terminal pngcairo size " << f.width << "," << f.height << term.str() << " enhanced\n"
       << "set output " << gp_quote(f.name + ".png") << "\n"
       << f.plot << "\nunset output\nreset\nset datafile separator comma\n"
@@ -211,6 +218,10 @@ std::vector<RenderedFigure> render_figures(const std::string& gnuplot, const std
             if (log.find("warning") != std::string::npos) throw std::runtime_error("gnuplot: " + first_line(log));
         });
         for (std::size_t i = 0; i < figures.size(); ++i) {
+            if (figures[i].animation_delay > 0) {
+                out[i].png = read_image(dir / (figures[i].name + ".gif"), figures[i].name + ".gp");
+                continue;
+            }
             out[i].png = read_image(dir / (figures[i].name + ".png"), figures[i].name + ".gp");
             out[i].svg = read_image(dir / (figures[i].name + ".svg"), figures[i].name + ".gp");
         }
@@ -229,8 +240,12 @@ std::map<std::string, std::string> figure_files(const std::vector<FigureSpec>& f
                                                 std::map<std::string, std::string>* png) {
     std::map<std::string, std::string> files;
     for (std::size_t i = 0; i < figures.size() && i < rendered.size(); ++i) {
-        files[figures[i].name + ".png"] = rendered[i].png;
-        files[figures[i].name + ".svg"] = rendered[i].svg;
+        if (figures[i].animation_delay > 0) {
+            files[figures[i].name + ".gif"] = rendered[i].png;
+        } else {
+            files[figures[i].name + ".png"] = rendered[i].png;
+            files[figures[i].name + ".svg"] = rendered[i].svg;
+        }
         files[figures[i].name + ".gp"] = rendered[i].script;
         for (const auto& [name, text] : figures[i].data) files[name] = text;
         if (png) (*png)[figures[i].name] = rendered[i].png;

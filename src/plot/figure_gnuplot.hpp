@@ -24,12 +24,15 @@ struct FigureSpec {
     int height = 620;     // [px]
     double scale = 1.0;   // font size (11 pt) and line widths times this: 2.4 keeps a 2400 px figure readable in print
     std::vector<ChartPanel> charts;  // the interactive form in report.html; empty: the PNG only
+    // > 0: an animation, NAME.gif (gnuplot's gif terminal, animate), each frame shown this long
+    // [1/100 s]; its plot commands draw one frame per plot. No PNG or SVG then.
+    int animation_delay = 0;
 };
 
 // What rendering produced for one figure.
 struct RenderedFigure {
-    std::string png;      // bytes
-    std::string svg;      // text
+    std::string png;      // bytes (an animation: the GIF's)
+    std::string svg;      // text (empty for an animation)
     std::string script;   // the stand-alone .gp file (draws both from the CSVs beside it)
 };
 
@@ -37,7 +40,8 @@ struct RenderedFigure {
 // "gnuplot" on PATH; nullopt when it cannot be found or run.
 std::optional<std::string> find_gnuplot(const std::string& requested = "gnuplot");
 
-// The stand-alone gnuplot script of a figure: PNG (pngcairo, DejaVu Sans 11 × scale) then SVG.
+// The stand-alone gnuplot script of a figure: PNG (pngcairo, DejaVu Sans 11 × scale) then SVG; an
+// animation's: the animated GIF.
 std::string gnuplot_script(const FigureSpec& f);
 
 // Renders every figure with `gnuplot` in a temporary folder that is removed afterwards: one gnuplot
@@ -47,8 +51,8 @@ std::string gnuplot_script(const FigureSpec& f);
 // processes and throws StopRequested.
 std::vector<RenderedFigure> render_figures(const std::string& gnuplot, const std::vector<FigureSpec>& figures, int threads);
 
-// The files of rendered figures, name -> contents: per figure <name>.png, .svg, .gp and its data
-// files; and in `png` (if given) each figure's PNG by name, for a page to embed. `rendered` is in
+// The files of rendered figures, name -> contents: per figure <name>.png, .svg (an animation: .gif),
+// .gp and its data files; and in `png` (if given) each figure's PNG by name, for a page to embed. `rendered` is in
 // the order of `figures`.
 std::map<std::string, std::string> figure_files(const std::vector<FigureSpec>& figures,
                                                 const std::vector<RenderedFigure>& rendered,

@@ -2,7 +2,9 @@
 // it (plot/chart_json.hpp), and records what happened on the page for the browser test
 // (tests/browser/check_report.sh): each figure element gets data-drawn="1" once every panel of it has
 // been drawn, the body element gets data-vi-figures / data-vi-drawn (counts) and data-vi-errors
-// (errors and console.error calls; their text in the element #vi-errors). Runs before uPlot's own
+// (errors and console.error calls; their text in the element #vi-errors). An animated beam (a figure
+// of class vi-animation, plot/beam_animation.hpp) is drawn as SVG and played frame by frame; it gets
+// data-drawn once its first frame is drawn and data-frames-shown counts the frames shown since. Runs before uPlot's own
 // script, so that an error there is recorded too; draws on DOMContentLoaded. Writes nothing to the
 // console itself but what it forwards from console.error.
 (function () {
@@ -254,6 +256,97 @@
     box.appendChild(toggle);
   }
 
+  // An SI prefix for values up to `largest` in magnitude, so that they read from 1 up: [factor, prefix].
+  function prefix(largest) {
+    var steps = [[1, ''], [1e3, 'm'], [1e6, '\u00b5'], [1e9, 'n'], [1e12, 'p']];
+    for (var i = 0; i < steps.length; i++) {
+      if (largest * steps[i][0] >= 1) return steps[i];
+    }
+    return steps[steps.length - 1];
+  }
+
+  var svgNs = 'http://www.w3.org/2000/svg';
+  function svgElement(name, attrs, parent) {
+    var e = document.createElementNS(svgNs, name);
+    Object.keys(attrs).forEach(function (k) { e.setAttribute(k, String(attrs[k])); });
+    if (parent) parent.appendChild(e);
+    return e;
+  }
+
+  // The deflected beam of every frame in turn (about 12 frames a second), with play/pause and a slider.
+  function drawAnimation(fig) {
+    var d = JSON.parse(fig.querySelector('script.vi-animation-data').textContent);
+    var box = fig.querySelector('div.vi-beam');
+    var nodes = d.x.length, frames = d.v.length;
+    if (nodes < 2 || frames < 1) throw new Error('an animation without nodes or frames');
+    var vmax = 0, xmax = 0, tmax = 0;
+    d.v.forEach(function (row) { row.forEach(function (v) { vmax = Math.max(vmax, Math.abs(v)); }); });
+    d.surfaces.forEach(function (s) { vmax = Math.max(vmax, Math.abs(s[1])); });
+    d.x.forEach(function (x) { xmax = Math.max(xmax, Math.abs(x)); });
+    d.t.forEach(function (t) { tmax = Math.max(tmax, Math.abs(t)); });
+    if (vmax === 0) vmax = 1;
+    var xp = prefix(xmax), vp = prefix(vmax), tp = prefix(tmax);
+    var W = 900, H = 360, left = 80, right = 20, top = 20, bottom = 50;
+    var x0 = d.x[0], x1 = d.x[nodes - 1];
+    function px(x) { return left + (x - x0) / ((x1 - x0) || 1) * (W - left - right); }
+    function py(v) { return top + (1 - (v + 1.1 * vmax) / (2.2 * vmax)) * (H - top - bottom); }
+    var svg = svgElement('svg', { viewBox: '0 0 ' + W + ' ' + H, role: 'img' }, box);
+    svgElement('rect', { x: left, y: top, width: W - left - right, height: H - top - bottom, fill: 'none', stroke: '#999' }, svg);
+    svgElement('line', { x1: left, x2: W - right, y1: py(0), y2: py(0), stroke: '#bbb', 'stroke-dasharray': '4 4' }, svg);
+    d.surfaces.forEach(function (s) {
+      svgElement('line', { x1: px(s[0]) - 12, x2: px(s[0]) + 12, y1: py(s[1]), y2: py(s[1]), stroke: '#555', 'stroke-width': 3 }, svg);
+    });
+    [-vmax, 0, vmax].forEach(function (v) {
+      var label = svgElement('text', { x: left - 6, y: py(v) + 4, 'text-anchor': 'end', 'font-size': 12 }, svg);
+      label.textContent = fmt(v * vp[0]);
+    });
+    [x0, x1].forEach(function (x) {
+      var label = svgElement('text', { x: px(x), y: H - bottom + 16, 'text-anchor': 'middle', 'font-size': 12 }, svg);
+      label.textContent = fmt(x * xp[0]);
+    });
+    svgElement('text', { x: (left + W - right) / 2, y: H - 12, 'text-anchor': 'middle', 'font-size': 13 }, svg).textContent =
+      'x along the beam [' + xp[1] + 'm]';
+    svgElement('text', { x: 16, y: (top + H - bottom) / 2, 'text-anchor': 'middle', 'font-size': 13,
+                         transform: 'rotate(-90 16 ' + (top + H - bottom) / 2 + ')' }, svg).textContent = 'deflection [' + vp[1] + 'm]';
+    var line = svgElement('polyline', { fill: 'none', stroke: '#1f77b4', 'stroke-width': 3 }, svg);
+    var clock = svgElement('text', { x: W - right - 6, y: top + 18, 'text-anchor': 'end', 'font-size': 14 }, svg);
+    var controls = document.createElement('div');
+    controls.className = 'vi-controls';
+    var button = document.createElement('button');
+    button.type = 'button';
+    button.textContent = 'pause';
+    var slider = document.createElement('input');
+    slider.type = 'range';
+    slider.min = '0';
+    slider.max = String(frames - 1);
+    slider.value = '0';
+    controls.appendChild(button);
+    controls.appendChild(slider);
+    box.appendChild(controls);
+    var shown = {}, count = 0, frame = 0, timer = null;
+    function show(k) {
+      frame = k;
+      var row = d.v[k], points = [];
+      for (var i = 0; i < nodes; i++) points.push(px(d.x[i]).toFixed(1) + ',' + py(row[i]).toFixed(1));
+      line.setAttribute('points', points.join(' '));
+      clock.textContent = 't = ' + fmt(d.t[k] * tp[0]) + ' ' + tp[1] + 's';
+      slider.value = String(k);
+      if (!shown[k]) { shown[k] = true; count++; }
+      fig.setAttribute('data-frames-shown', String(count));
+    }
+    function play() { timer = setInterval(function () { show((frame + 1) % frames); }, 80); button.textContent = 'pause'; }
+    function pause() { clearInterval(timer); timer = null; button.textContent = 'play'; }
+    button.addEventListener('click', function () { if (timer) pause(); else play(); });
+    slider.addEventListener('input', function () { pause(); show(Number(slider.value)); });
+    show(0);
+    fig.setAttribute('data-drawn', '1');
+    fig.setAttribute('data-points', String(nodes * frames));
+    fig.setAttribute('data-frames', String(frames));
+    fig.classList.add('vi-drawn');
+    document.body.setAttribute('data-vi-drawn', String(document.querySelectorAll('figure[data-drawn="1"]').length));
+    if (frames > 1) play();
+  }
+
   function start() {
     var body = document.body;
     var figures = document.querySelectorAll('figure');
@@ -263,6 +356,14 @@
     if (typeof uPlot === 'undefined') { note('uPlot did not load'); return; }
     var plots = [];
     Array.prototype.forEach.call(figures, function (fig) {
+      if (fig.querySelector('script.vi-animation-data')) {
+        try {
+          drawAnimation(fig);
+        } catch (e) {
+          note('animation ' + fig.id + ': ' + e);
+        }
+        return;
+      }
       if (!fig.querySelector('script.vi-chart-data')) return;   // a figure without charts: its PNG alone
       try {
         drawFigure(fig, plots);

@@ -1,5 +1,6 @@
 #include "plot/report_document.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -92,6 +93,9 @@ constexpr const char* kChartStyle = R"css(
 .vi-toggle { font-size: 0.8em; margin: 0.2em 0 0.6em 0; }
 figure.vi-drawn:not(.vi-show-png) img.vi-png { display: none; }
 #vi-errors { display: none; }
+.vi-beam svg { width: 100%; height: auto; background: #fff; }
+.vi-beam .vi-controls { font-size: 0.85em; margin: 0.3em 0; }
+.vi-beam input[type=range] { width: 60%; vertical-align: middle; }
 @media print { .vi-chart { display: none; } figure img.vi-png { display: block !important; } }
 )css";
 
@@ -139,9 +143,23 @@ void ReportDocument::figure(std::string stem, std::string title, std::string cap
     blocks.push_back(std::move(b));
 }
 
+void ReportDocument::animation(std::string id, std::string title, std::string caption, std::string data,
+                               std::vector<std::string> files) {
+    ReportBlock b;
+    b.kind = ReportBlock::Kind::animation;
+    b.id = std::move(id);
+    b.text = std::move(title);
+    b.caption = std::move(caption);
+    b.data = std::move(data);
+    b.items = std::move(files);
+    blocks.push_back(std::move(b));
+}
+
 std::string render_html(const ReportDocument& doc, const std::map<std::string, std::string>& png,
                         const std::map<std::string, std::string>& charts) {
-    const bool interactive = !charts.empty();
+    const bool interactive = !charts.empty() || std::any_of(doc.blocks.begin(), doc.blocks.end(), [](const ReportBlock& b) {
+        return b.kind == ReportBlock::Kind::animation;
+    });
     std::ostringstream s;
     s << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
       << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" << escape_html(doc.title)
@@ -191,6 +209,14 @@ std::string render_html(const ReportDocument& doc, const std::map<std::string, s
                 s << "</p>\n</figure>\n";
                 break;
             }
+            case ReportBlock::Kind::animation:
+                if (b.data.find('<') != std::string::npos) throw std::invalid_argument("report: animation data holds '<'");
+                s << "<figure" << id << " class=\"vi-animation\">\n<h3>" << inline_html(b.text) << "</h3>\n"
+                  << "<div class=\"vi-beam\"></div>\n<script type=\"application/json\" class=\"vi-animation-data\">" << b.data
+                  << "</script>\n<figcaption>" << inline_html(b.caption) << "</figcaption>\n<p class=\"files\">Files beside this report:";
+                for (const std::string& f : b.items) s << " <a href=\"" << escape_html(f) << "\">" << escape_html(f) << "</a>";
+                s << "</p>\n</figure>\n";
+                break;
         }
     }
     if (interactive) {
@@ -230,6 +256,11 @@ std::string render_markdown(const ReportDocument& doc) {
                 break;
             case ReportBlock::Kind::figure:
                 s << "### " << b.text << "\n\n![" << b.text << "](" << b.figure << ".png)\n\n" << b.caption << "\n\nFiles:";
+                for (const std::string& f : b.items) s << " [" << f << "](" << f << ")";
+                s << "\n\n";
+                break;
+            case ReportBlock::Kind::animation:
+                s << "### " << b.text << "\n\nAn animation: open report.html. " << b.caption << "\n\nFiles:";
                 for (const std::string& f : b.items) s << " [" << f << "](" << f << ")";
                 s << "\n\n";
                 break;

@@ -10,7 +10,7 @@ namespace vi {
 
 // One block of a report. Text is plain; `code` in backquotes is set in a fixed font.
 struct ReportBlock {
-    enum class Kind { heading, paragraph, list, table, figure };
+    enum class Kind { heading, paragraph, list, table, figure, animation };
     Kind kind = Kind::paragraph;
     int level = 2;                           // heading level (1 = title)
     std::string text;                        // heading or paragraph text; a figure's title
@@ -21,6 +21,7 @@ struct ReportBlock {
     std::string caption;                     // figure caption
     std::string id;                          // anchor (headings, figures); may be empty
     int verdict_column = -1;                 // table: the column whose cells are verdicts (coloured)
+    std::string data;                        // animation: its JSON (plot/beam_animation.hpp)
 };
 
 struct ReportDocument {
@@ -31,13 +32,16 @@ struct ReportDocument {
     void list(std::vector<std::string> items);
     void table(std::vector<std::string> header, std::vector<std::vector<std::string>> rows, int verdict_column = -1);
     void figure(std::string stem, std::string title, std::string caption, std::vector<std::string> files);
+    // An animated beam drawn by the page script from `data` (plot/beam_animation.hpp), no image.
+    void animation(std::string id, std::string title, std::string caption, std::string data, std::vector<std::string> files);
 };
 
 // The whole page: inline CSS, figures as PNG data URIs from `png` (file stem -> bytes); a figure
 // without its PNG is an error (std::invalid_argument). Opens offline in any browser. A figure with an
 // entry in `charts` (file stem -> chart_json text, plot/chart_json.hpp) is also drawn interactively by
 // the inlined uPlot and page script (plot/report_assets.hpp), its PNG then shown on request and in
-// print; without `charts` the page has no script.
+// print; without `charts` or an animation the page has no script. An animation block is a <figure>
+// of class vi-animation that the page script plays (Markdown: a paragraph pointing to report.html).
 std::string render_html(const ReportDocument& doc, const std::map<std::string, std::string>& png,
                         const std::map<std::string, std::string>& charts = {});
 

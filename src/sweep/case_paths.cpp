@@ -8,6 +8,7 @@
 #include "io/csv_names.hpp"
 #include "io/range_spec.hpp"
 #include "io/spelling.hpp"
+#include "model/case_checks.hpp"
 #include "model/case_schema.hpp"
 #include "model/input_error.hpp"
 
@@ -222,6 +223,23 @@ void set_case_text(Case& c, std::string_view path, std::string_view value) {
         throw InputError(p.text() + ": " + e.what());
     }
     set_case_value(c, p, v);
+}
+
+void apply_case_settings(Case& c, std::string_view option, const std::vector<std::string>& settings) {
+    for (const std::string& setting : settings) {
+        const std::size_t eq = setting.find('=');
+        const std::string where = std::string(option) + " " + setting + ": ";
+        if (eq == std::string::npos) throw InputError(where + "needs PATH=VALUE, e.g. supports[0].gap=0.5um");
+        try {
+            set_case_text(c, std::string_view(setting).substr(0, eq), std::string_view(setting).substr(eq + 1));
+        } catch (const InputError& e) {
+            throw InputError(where + e.what());
+        }
+    }
+    const std::vector<CaseProblem> problems = check_case(c);
+    if (!problems.empty()) {
+        throw InputError(std::string(option) + ": " + problems.front().key + ": " + problems.front().message);
+    }
 }
 
 std::vector<std::string> case_path_forms() {

@@ -64,6 +64,12 @@ void set_case_value(Case& c, const CasePath& p, double value);
 // set_case_value does; every other check is check_case's.
 void set_case_text(Case& c, std::string_view path, std::string_view value);
 
+// Applies settings "PATH=VALUE" of a command-line option (`simulate --set`) in order, each value as
+// set_case_text reads it, then checks the case as a whole. Throws InputError naming the option and
+// the setting ("--set supports[0].gap=-1: ...") for a bad path, value or missing '=', and naming the
+// option and the key for a problem check_case finds.
+void apply_case_settings(Case& c, std::string_view option, const std::vector<std::string>& settings);
+
 // Every accepted path, with i and k for the indices ("supports[i].position", ...), for help texts.
 std::vector<std::string> case_path_forms();
 // Each of those forms with its SI unit as case_path_unit gives it ("supports[i].gap", "m").

@@ -4,9 +4,10 @@
 # small Sobol study of the switch's pull-in), loads each in headless Chromium
 # and fails unless every <figure> reports its charts drawn (data-drawn="1", set by the page script
 # src/plot/report_charts.js from uPlot's draw hook, with points in it) and the page recorded no error
-# or console.error, and Chromium logged no console message. Then checks that it can fail: three broken
-# copies of the paper page (a chart whose drawing throws, a console.error, a figure without its chart)
-# must each be rejected.
+# or console.error, and Chromium logged no console message; the paper and switch pages' animated beam
+# must have played (more than one frame shown). Then checks that it can fail: five broken copies of
+# the paper page (a chart whose drawing throws, a console.error, a figure without its chart, an
+# animation that stays on its first frame, an animation whose data does not parse) must each be rejected.
 #
 #   tests/browser/check_report.sh VIBROIMPACT SOURCE_DIR
 #
@@ -85,29 +86,53 @@ check_page() {
   return $problems
 }
 
+# 0 when the last page loaded (check_page) has an animated beam that played: a <figure> of class
+# vi-animation with several frames (data-frames) of which more than one was shown (data-frames-shown).
+check_animation() {
+  local name=$1 tag frames shown
+  tag=$(grep -o '<figure[^>]*vi-animation[^>]*>' "$tmp/dom.html" | head -n 1 || true)
+  if [ -z "$tag" ]; then
+    echo "$name: no animated beam (figure.vi-animation) on the page" >&2
+    return 1
+  fi
+  frames=$(echo "$tag" | grep -o 'data-frames="[0-9]*"' | grep -o '[0-9]*' || true)
+  shown=$(echo "$tag" | grep -o 'data-frames-shown="[0-9]*"' | grep -o '[0-9]*' || true)
+  echo "$name: animated beam with ${frames:-?} frames, ${shown:-0} shown"
+  if [ -z "$frames" ] || [ "$frames" -lt 2 ] || [ -z "$shown" ] || [ "$shown" -lt 2 ]; then
+    echo "$name: the animated beam did not play (frames=${frames:-none}, shown=${shown:-none})" >&2
+    return 1
+  fi
+}
+
 status=0
 "$exe" paper --out "$tmp/paper" --positions 8 --modal-positions 20 --prestress-points 6 --scan-horizon "150 us" --quiet >/dev/null
 check_page "$tmp/paper/report.html" "paper report.html" || status=1
+check_animation "paper report.html" || status=1
 "$exe" switch-report "$src/examples/switch/cantilever_switch.toml" --out "$tmp/switch" >/dev/null
 check_page "$tmp/switch/report.html" "switch-report report.html" || status=1
+check_animation "switch-report report.html" || status=1
 # uq.html: histograms (bars from bin to bin) and Sobol bar charts with their interval bars.
 "$exe" uq "$src/examples/switch/cantilever_switch.toml" --analysis pullin --vary 'beam.thickness=normal:2um:0.05um' \
   --vary 'electrodes[0].gap=normal:2um:0.05um' --spec 'pullin_voltage_v<=60' --sensitivity --samples 32 \
   --method sobol --bootstrap 200 --threads 1 --progress none --out "$tmp/uq" >/dev/null
 check_page "$tmp/uq/uq.html" "uq uq.html" || status=1
 
-# The check must be able to fail: a chart whose drawing throws, a console.error, and a figure left
-# without its chart must each be rejected.
+# The check must be able to fail: a chart whose drawing throws, a console.error, a figure left
+# without its chart, an animation that does not play and one whose data is broken must each be rejected.
 sed 's/new uPlot(opts, data, box)/new uPlot(opts, data, box).no.such/' \
   "$tmp/paper/report.html" >"$tmp/paper/broken_draw.html"
 sed 's#<pre id="vi-errors"></pre>#<pre id="vi-errors"></pre><script>document.addEventListener("DOMContentLoaded", function () { console.error("deliberate"); });</script>#' \
   "$tmp/paper/report.html" >"$tmp/paper/broken_console.html"
 sed '0,/class="vi-chart-data"/s//class="vi-chart-none"/' "$tmp/paper/report.html" >"$tmp/paper/broken_missing.html"
-for broken in broken_draw broken_console broken_missing; do
+# An animated beam that never moves past its first frame, and one whose data does not parse.
+sed 's/timer = setInterval(/timer = (function () { return 0; })(/' "$tmp/paper/report.html" >"$tmp/paper/broken_still.html"
+sed 's/class="vi-animation-data">{/class="vi-animation-data">{{/' "$tmp/paper/report.html" >"$tmp/paper/broken_animation.html"
+for broken in broken_draw broken_console broken_missing broken_still broken_animation; do
   if cmp -s "$tmp/paper/report.html" "$tmp/paper/$broken.html"; then
     echo "$broken: could not break the page (its script changed?); update tests/browser/check_report.sh" >&2
     status=1
-  elif check_page "$tmp/paper/$broken.html" "$broken.html (must be rejected)" 2>"$tmp/why.txt"; then
+  elif check_page "$tmp/paper/$broken.html" "$broken.html (must be rejected)" 2>"$tmp/why.txt" &&
+       check_animation "$broken.html (must be rejected)" 2>>"$tmp/why.txt"; then
     echo "$broken.html: a broken page passed the check" >&2
     status=1
   else

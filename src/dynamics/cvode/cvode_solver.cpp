@@ -247,6 +247,12 @@ void Driver::sample_until(double t_lim, bool interpolate) {
 
 void Driver::record(double t, const double* y) {
     TimeHistory& h = r_.history;
+    const long index = static_cast<long>(h.t.size());
+    if (is_field_sample(index, o_.field_every, static_cast<long>(samples_))) {
+        const Eigen::VectorXd q = sys_.basis().phi * Eigen::Map<const Eigen::VectorXd>(y, sys_.basis().phi.cols());
+        h.field_sample.push_back(static_cast<std::size_t>(index));
+        h.field_q.emplace_back(q.data(), q.data() + q.size());
+    }
     h.t.push_back(t);
     h.watched_v.push_back(sys_.watched(y));
     h.watched_velocity.push_back(sys_.watched_velocity(y));

@@ -170,6 +170,8 @@ private:
     void locate_events(const PieceSolution& s, double span, const std::vector<double>& from);
     void resolve_repeated_switch(const PieceSolution& s, double span, std::vector<double>& from);
     void sample_piece(const PieceSolution& s);
+    // The whole beam at the sample next_sample_ (tau into the piece) when it is a frame of the field.
+    void record_field(const PieceSolution& s, double tau);
     void grow_episodes(const PieceSolution& s);
     void count_zero_length_piece();
     void switch_contact(const PieceSolution& s);
@@ -294,6 +296,7 @@ void ExactRun::finish_at_rest(const PieceSolution& s, double span) {
     while (next_sample_ < n_samples_) {
         const double ts = std::min(next_sample_ * dt_out_, p_.t_end);
         s.sample(ts - t_, ts, active_, res_.history, o_.energy, ledger_);
+        record_field(s, ts - t_);
         if ((++next_sample_ & 1023) == 0) check_run();
     }
     if (o_.energy) s.accumulate_dissipation(span, ledger_);
@@ -339,12 +342,21 @@ void ExactRun::resolve_repeated_switch(const PieceSolution& s, double span, std:
     locate_events(s, span, from);
 }
 
+void ExactRun::record_field(const PieceSolution& s, double tau) {
+    if (!is_field_sample(next_sample_, o_.field_every, n_samples_)) return;
+    const BaseModes& b = model_.base();
+    const Eigen::VectorXd q = b.phi * s.state_at(tau).head(b.n);
+    res_.history.field_sample.push_back(static_cast<std::size_t>(next_sample_));
+    res_.history.field_q.emplace_back(q.data(), q.data() + q.size());
+}
+
 // The samples up to the piece's end (the one at its end belongs to the next piece, but the last).
 void ExactRun::sample_piece(const PieceSolution& s) {
     while (next_sample_ < n_samples_) {
         const double ts = std::min(next_sample_ * dt_out_, p_.t_end);
         if (ts > t_ + tau_e_ || (ts == t_ + tau_e_ && t_ + tau_e_ < p_.t_end)) break;
         s.sample(ts - t_, ts, active_, res_.history, o_.energy, ledger_);
+        record_field(s, ts - t_);
         // A long flight sampled finely is one piece of many samples: watch the stop flag there too.
         if ((++next_sample_ & 1023) == 0) check_run();
     }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "plot/beam_animation.hpp"
 #include "plot/chart_json.hpp"
 #include "study/paper/study.hpp"
 #include "study/paper/figures.hpp"
@@ -135,6 +136,15 @@ ReportDocument paper_report(const PaperStudy& st, const std::vector<Claim>& clai
     summary(d, claims);
     claims_table(d, claims);
     figures(d, figs);
+    if (!st.typical.field.frames.empty()) {
+        const TypicalTransient& t = st.typical;
+        d.animation("beam", "The beam bouncing (Fig. 3's transient)",
+                    "The deflection along the beam over the typical transient of Fig. 3, " + std::to_string(t.field.frames.size()) +
+                        " frames from t = 0 to " + significant(t.field.frames.back().t * 1e6, 4) + " us (at most " +
+                        std::to_string(kMaxPageFrames) + " shown); the dash: the support's surface. `vibroimpact simulate " +
+                        kFreeImpactFile + " --field --out DIR` writes the same field for ParaView (field.pvd).",
+                    beam_animation_json(t.field, t.surfaces), {});
+    }
     what_was_run(d, st, run);
     d.heading(2, "Parameters the paper does not give", "parameters");
     d.paragraph("The paper gives the beam, the material, the mesh and the support positions. It fitted its contact stiffness and "

@@ -88,6 +88,7 @@ TypicalTransient run_typical_transient(const Case& c) {
     SimulationOptions o;
     o.history = true;
     o.energy = false;
+    o.field = true;
     // At most 6000 samples: sampling costs as much as the run itself, and a figure needs no more.
     Case k = c;
     k.solver.output_step = std::max(c.solver.output_step, c.solver.horizon / 6000.0);
@@ -103,6 +104,8 @@ TypicalTransient run_typical_transient(const Case& c) {
     t.rayleigh_alpha = run.built.model.rayleigh.alpha;
     t.rayleigh_beta = run.built.model.rayleigh.beta;
     t.output_step = run.built.problem.output_step;
+    t.field = beam_field(run.built.model.system, run.result.history);
+    for (const Support& p : c.supports) t.surfaces.emplace_back(p.position * c.beam.length, p.surface);
     return t;
 }
 

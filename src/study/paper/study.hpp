@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "impacts/impact_summary.hpp"
+#include "report/field_output.hpp"
 #include "study/paper/cases.hpp"
 #include "modal/modal_analysis.hpp"
 #include "modal/shape_sampling.hpp"
@@ -98,6 +99,8 @@ struct TypicalTransient {
     double rayleigh_alpha = 0.0;        // [1/s]
     double rayleigh_beta = 0.0;         // [s]
     double output_step = 0.0;           // sampling step of t, tip [s]
+    BeamField field;                    // the whole beam at horizon / 200 (the report's animated beam)
+    std::vector<std::pair<double, double>> surfaces;  // each support's [x (m), surface height (m)]
 };
 
 // Contact force during the first impact (Fig. 11).

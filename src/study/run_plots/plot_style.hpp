@@ -49,9 +49,10 @@ void finite_range(const std::vector<const std::vector<double>*>& columns, double
 // The rows worth drawing of a long table: all of them up to `limit`, otherwise in each of limit/4
 // equal slices of the rows the first, the last, those where a column has its finite minimum or
 // maximum, and the first where it has no value, so that every peak (an impact's force spike)
-// survives and a gap stays a gap.
+// survives and a gap stays a gap. The default: one slice per pixel column of a 2400 px figure, which
+// can show no more (the figure's CSV then holds what it draws, not a copy of the run's table).
 std::vector<std::size_t> rows_to_draw(const std::vector<const std::vector<double>*>& columns, std::size_t rows,
-                                      std::size_t limit = 40000);
+                                      std::size_t limit = 4 * 2400);
 
 // A file-name-safe version of a column name ("impact1_peak_force_n"; "supports[0].gap" -> "supports_0_gap").
 std::string safe_name(const std::string& s);

@@ -16,6 +16,20 @@ bool has(const fs::path& dir, const char* file) {
     return fs::is_regular_file(dir / file, ec);
 }
 
+// The case's name as the folder's JSON records it (summary.json's resolved.name, sweep.json's
+// case_name); empty when it does not (modes.json holds none).
+std::string case_name_of(const std::string& dir, RunKind kind) {
+    if (kind == RunKind::modes) return "";
+    const nlohmann::json j = read_run_json(dir + (kind == RunKind::sweep ? "/sweep.json" : "/summary.json"));
+    const nlohmann::json* name = nullptr;
+    if (kind == RunKind::sweep && j.is_object() && j.contains("case_name")) name = &j["case_name"];
+    if (kind == RunKind::transient && j.is_object() && j.contains("resolved") && j["resolved"].is_object() &&
+        j["resolved"].contains("name")) {
+        name = &j["resolved"]["name"];
+    }
+    return name && name->is_string() ? name->get<std::string>() : std::string();
+}
+
 }  // namespace
 
 const char* run_kind_name(RunKind k) {
@@ -44,6 +58,15 @@ RunPlots run_plots(const std::string& dir) {
         case RunKind::transient: p.figures = transient_figures(dir, p.skipped); break;
         case RunKind::modes: p.figures = modes_figures(dir); break;
         case RunKind::sweep: p.figures = sweep_figures(dir, p.skipped); break;
+    }
+    const std::string name = case_name_of(dir, p.kind);
+    // Every figure says what it shows and of which case, so that one copied out of its folder still does.
+    for (FigureSpec& f : p.figures) {
+        const std::string title = name.empty() ? f.title : f.title + " - " + name;
+        f.plot = "set title " + gp_quote(title) + " noenhanced\n" + f.plot;
+    }
+    if (p.kind == RunKind::transient) {
+        for (FigureSpec& f : field_figures(dir, name)) p.figures.push_back(std::move(f));
     }
     return p;
 }

@@ -4,6 +4,7 @@
 // holds sweep.csv's values as they are (SI, the same column names); the gnuplot script scales them.
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -111,43 +112,91 @@ std::string axis_text(const PlotAxis& a) {
     return axis_label(a.path, a.shown);
 }
 
-FigureSpec line_figure(const RunTable& t, const PlotAxis& a, const Quantity& q) {
+// Columns drawn in one figure: those of one physical unit (every time, every force, ...), or for
+// plain numbers and counts those whose names differ only in digits (tau, tau1, tau2).
+struct Family {
+    std::string key, title;
+    std::vector<Quantity> members;
+};
+
+bool physical_unit(const std::string& unit) { return !unit.empty() && unit != "-" && unit != "count" && unit != "index"; }
+
+// What the columns of a unit are, for a figure's title and file name ("Times", "sweep_times").
+std::string unit_family_title(const std::string& unit) {
+    static const std::map<std::string, std::string> words = {
+        {"s", "Times"},          {"m", "Displacements"}, {"m/s", "Velocities"}, {"N", "Forces"},
+        {"J", "Energies"},       {"Hz", "Frequencies"},  {"rad/s", "Circular frequencies"},
+        {"N s", "Impulses"},     {"V", "Voltages"},      {"Pa", "Pressures"}, {"ohm", "Resistances"}};
+    const auto w = words.find(unit);
+    return w != words.end() ? w->second : "Quantities in " + unit;
+}
+
+std::string family_key(const Quantity& q, const std::string& name) {
+    if (physical_unit(q.unit)) return "unit " + q.unit;
+    std::string k;
+    for (char c : name) {
+        if (!std::isdigit(static_cast<unsigned char>(c))) k += c;
+    }
+    return "name " + k;
+}
+
+FigureSpec line_figure(const RunTable& t, const PlotAxis& a, const Family& fam) {
     const auto& x = t.columns[static_cast<std::size_t>(a.column)];
-    const auto& y = t.columns[static_cast<std::size_t>(q.column)];
-    const DisplayUnit yu = display_unit(q.unit, largest_magnitude({&y}));
-    FigureSpec f = run_figure("sweep_" + safe_name(t.header[static_cast<std::size_t>(q.column)]), q.label + " against " + a.path,
-                              t.header[static_cast<std::size_t>(q.column)] + " of sweep.csv against " + a.path +
+    std::vector<const std::vector<double>*> ys_all;
+    for (const Quantity& q : fam.members) ys_all.push_back(&t.columns[static_cast<std::size_t>(q.column)]);
+    const std::string unit = fam.members.front().unit;
+    const DisplayUnit yu = display_unit(unit, largest_magnitude(ys_all));
+    std::string names;
+    for (const Quantity& q : fam.members) names += (names.empty() ? "" : ", ") + t.header[static_cast<std::size_t>(q.column)];
+    std::string stem = t.header[static_cast<std::size_t>(fam.members.front().column)];
+    if (fam.members.size() > 1) {
+        stem = physical_unit(unit) ? unit_family_title(unit) : fam.key.substr(fam.key.find(' ') + 1);
+        for (char& c : stem) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    }
+    FigureSpec f = run_figure("sweep_" + safe_name(stem), fam.title + " against " + a.path,
+                              names + " of sweep.csv against " + a.path +
                                   "; a gap: a point without a value (failed, or the quantity undefined there).");
     std::vector<std::size_t> order(t.rows);
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) { return x[i] < x[j]; });
-    // A long sweep is drawn from the points that shape its curve, as a long history is (in each
+    // A long sweep is drawn from the points that shape its curves, as a long history is (in each
     // slice the first, the last, the lowest and the highest): every peak survives.
-    std::vector<double> xs, ys;
-    xs.reserve(order.size());
-    ys.reserve(order.size());
+    std::vector<std::vector<double>> sorted(ys_all.size());
+    std::vector<double> xs;
     for (std::size_t r : order) {
         xs.push_back(x[r]);
-        ys.push_back(y[r]);
+        for (std::size_t m = 0; m < ys_all.size(); ++m) sorted[m].push_back((*ys_all[m])[r]);
     }
-    const std::vector<std::size_t> drawn = rows_to_draw({&ys}, ys.size());
-    if (drawn.size() < ys.size()) {
-        f.caption += " Drawn from " + std::to_string(drawn.size()) + " of the " + std::to_string(ys.size()) +
+    std::vector<const std::vector<double>*> sorted_ptr;
+    for (const auto& c : sorted) sorted_ptr.push_back(&c);
+    const std::vector<std::size_t> drawn = rows_to_draw(sorted_ptr, xs.size());
+    if (drawn.size() < xs.size()) {
+        f.caption += " Drawn from " + std::to_string(drawn.size()) + " of the " + std::to_string(xs.size()) +
                      " points (in each slice of the axis the first, the last, the lowest and the highest).";
     }
     CsvTable data;
-    data.header = {t.header[static_cast<std::size_t>(a.column)], t.header[static_cast<std::size_t>(q.column)]};
-    for (std::size_t r : drawn) data.add_row({xs[r], ys[r]});
+    data.header = {t.header[static_cast<std::size_t>(a.column)]};
+    for (const Quantity& q : fam.members) data.header.push_back(t.header[static_cast<std::size_t>(q.column)]);
+    for (std::size_t r : drawn) {
+        std::vector<double> row{xs[r]};
+        for (const auto& c : sorted) row.push_back(c[r]);
+        data.add_row(row);
+    }
     const std::string file = f.name + ".csv";
     f.data = {{file, data.str()}};
     double lo = 0.0, hi = 0.0;
-    finite_range({&y}, lo, hi);
+    finite_range(ys_all, lo, hi);
     std::ostringstream p;
-    p << gp_frame(axis_text(a), axis_label(q.label, yu)) << "set key off\n"
+    p << gp_frame(axis_text(a), axis_label(fam.members.size() == 1 ? fam.members.front().label : fam.title, yu))
+      << (fam.members.size() == 1 ? "set key off\n" : "")
       << "set xrange [" << gp_number(a.values.front() * a.shown.factor) << ":" << gp_number(a.values.back() * a.shown.factor) << "]\n"
-      << gp_range("y", lo * yu.factor, hi * yu.factor) << (a.log ? "set logscale x\n" : "")
-      << "plot " << gp_quote(file) << " using ($1*" << gp_number(a.shown.factor) << "):($2*" << gp_number(yu.factor)
-      << ") with linespoints lw 2 pt 7 ps 1.6 lc rgb '#1f77b4'\n";
+      << gp_range("y", lo * yu.factor, hi * yu.factor) << (a.log ? "set logscale x\n" : "") << "plot ";
+    for (std::size_t m = 0; m < fam.members.size(); ++m) {
+        p << (m ? ", " : "") << gp_quote(m ? "" : file) << " using ($1*" << gp_number(a.shown.factor) << "):($" << m + 2 << "*"
+          << gp_number(yu.factor) << ") with linespoints lw 2 pt " << (m % 6 + 5) << " ps 1.4 dt " << (m % 4 + 1)
+          << " title " << gp_quote(fam.members[m].label) << " noenhanced";
+    }
+    p << "\n";
     f.plot = p.str();
     return f;
 }
@@ -222,6 +271,7 @@ std::vector<FigureSpec> sweep_figures(const std::string& dir, std::vector<std::s
                          " axes vary; plot draws a sweep over one axis (curves) or two (heat maps)");
     }
     std::vector<FigureSpec> figures;
+    std::vector<Family> families;
     for (std::size_t k = 0; k < t.header.size(); ++k) {
         const std::string& name = t.header[k];
         const bool axis = std::any_of(axes.begin(), axes.end(), [&](const PlotAxis& a) { return a.column == static_cast<int>(k); });
@@ -231,12 +281,33 @@ std::vector<FigureSpec> sweep_figures(const std::string& dir, std::vector<std::s
             skipped.push_back(name + (t.text[k] ? " (text)" : " (no finite value)"));
             continue;
         }
+        // The same value at every point (the support every first impact hits) says nothing against the axes.
+        double lo = 0.0, hi = 0.0;
+        finite_range({&c}, lo, hi);
+        if (lo == hi) {
+            skipped.push_back(name + " (constant: " + gp_number(lo) + ")");
+            continue;
+        }
         Quantity q{static_cast<int>(k), name, ""};
         const ColumnUnit cu = column_unit(name);
         const auto u = units.find(name);
         q.unit = u != units.end() ? u->second : cu.unit;
         if (cu.unit == q.unit) q.label = cu.quantity;
-        figures.push_back(axes.size() == 1 ? line_figure(t, axes[0], q) : heat_figure(t, axes[0], axes[1], q));
+        if (axes.size() == 2) {
+            figures.push_back(heat_figure(t, axes[0], axes[1], q));
+            continue;
+        }
+        const std::string key = family_key(q, name);
+        auto fam = std::find_if(families.begin(), families.end(), [&](const Family& x) { return x.key == key; });
+        if (fam == families.end()) {
+            const std::string title = physical_unit(q.unit) ? unit_family_title(q.unit) : q.label;
+            fam = families.insert(families.end(), Family{key, title, {}});
+        }
+        fam->members.push_back(q);
+    }
+    for (Family& fam : families) {
+        if (fam.members.size() == 1) fam.title = fam.members.front().label;
+        figures.push_back(line_figure(t, axes[0], fam));
     }
     if (figures.empty()) throw InputError(t.file + ": no column holds a number to draw (every point failed?)");
     return figures;

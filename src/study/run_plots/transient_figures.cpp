@@ -182,6 +182,12 @@ std::vector<FigureSpec> transient_figures(const std::string& dir, std::vector<st
             skipped.push_back(h.header[k] + " (no finite value)");
             continue;
         }
+        // A term that stays zero (no electrode's energy, no external work) would only add a flat
+        // line and a legend entry saying nothing.
+        if (std::all_of(h.columns[k].begin(), h.columns[k].end(), [](double v) { return v == 0.0; })) {
+            skipped.push_back(h.header[k] + " (zero throughout)");
+            continue;
+        }
         const std::string unit = column_unit(h.header[k]).unit;
         auto g = std::find_if(groups.begin(), groups.end(), [&](const UnitGroup& x) { return x.unit == unit; });
         if (g == groups.end()) g = groups.insert(groups.end(), UnitGroup{unit, {}});

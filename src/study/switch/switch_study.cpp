@@ -9,7 +9,9 @@
 #include "model/input_error.hpp"
 #include "model/run_estimate.hpp"
 #include "model/run_control.hpp"
+#include "plot/beam_animation.hpp"
 #include "plot/chart_json.hpp"
+#include "report/field_output.hpp"
 #include "report/pullin_output.hpp"
 #include "report/transient_output.hpp"
 #include "model/number_format.hpp"
@@ -17,6 +19,20 @@
 
 namespace vi {
 namespace {
+
+// Where each support's surface is: [x (m), height (m)], for the animated beam.
+std::vector<std::pair<double, double>> support_surfaces(const Case& c) {
+    std::vector<std::pair<double, double>> out;
+    for (const Support& k : c.supports) out.emplace_back(k.position * c.beam.length, k.surface);
+    return out;
+}
+
+std::string beam_caption(const BeamField& f) {
+    return "The deflection along the beam (the whole field, " + std::to_string(f.frames.size()) +
+           " frames from t = 0 to " + formatted("%.4g us", f.frames.back().t * 1e6) +
+           ", at most " + std::to_string(kMaxPageFrames) + " shown); the dashes: the supports' surfaces. The same "
+           "field is in field.pvd (ParaView) and field.csv.";
+}
 
 std::string volts(const std::optional<double>& v) { return v ? formatted("%.4g V", *v) : std::string("none"); }
 
@@ -69,7 +85,9 @@ SwitchStudy run_switch_study(const Case& c) {
     s.pullin_s = seconds_since(t0);
     check_run();
     t0 = std::chrono::steady_clock::now();
-    s.transient = run_simulation(c);
+    SimulationOptions o;
+    o.field = true;  // the page's animated beam
+    s.transient = run_simulation(c, o);
     s.transient_s = seconds_since(t0);
     return s;
 }
@@ -116,6 +134,11 @@ ReportDocument switch_report(const SwitchStudy& s, const std::string& command) {
              "peak penetration [nm]"},
             episode_rows(s));
     d.figure("switch_transient", "Switching transient", "", {"switch_transient.csv", "switch_transient.gp"});
+    const BeamField field = beam_field(s.transient.built.model.system, s.transient.result.history);
+    if (!field.frames.empty()) {
+        d.animation("switch_beam", "The beam moving", beam_caption(field), beam_animation_json(field, support_surfaces(s.c)),
+                    {"field.pvd", "field.csv"});
+    }
     d.heading(2, "Files", "files");
     d.list({"`pullin.json`, `pullin_branch.csv`, `pullin_frequencies.csv`: the pull-in trace (as `vibroimpact pullin --out`)",
             "`summary.json`, `history.csv`, `events.csv`: the transient (as `vibroimpact simulate --out`)",
@@ -128,6 +151,7 @@ OutputFiles switch_report_files(const SwitchStudy& s, const std::vector<FigureSp
     OutputFiles files = pullin_files(s.pullin);
     const OutputFiles transient = transient_files(s.c, s.transient.built, s.transient.result, s.transient.summary);
     files.insert(transient.begin(), transient.end());
+    files.merge(field_files(beam_field(s.transient.built.model.system, s.transient.result.history)));
     std::map<std::string, std::string> png;
     const OutputFiles drawn = figure_files(figures, rendered, &png);
     files.insert(drawn.begin(), drawn.end());
