@@ -179,7 +179,8 @@ DesignProblem read_problem(const OptimizeCommandOptions& o, const std::string& c
     p.settings.point_timeout = o.point_timeout;
     p.settings = with_study_analyses(p.settings);
     check_sweep_analysis(p.base, p.settings);
-    p.columns = sweep_result_columns(p.settings.analysis, p.settings.modes);
+    p.settings.supports = static_cast<int>(p.base.supports.size());
+    p.columns = sweep_result_columns(p.settings.analysis, p.settings.modes, p.settings.supports);
     for (const std::string& v : o.vary) {
         DesignVariable variable = parse_design_variable(v, p.base);
         for (const DesignVariable& earlier : p.variables) {

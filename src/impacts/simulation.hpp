@@ -2,7 +2,9 @@
 // One transient run of a case from start to summary: build, solve (the exact solver or CVODE, behind
 // TransientSolver), summarise (the impact ledger, and the switching ledger under electrode voltage).
 
+#include <functional>
 #include <optional>
+#include <vector>
 
 #include "impacts/impact_summary.hpp"
 #include "impacts/switching_ledger.hpp"
@@ -25,6 +27,8 @@ struct SimulationRun {
 struct SimulationOptions {
     bool history = true;  // sampled time history
     bool energy = true;   // energy ledger at every sample (exact solver: O(n^2) per sample and per piece)
+    // Called with the time the solver has reached [s] as it goes (TransientOptions::progress); empty: none.
+    std::function<void(double)> progress;
 };
 
 // The options of a transient run from the case's [solver] table: the common ones, and CVODE's.
@@ -36,5 +40,9 @@ CvodeOptions cvode_options(const SolverSettings& s);
 // horizon too short to see the first impact, a limit of check_transient_run, checked before any
 // work) and std::runtime_error on numerical trouble.
 SimulationRun run_simulation(const Case& c, const SimulationOptions& o = {});
+
+// Every contact of the model, in the result's order, with what holds it where it is adhesive: what
+// switching_ledger takes.
+std::vector<LedgerContact> ledger_contacts(const Case& c, const BeamModel& m);
 
 }  // namespace vi
