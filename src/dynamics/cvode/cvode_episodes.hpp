@@ -20,7 +20,7 @@ public:
     // Whether some episode is open (a contact is closed).
     [[nodiscard]] bool any_open() const;
     // Adds each closed contact's dissipated power integrated over [lo, hi] (modes unchanged there,
-    // inside CVODE's last step) to its open episode: 3-point Gauss-Legendre on the dense output, so
+    // inside CVODE's last step) to its open episode: 2-point Gauss-Legendre on the dense output, so
     // the energy is read off the solution without a quadrature in CVODE's state (which would change
     // its error norm and so its steps).
     void add_dissipation(double lo, double hi, const std::vector<int>& modes, const DenseOutput& at);
