@@ -2,6 +2,7 @@
 // electrodes' waveform repeated every period; per cycle the bounces, contact energy, peaks, yield and
 // wear, and their trend (docs/cycles.md).
 
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
@@ -20,11 +21,31 @@
 #include "study/cycles/cycles_output.hpp"
 
 namespace vi::cli {
+namespace {
+
+// --cycles TEXT: a whole number from 1 to kMaxCycles; anything else (a fraction, 1e9, text) is one
+// line naming the limit.
+int parse_cycles(const std::string& text) {
+    const std::string limit = ": must be a whole number from 1 to " + std::to_string(kMaxCycles) + " (the most one study runs)";
+    std::size_t used = 0;
+    double v = 0.0;
+    try {
+        v = std::stod(text, &used);
+    } catch (const std::exception&) {
+        throw InputError("--cycles " + in_quotes(text) + limit);
+    }
+    if (used != text.size() || !(v >= 1.0 && v <= kMaxCycles) || v != std::floor(v)) {
+        throw InputError("--cycles " + text + limit);
+    }
+    return static_cast<int>(v);
+}
+
+}  // namespace
 
 CommandBody add_cycles_command(CLI::App& app) {
     struct CyclesCommandOptions {
         std::string case_path;
-        long long cycles = 0;
+        std::string cycles;
         std::string period;
         bool json = false;
         std::string out_dir;
@@ -43,12 +64,8 @@ CommandBody add_cycles_command(CLI::App& app) {
     add_progress_options(*sub, opt->progress);
 
     return [opt]() {
-        if (opt->cycles < 1 || opt->cycles > kMaxCycles) {
-            throw InputError("--cycles " + std::to_string(opt->cycles) + ": must be 1 to " + std::to_string(kMaxCycles) +
-                             " (the most one study runs)");
-        }
         CycleSettings s;
-        s.cycles = static_cast<int>(opt->cycles);
+        s.cycles = parse_cycles(opt->cycles);
         if (!opt->period.empty()) {
             try {
                 s.period = parse_quantity(opt->period, Dimension::time);

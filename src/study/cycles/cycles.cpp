@@ -137,8 +137,8 @@ CycleTrend cycle_trend(const std::vector<double>& ys) {
 
 Case cycled_case(const Case& c, const CycleSettings& s) {
     if (s.cycles < 1 || s.cycles > kMaxCycles) {
-        throw InputError("--cycles " + std::to_string(s.cycles) + ": must be 1 to " + std::to_string(kMaxCycles) +
-                         " (the most one study runs)");
+        throw InputError("--cycles " + std::to_string(s.cycles) + ": must be a whole number from 1 to " +
+                         std::to_string(kMaxCycles) + " (the most one study runs)");
     }
     if (!(s.period > 0.0) || !std::isfinite(s.period)) {
         throw InputError("--period: must be above 0 s (or leave it out for the case's solver.horizon)");
