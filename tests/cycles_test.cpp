@@ -13,6 +13,7 @@
 
 #include "impacts/simulation.hpp"
 #include "io/case_reader.hpp"
+#include "io/csv_names.hpp"
 #include "model/input_error.hpp"
 #include "study/cycles/cycles.hpp"
 #include "study/cycles/cycles_output.hpp"
@@ -87,6 +88,11 @@ TEST(Cycles, FirstCycleIsTheSingleRunAndTheSumsAreTheWholeRuns) {
     EXPECT_NEAR(r.total_wear_volume, wear, 1e-12 * wear);
     EXPECT_TRUE(r.wear);
     EXPECT_TRUE(r.yield_known);
+}
+
+// The CSV's columns follow the project's naming rule (the unit in the name, io/csv_names.hpp).
+TEST(Cycles, ColumnNamesCarryTheirUnits) {
+    for (const std::string& name : cycles_csv(CyclesResult{}).header) EXPECT_TRUE(csv_column_name_ok(name)) << name;
 }
 
 TEST(Cycles, TrendIsTheLeastSquaresLine) {
