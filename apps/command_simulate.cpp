@@ -84,6 +84,18 @@ void print_electrical(const SimulationRun& run) {
     }
 }
 
+// The impacts' damage indicators summed over the run (one actuation cycle), where the solver recorded
+// the contact energy.
+void print_damage(const ImpactSummary& s) {
+    const ContactDamage d = contact_damage(s.impacts);
+    if (s.impacts.empty() || std::isnan(d.contact_energy)) return;
+    std::printf("  contact energy %.4g J over %zu impacts, peak force %.4g N", d.contact_energy, s.impacts.size(),
+                d.peak_force);
+    if (!std::isnan(d.peak_pressure)) std::printf(", peak Hertz pressure %.4g Pa", d.peak_pressure);
+    if (d.yield_known) std::printf(", %d impact(s) past yield onset 1.6 Y", d.yield_impacts);
+    std::printf("\n");
+}
+
 // The film model's range (docs/squeeze-film.md §3): one line, once, naming the worst film.
 void warn_film_range(const std::string& path, const std::vector<FilmRegime>& films) {
     const FilmRegime* sigma = nullptr;
@@ -192,6 +204,7 @@ CommandBody add_simulate_command(CLI::App& app) {
         std::printf("  T2 (impact duration)             %s\n", us(s.T2_first).c_str());
         std::printf("  Tp (transient duration)          %s  [%s]\n", us(s.Tp).c_str(), s.Tp_reason.c_str());
         if (s.y_max) std::printf("  y_max %.4g m, z_max %.4g\n", *s.y_max, *s.z_max);
+        print_damage(s);
         if (run.switching) print_switching(*run.switching);
         print_electrical(run);
         if (!opt->out_dir.empty()) std::printf("Written to %s/\n", opt->out_dir.c_str());

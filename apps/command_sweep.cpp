@@ -55,7 +55,8 @@ PointRunPlan make_plan(const SweepCommandOptions& o) {
     p.settings.point_timeout = o.point_timeout;
     p.settings = with_study_analyses(p.settings);
     check_sweep_analysis(p.base, p.settings);
-    p.columns = sweep_result_columns(p.settings.analysis, p.settings.modes);
+    p.settings.supports = static_cast<int>(p.base.supports.size());
+    p.columns = sweep_result_columns(p.settings.analysis, p.settings.modes, p.settings.supports);
     p.fingerprint = fingerprint_of(sweep_identity_text(*text, p.grid, p.settings));
     p.csv_header = sweep_csv_header(p.grid, p.columns);
     return p;

@@ -84,7 +84,8 @@ PointRunPlan make_plan(const UqCommandOptions& o, UqPlan& uq) {
     p.settings.point_timeout = o.point_timeout;
     p.settings = with_study_analyses(p.settings);
     check_sweep_analysis(p.base, p.settings);
-    p.columns = sweep_result_columns(p.settings.analysis, p.settings.modes);
+    p.settings.supports = static_cast<int>(p.base.supports.size());
+    p.columns = sweep_result_columns(p.settings.analysis, p.settings.modes, p.settings.supports);
     std::vector<std::string> numeric;
     for (const SweepColumn& c : p.columns) {
         if (!sweep_column_is_text(c.name)) numeric.push_back(c.name);

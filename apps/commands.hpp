@@ -22,6 +22,7 @@ using CommandBody = std::function<int()>;
 CommandBody add_modes_command(CLI::App& app);
 CommandBody add_support_scan_command(CLI::App& app);
 CommandBody add_simulate_command(CLI::App& app);
+CommandBody add_cycles_command(CLI::App& app);
 CommandBody add_validate_command(CLI::App& app);
 CommandBody add_sweep_command(CLI::App& app);
 CommandBody add_paper_command(CLI::App& app);

@@ -38,6 +38,7 @@ int main(int argc, char** argv) {
     add(add_modes_command);
     add(add_support_scan_command);
     add(add_simulate_command);
+    add(add_cycles_command);
     add(add_validate_command);
     add(add_sweep_command);
     add(add_paper_command);

@@ -2,7 +2,8 @@
 // through T_p, for the exact solver (with its time split) and the nonlinear path (full and reduced
 // order, with their error against the exact solver); and the
 // exact transient over the example's whole horizon (150 us) with the support moved inside the beam,
-// as a support-position sweep runs it; and the same impact on a Hertz dimple (CVODE, full and reduced).
+// as a support-position sweep runs it; and the same impact on a Hertz dimple (CVODE, full and reduced);
+// 100 actuation cycles of the Hertz-dimple switch.
 
 #include <benchmark/benchmark.h>
 
@@ -15,6 +16,7 @@
 #include "dynamics/cvode/cvode_solver.hpp"
 #include "dynamics/exact/exact_solver.hpp"
 #include "io/case_reader.hpp"
+#include "study/cycles/cycles.hpp"
 
 namespace {
 
@@ -151,5 +153,21 @@ void BM_BuildProblem(benchmark::State& state) {
     }
 }
 BENCHMARK(BM_BuildProblem)->Unit(benchmark::kMillisecond);
+
+// The cycles study of the Hertz-dimple switch (examples/switch/cantilever_switch_hertz_cycles.toml:
+// a 70 V pulse every 100 us, reduced model of 10 modes) over range(0) cycles, as `cycles` runs it.
+void BM_HertzSwitchCycles(benchmark::State& state) {
+    const vi::Case c =
+        vi::read_case_file(std::string(VI_SOURCE_DIR) + "/examples/switch/cantilever_switch_hertz_cycles.toml");
+    vi::CyclesResult r;
+    for (auto _ : state) {
+        r = vi::run_cycles(c, {static_cast<int>(state.range(0)), 0.0});
+        benchmark::DoNotOptimize(r.cycles.data());
+    }
+    state.counters["steps"] = r.steps;
+    state.counters["last_bounces"] = r.bounce_trend.last;
+    state.counters["energy_J"] = r.total_contact_energy;
+}
+BENCHMARK(BM_HertzSwitchCycles)->Arg(100)->ArgName("cycles")->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace

@@ -90,7 +90,8 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
     hertz_star.supports[1].params.numbers["effective_modulus"] = 5e10;
     const auto hertz_key = [](const std::string& t) {
         for (const char* key : {".radius", ".restitution", ".reference_speed", ".resistivity", ".film_resistivity",
-                                ".hardness", ".mean_free_path", ".r_on", ".youngs_modulus", ".poisson_ratio"}) {
+                                ".hardness", ".mean_free_path", ".r_on", ".youngs_modulus", ".poisson_ratio",
+                                ".yield_strength", ".wear_coefficient"}) {
             if (t.rfind("supports[", 0) == 0 && t.size() > std::string(key).size() &&
                 t.compare(t.size() - std::string(key).size(), std::string::npos, key) == 0) {
                 return true;
@@ -139,8 +140,8 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
     // 47, the adhesion keys (3), the air keys (4), solver.settle_velocity and the waveform's shape
     // keys beyond t_on and frequency (rise, hold, fall, level, phase, bias); since every number of the
     // schema is a path, the electrode's dielectric_modulus, work_of_adhesion, adhesion_range and
-    // width, and the film's from, to and gap; the Hertz law's 11 numbers; solver.field_step.
-    EXPECT_EQ(checked, 80);
+    // width, and the film's from, to and gap; the Hertz law's 13 numbers; solver.field_step.
+    EXPECT_EQ(checked, 82);
 }
 
 TEST(SweepCasePaths, ValuesLandWhereTheCaseFileWouldPutThem) {

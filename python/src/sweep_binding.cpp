@@ -73,7 +73,8 @@ py::dict sweep(const Case& base, const py::object& values, const std::string& an
     const int workers = resolve_thread_count(threads);
     settings = with_study_analyses(settings);
     check_sweep_analysis(base, settings);
-    const std::vector<SweepColumn> columns = sweep_result_columns(settings.analysis, settings.modes);
+    settings.supports = static_cast<int>(base.supports.size());
+    const std::vector<SweepColumn> columns = sweep_result_columns(settings.analysis, settings.modes, settings.supports);
 
     // Integer columns: whole-number paths, and results that are counts.
     std::set<std::string> integer_columns;

@@ -56,7 +56,8 @@ py::dict uq(const Case& base, const py::object& vary, const std::string& analysi
     settings.point_timeout = point_timeout;
     settings = with_study_analyses(settings);
     check_sweep_analysis(base, settings);
-    const std::vector<SweepColumn> columns = sweep_result_columns(settings.analysis, settings.modes);
+    settings.supports = static_cast<int>(base.supports.size());
+    const std::vector<SweepColumn> columns = sweep_result_columns(settings.analysis, settings.modes, settings.supports);
     UqSettings s;
     s.analysis = analysis;
     s.method = method_of(method);

@@ -21,6 +21,14 @@ struct ContactEpisode {
     double peak_penetration = 0.0;  // largest d during the episode [m]
     double impulse = 0.0;         // integral of F over the episode [N s]
     bool closed_at_end = false;   // still in contact when the horizon ended
+    // Energy dissipated in the contact over the episode [J] (its damper, and the stored energy it
+    // drops on opening with d > 0); NaN where the solver does not record it (the exact solver).
+    double contact_energy = std::numeric_limits<double>::quiet_NaN();
+    // The contact's peak surface pressure at peak_penetration [Pa] (ForceElement::contact_pressure);
+    // NaN for a law without a contact area.
+    double peak_pressure = std::numeric_limits<double>::quiet_NaN();
+    // Whether peak_pressure passed the contact's yield onset; empty without a yield strength.
+    std::optional<bool> yielded;
 };
 
 // Energy terms [J], each named by the kind of element it comes from; with no damping, kinetic + strain

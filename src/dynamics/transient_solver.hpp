@@ -18,6 +18,7 @@
 //    the state reached (the beam reaches an electrode), std::runtime_error for other numerical
 //    trouble.
 
+#include <functional>
 #include <string_view>
 
 #include "dynamics/transient_problem.hpp"
@@ -37,6 +38,10 @@ struct TransientOptions {
     long field_every = 0;
     long max_steps = 50000000;  // solver.max_steps: steps (CVODE) or search evaluations (exact)
     long max_events = 1000000;  // solver.max_events: contact switches and load breakpoints
+    // Called with the time reached [s] at each of CVODE's returns (the exact solver does not call it);
+    // empty: none. For a long command's progress report: it must be cheap and must not throw but
+    // what check_run throws.
+    std::function<void(double)> progress;
 };
 
 class TransientSolver {

@@ -161,6 +161,11 @@ public:
     }
     // The resistance below which such a contact counts as on [ohm]; NaN when none is set.
     [[nodiscard]] virtual double on_resistance() const { return std::numeric_limits<double>::quiet_NaN(); }
+    // A contact's peak surface pressure at penetration d [m], taken as closed [Pa] (Hertz's p0); NaN
+    // for a law that has no contact area.
+    [[nodiscard]] virtual double contact_pressure(double /*d*/) const { return std::numeric_limits<double>::quiet_NaN(); }
+    // The peak pressure at which the softer body starts to yield [Pa]; NaN when no yield strength is given.
+    [[nodiscard]] virtual double yield_onset_pressure() const { return std::numeric_limits<double>::quiet_NaN(); }
 };
 
 using ForceElementPtr = std::shared_ptr<const ForceElement>;

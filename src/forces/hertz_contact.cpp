@@ -67,9 +67,9 @@ double ContactResistance::of_radius(double a) const {
 }
 
 HertzContact::HertzContact(std::string name, int dof, double sign, double surface, double x, double k, double alpha,
-                           double radius, std::optional<ContactResistance> resistance)
+                           double radius, std::optional<ContactResistance> resistance, double yield_strength)
     : PointContact(std::move(name), dof, sign, surface, x), k_(k), alpha_(alpha), radius_(radius),
-      resistance_(resistance) {
+      resistance_(resistance), yield_strength_(yield_strength) {
     if (dof < 0 || std::abs(sign) != 1.0 || !std::isfinite(surface) || !(k > 0.0) || !std::isfinite(k) ||
         !(alpha >= 0.0) || !std::isfinite(alpha) || !(radius > 0.0) || !std::isfinite(radius)) {
         throw std::invalid_argument(name_ + ": inconsistent Hertz contact data");
@@ -156,6 +156,11 @@ double HertzContact::contact_resistance(const ElementState& s) const {
     return resistance_->of_radius(contact_radius(penetration(s)));
 }
 
+double HertzContact::contact_pressure(double d) const {
+    if (!(d > 0.0)) return 0.0;
+    return 3.0 * k_ * std::sqrt(d) / (2.0 * std::numbers::pi * radius_);
+}
+
 double HertzContact::on_resistance() const {
     return resistance_ ? resistance_->r_on : std::numeric_limits<double>::quiet_NaN();
 }
@@ -210,6 +215,17 @@ std::vector<KeySpec> hertz_keys() {
     return {radius, star, e2, nu2, e, v};
 }
 
+// A hardness serves the plastic contact radius of a resistance or the wear estimate: alone it
+// would be silently unused.
+void hardness_needs_a_use(std::vector<CaseProblem>& out, const Case& c, std::size_t i) {
+    const ParameterSet& p = c.supports[i].params;
+    if (p.numbers.count("hardness") == 0 || p.numbers.count("resistivity") > 0 || p.numbers.count("wear_coefficient") > 0) {
+        return;
+    }
+    out.push_back({"supports[" + std::to_string(i) + "].hardness",
+                   "needs resistivity (the plastic contact radius) or wear_coefficient (the wear estimate)"});
+}
+
 // The contact resistance's keys (docs/hertz-contact.md §4): numbers in SI (no unit text).
 std::vector<KeySpec> resistance_keys() {
     const KeyCondition hertz = when_chosen("supports", "law", {kHertz});
@@ -221,9 +237,11 @@ std::vector<KeySpec> resistance_keys() {
     film.otherwise(0.0).in(non_negative()).only(hertz).needing("resistivity", needs)
         .means("a surface film's resistance times its area: sigma_f / (pi a^2) in series");
     KeySpec hard = number_key("hardness", Dimension::pressure);
-    hard.in(positive()).only(hertz).needing("resistivity", needs)
-        .means("H: the fully plastic radius sqrt(F / (pi H)) where it exceeds the elastic one");
+    hard.in(positive()).only(hertz)
+        .means("H: the fully plastic radius sqrt(F / (pi H)) where it exceeds the elastic one (with resistivity); "
+               "the wear estimate's H (with wear_coefficient)");
     hard.default_text = "- (elastic radius)";
+    hard.rule = hardness_needs_a_use;
     KeySpec mfp = number_key("mean_free_path", Dimension::length);
     mfp.in(positive()).only(hertz).needing("resistivity", needs)
         .means("the electrons' mean free path: Sharvin's term by Wexler's interpolation");
@@ -233,6 +251,21 @@ std::vector<KeySpec> resistance_keys() {
         .means("the resistance below which the contact counts as on: the electrical bounce ledger (`simulate --r-on` sets it)");
     on.default_text = "-";
     return {rho, film, hard, mfp, on};
+}
+
+// The damage and wear keys (docs/hertz-contact.md §8, docs/cycles.md).
+std::vector<KeySpec> wear_keys() {
+    const KeyCondition hertz = when_chosen("supports", "law", {kHertz});
+    KeySpec y = number_key("yield_strength", Dimension::pressure);
+    y.in(positive()).only(hertz)
+        .means("Y of the softer contact body: an impact whose Hertz peak pressure p0 passes 1.6 Y yields");
+    y.default_text = "- (no yield check)";
+    KeySpec k = number_key("wear_coefficient", Dimension::dimensionless, "-");
+    k.in(interval(0.0, true, 1.0, false)).only(hertz)
+        .needing("hardness", "needs hardness (the wear volume is K E / H)")
+        .means("K: the `cycles` study's wear volume K E / H of the energy E the contact dissipates");
+    k.default_text = "- (no wear estimate)";
+    return {y, k};
 }
 
 // The resistance model of support entry p, where it gives a resistivity.
@@ -265,6 +298,7 @@ public:
             .keep();
         register_keys("supports", hertz_keys()).keep();
         register_keys("supports", resistance_keys()).keep();
+        register_keys("supports", wear_keys()).keep();
     }
 
 private:
@@ -280,7 +314,8 @@ private:
         const double e = p.number("restitution", 1.0);
         const double alpha = e < 1.0 ? hunt_crossley_damping(e, p.number("reference_speed")) : 0.0;
         return std::make_shared<HertzContact>(g.name, g.dof, g.sign, g.surface, g.x, hertz_stiffness(star, radius), alpha,
-                                              radius, resistance_of(p));
+                                              radius, resistance_of(p),
+                                              p.number("yield_strength", std::numeric_limits<double>::quiet_NaN()));
     }
 };
 

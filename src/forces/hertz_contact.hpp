@@ -56,9 +56,10 @@ struct ContactResistance {
 class HertzContact final : public PointContact {
 public:
     // k > 0 [N/m^(3/2)], alpha >= 0 [s/m], radius > 0 [m] (the dimple's R); with a resistance model
-    // where one is given.
+    // where one is given, and the softer body's yield strength Y [Pa] (NaN: none).
     HertzContact(std::string name, int dof, double sign, double surface, double x, double k, double alpha,
-                 double radius, std::optional<ContactResistance> resistance = std::nullopt);
+                 double radius, std::optional<ContactResistance> resistance = std::nullopt,
+                 double yield_strength = std::numeric_limits<double>::quiet_NaN());
 
     [[nodiscard]] std::string kind() const override { return "Hertz contact"; }
 
@@ -81,6 +82,12 @@ public:
     // With a resistance model: R of the spot at penetration d (+inf for d <= 0); else NaN.
     [[nodiscard]] double contact_resistance(const ElementState& s) const override;
     [[nodiscard]] double on_resistance() const override;
+    // Hertz's p0 = 3 F / (2 pi a^2) = 3 k d^(1/2) / (2 pi R) of the elastic F = k d^(3/2) over the
+    // elastic radius a = sqrt(R d) [Pa] (Johnson, Contact Mechanics, 1985, eq. 4.21); 0 for d <= 0.
+    [[nodiscard]] double contact_pressure(double d) const override;
+    // 1.6 Y: first yield below the surface of a sphere pressed on a flat (von Mises, nu = 0.3; Johnson,
+    // Contact Mechanics, 1985, §6.2, eq. 6.9) [Pa]; NaN without Y.
+    [[nodiscard]] double yield_onset_pressure() const override { return 1.6 * yield_strength_; }
     // The contact radius a [m] at penetration d [m]: sqrt(R d), or the plastic one where larger.
     [[nodiscard]] double contact_radius(double d) const;
 
@@ -92,6 +99,7 @@ public:
 private:
     double k_, alpha_, radius_;
     std::optional<ContactResistance> resistance_;
+    double yield_strength_;
 };
 
 // The family: one HertzContact per [[supports]] entry with law = "hertz"; it registers that option

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace vi {
@@ -21,6 +22,9 @@ std::vector<Impact> group_episodes(const std::vector<ContactEpisode>& episodes, 
             im.peak_penetration = std::max(im.peak_penetration, e.peak_penetration);
             im.impulse += e.impulse;
             im.closed_at_end = e.closed_at_end;
+            im.contact_energy += e.contact_energy;
+            im.peak_pressure = std::isnan(e.peak_pressure) ? e.peak_pressure : std::max(im.peak_pressure, e.peak_pressure);
+            if (e.yielded) im.yielded = im.yielded.value_or(false) || *e.yielded;
             ++im.episodes;
             continue;
         }
@@ -35,6 +39,9 @@ std::vector<Impact> group_episodes(const std::vector<ContactEpisode>& episodes, 
         im.impulse = e.impulse;
         im.episodes = 1;
         im.closed_at_end = e.closed_at_end;
+        im.contact_energy = e.contact_energy;
+        im.peak_pressure = e.peak_pressure;
+        im.yielded = e.yielded;
         last_of_support[static_cast<std::size_t>(e.support)] = static_cast<int>(impacts.size());
         impacts.push_back(im);
     }
@@ -43,6 +50,23 @@ std::vector<Impact> group_episodes(const std::vector<ContactEpisode>& episodes, 
 }
 
 }  // namespace
+
+ContactDamage contact_damage(const std::vector<Impact>& impacts) {
+    ContactDamage d;
+    d.peak_pressure = std::numeric_limits<double>::quiet_NaN();
+    for (const Impact& im : impacts) {
+        d.contact_energy += im.contact_energy;
+        d.peak_force = std::max(d.peak_force, im.peak_force);
+        if (!std::isnan(im.peak_pressure)) {
+            d.peak_pressure = std::isnan(d.peak_pressure) ? im.peak_pressure : std::max(d.peak_pressure, im.peak_pressure);
+        }
+        if (im.yielded) {
+            d.yield_known = true;
+            d.yield_impacts += *im.yielded ? 1 : 0;
+        }
+    }
+    return d;
+}
 
 ImpactSummary summarize_impacts(const TransientResult& r, const ImpactSettings& s) {
     ImpactSummary out;

@@ -12,7 +12,7 @@ namespace vi {
 
 // One impact in the paper's sense: episodes of one support separated by flights shorter than
 // group_gap (or each episode alone, without grouping). Onset and pre-impact velocity of the first episode, end of the last, largest peaks,
-// summed impulse.
+// summed impulse and contact energy.
 struct Impact {
     int support = 0;
     double t_on = 0.0, t_off = 0.0;   // [s]
@@ -22,7 +22,20 @@ struct Impact {
     double impulse = 0.0;             // [N s]
     int episodes = 0;
     bool closed_at_end = false;
+    double contact_energy = 0.0;      // summed over its episodes [J]; NaN where not recorded
+    double peak_pressure = 0.0;       // largest Hertz p0 [Pa]; NaN for a law without one
+    std::optional<bool> yielded;      // some episode passed the yield onset; empty without Y
 };
+
+// The damage indicators of a run (or of one actuation cycle) summed over its impacts.
+struct ContactDamage {
+    double contact_energy = 0.0;     // [J]; NaN where some episode's is not recorded
+    double peak_force = 0.0;         // [N]
+    double peak_pressure = 0.0;      // largest over the impacts that have one [Pa]; NaN when none has
+    int yield_impacts = 0;           // impacts whose p0 passed 1.6 Y
+    bool yield_known = false;        // some impact had a yield strength to check against
+};
+ContactDamage contact_damage(const std::vector<Impact>& impacts);
 
 // What the summary needs besides the solver's result.
 struct ImpactSettings {

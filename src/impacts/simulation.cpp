@@ -96,7 +96,8 @@ ImpactSettings impact_settings(const Case& c, const BuiltProblem& b) {
     return s;
 }
 
-// Every contact of the model with what holds it where it is adhesive, for the switching ledger.
+}  // namespace
+
 std::vector<LedgerContact> ledger_contacts(const Case& c, const BeamModel& m) {
     std::vector<LedgerContact> out;
     for (const NamedContact& k : m.contacts) {
@@ -111,14 +112,13 @@ std::vector<LedgerContact> ledger_contacts(const Case& c, const BeamModel& m) {
     return out;
 }
 
-}  // namespace
-
 TransientOptions transient_options(const SolverSettings& s, const SimulationOptions& o) {
     TransientOptions t;
     t.history = o.history;
     t.energy = o.energy;
     t.max_steps = s.max_steps;
     t.max_events = s.max_events;
+    t.progress = o.progress;
     return t;
 }
 

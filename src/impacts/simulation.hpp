@@ -2,7 +2,9 @@
 // One transient run of a case from start to summary: build, solve (the exact solver or CVODE, behind
 // TransientSolver), summarise (the impact ledger, and the switching ledger under electrode voltage).
 
+#include <functional>
 #include <optional>
+#include <vector>
 
 #include "impacts/impact_summary.hpp"
 #include "impacts/switching_ledger.hpp"
@@ -29,6 +31,8 @@ struct SimulationOptions {
     // case gives none; only with the history. Off by default, so that sweeps and fits of a case with a
     // field_step do not record one at every run.
     bool field = false;
+    // Called with the time the solver has reached [s] as it goes (TransientOptions::progress); empty: none.
+    std::function<void(double)> progress;
 };
 
 // Bounds of the field output: frames (one file each) and values held in memory (8 bytes each).
@@ -49,5 +53,9 @@ CvodeOptions cvode_options(const SolverSettings& s);
 // horizon too short to see the first impact, a limit of check_transient_run, checked before any
 // work) and std::runtime_error on numerical trouble.
 SimulationRun run_simulation(const Case& c, const SimulationOptions& o = {});
+
+// Every contact of the model, in the result's order, with what holds it where it is adhesive: what
+// switching_ledger takes.
+std::vector<LedgerContact> ledger_contacts(const Case& c, const BeamModel& m);
 
 }  // namespace vi

@@ -31,6 +31,8 @@ const std::vector<Suffix>& suffixes() {
             {"_v", "V"}, {"_f", "F"}, {"_k", "K"}, {"_ohm_m2", "Ω m²"}, {"_ohm_m", "Ω m"}, {"_ohm", "Ω"},
             // a curvature, and a gradient of a stress through a thickness
             {"_per_m", "1/m"}, {"_pa_per_m", "Pa/m"},
+            // a volume (the wear estimate of the cycles study)
+            {"_m3", "m³"},
         };
         std::stable_sort(v.begin(), v.end(), [](const Suffix& a, const Suffix& b) {
             return std::string_view(a.suffix).size() > std::string_view(b.suffix).size();
@@ -57,6 +59,8 @@ const std::vector<std::string_view>& dimensionless() {
         "z_top", "amplitude", "Y_#", "Phi_#", "Y_#_#", "Phi_#_#", "knudsen", "squeeze_number", "q_modal",
         "q_ringdown", "unproven_excess", "offset", "permittivity", "tolerance", "rtol",
         "restitution",  // a coefficient of restitution
+        "wear_coefficient",  // Archard's K
+        "cycle",  // an actuation cycle's index
         "level",  // a two-step drive's first level, a fraction of the voltage
         // text
         "status", "stage", "kind", "law", "verdict", "reason", "feature", "solver", "state",
@@ -100,7 +104,7 @@ std::string csv_unit_suffix(std::string_view unit) {
         {"N/m", "_n_m"},     {"N s/m", "_n_s_m"},   {"J/m^2", "_j_m2"},  {"1/s", "_per_s"}, {"m/s", "_m_s"},
         {"Hz", "_hz"},       {"rad", "_rad"},       {"V", "_v"},         {"K", "_k"},       {"Pa s", "_pa_s"},
         {"x/l", "_over_l"},  {"periods", "_periods"}, {"-", ""}, {"ohm", "_ohm"}, {"ohm m", "_ohm_m"},
-        {"ohm m^2", "_ohm_m2"}, {"1/m", "_per_m"}, {"Pa/m", "_pa_per_m"},
+        {"ohm m^2", "_ohm_m2"}, {"1/m", "_per_m"}, {"Pa/m", "_pa_per_m"}, {"m^3", "_m3"},
     };
     for (const auto& [u, suffix] : si) {
         if (u == unit) return std::string(suffix);

@@ -1,6 +1,7 @@
 #include "report/transient_output.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -34,13 +35,27 @@ nlohmann::json energy_json(const EnergyLedger& e, bool films) {
     return j;
 }
 
+// The damage indicators only where the run has them (the CVODE solver records the contact energy, a
+// Hertz law has a pressure, a yield strength a check), so that other summaries stay as they were.
 template <class Row>
 nlohmann::json contact_row(const Row& e) {
-    return {{"support", e.support},         {"t_on_s", e.t_on},
-            {"t_off_s", e.t_off},           {"v_in_m_s", e.v_in},
-            {"v_out_m_s", e.v_out},         {"peak_force_n", e.peak_force},
-            {"peak_penetration_m", e.peak_penetration}, {"impulse_n_s", e.impulse},
-            {"closed_at_end", e.closed_at_end}};
+    nlohmann::json j = {{"support", e.support},         {"t_on_s", e.t_on},
+                        {"t_off_s", e.t_off},           {"v_in_m_s", e.v_in},
+                        {"v_out_m_s", e.v_out},         {"peak_force_n", e.peak_force},
+                        {"peak_penetration_m", e.peak_penetration}, {"impulse_n_s", e.impulse},
+                        {"closed_at_end", e.closed_at_end}};
+    if (!std::isnan(e.contact_energy)) j["contact_energy_j"] = e.contact_energy;
+    if (!std::isnan(e.peak_pressure)) j["peak_pressure_pa"] = e.peak_pressure;
+    if (e.yielded) j["yield_exceeded"] = *e.yielded;
+    return j;
+}
+
+// The run's impacts summed (one actuation cycle): energy, peaks and the impacts past yield onset.
+nlohmann::json damage_json(const ContactDamage& d) {
+    nlohmann::json j = {{"impacts_contact_energy_j", d.contact_energy}, {"peak_force_n", d.peak_force}};
+    j["peak_pressure_pa"] = std::isnan(d.peak_pressure) ? nlohmann::json(nullptr) : nlohmann::json(d.peak_pressure);
+    j["yield_impacts"] = d.yield_known ? nlohmann::json(d.yield_impacts) : nlohmann::json(nullptr);
+    return j;
 }
 
 // The case as it ran: the values the run worked out for keys left to their defaults (the horizon and
@@ -196,6 +211,8 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
         impacts.push_back(row);
     }
     j["impacts"] = impacts;
+    const ContactDamage damage = contact_damage(s.impacts);
+    if (!s.impacts.empty() && !std::isnan(damage.contact_energy)) j["contact_damage"] = damage_json(damage);
     nlohmann::json eps = nlohmann::json::array();
     for (const ContactEpisode& e : r.episodes) eps.push_back(contact_row(e));
     j["episodes"] = eps;

@@ -63,6 +63,17 @@ const std::vector<SweepColumnDoc>& simulate_docs() {
          "below `r_on` at the end (it never settles in the horizon), without `r_on` or a resistance model"},
         {{"resistance_end_ohm"}, "ohm",
          "that contact's resistance at the end of the run; `nan` when it is open then, or without a resistance model"},
+        {{"contact_energy_j"}, "J",
+         "energy dissipated in the contacts over every impact (docs/hertz-contact.md §8); `nan` from the exact "
+         "solver, which does not record it"},
+        {{"peak_pressure_pa"}, "Pa", "largest Hertz peak pressure p0 of any impact; `nan` without a Hertz support"},
+        {{"yield_impacts"}, "count",
+         "impacts whose p0 passed the yield onset 1.6 Y; `nan` without a `yield_strength`"},
+        {{"support<k>_electrical_bounces", "support<k>_settle_time_s", "support<k>_resistance_end_ohm"}, "count, s, ohm",
+         "as `electrical_bounces`, `settle_time_s`, `resistance_end_ohm`, for support k (k = 0, 1, ... for every "
+         "support of the case); `nan` for a support without a resistance model"},
+        {{"support<k>_contact_energy_j", "support<k>_peak_pressure_pa", "support<k>_yield_impacts"}, "J, Pa, count",
+         "as `contact_energy_j`, `peak_pressure_pa`, `yield_impacts`, over the impacts of support k"},
     };
     return d;
 }

@@ -42,6 +42,36 @@ void add_electrical_cells(std::vector<SweepCell>& cells, const std::vector<Conta
     cells.push_back(std::isfinite(c.end_resistance) ? SweepCell(c.end_resistance) : SweepCell());
 }
 
+std::string support_prefix(int k) { return "support" + std::to_string(k) + "_"; }
+
+// The impacts' damage sums: contact energy (empty where not recorded), peak pressure (empty without
+// a law that has one), impacts past yield onset (empty without a yield strength).
+void add_damage_cells(std::vector<SweepCell>& cells, const ContactDamage& d) {
+    cells.push_back(std::isnan(d.contact_energy) ? SweepCell() : SweepCell(d.contact_energy));
+    cells.push_back(std::isnan(d.peak_pressure) ? SweepCell() : SweepCell(d.peak_pressure));
+    cells.push_back(d.yield_known ? SweepCell(static_cast<std::int64_t>(d.yield_impacts)) : SweepCell());
+}
+
+// Support k's own cells: its electrical ledger (as add_electrical_cells) and its impacts' damage.
+void add_support_cells(std::vector<SweepCell>& cells, const SimulationRun& run, int k) {
+    const std::string name = "supports[" + std::to_string(k) + "]";
+    const std::vector<NamedContact>& contacts = run.built.model.contacts;
+    int contact = -1;
+    for (std::size_t j = 0; j < contacts.size(); ++j) {
+        if (contacts[j].name == name) contact = static_cast<int>(j);
+    }
+    std::vector<ContactConduction> own;
+    for (const ContactConduction& c : run.result.conduction) {
+        if (c.contact == contact) own.push_back(c);
+    }
+    add_electrical_cells(cells, own);
+    std::vector<Impact> impacts;
+    for (const Impact& im : run.summary.impacts) {
+        if (im.support == contact) impacts.push_back(im);
+    }
+    add_damage_cells(cells, contact_damage(impacts));
+}
+
 // x/l values as one text cell, each read back exactly, so the cell is the same wherever it is computed.
 std::string positions_text(const std::vector<double>& xs) {
     std::string s;
@@ -97,7 +127,7 @@ std::vector<SweepColumn> pullin_columns() {
 
 }  // namespace
 
-std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes) {
+std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes, int supports) {
     if (analysis == SweepAnalysis::pullin) return pullin_columns();
     if (analysis == SweepAnalysis::stiction) {
         return {{"stuck", ""}, {"force_margin_n", "N"}, {"adhesion_margin_j_m2", "J/m^2"}, {"detached_length_m", "m"}};
@@ -139,10 +169,22 @@ std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes)
     cols.push_back({"electrical_bounces", ""});
     cols.push_back({"settle_time_s", "s"});
     cols.push_back({"resistance_end_ohm", "ohm"});
+    cols.push_back({"contact_energy_j", "J"});
+    cols.push_back({"peak_pressure_pa", "Pa"});
+    cols.push_back({"yield_impacts", ""});
+    for (int k = 0; k < supports; ++k) {
+        const std::string p = support_prefix(k);
+        cols.push_back({p + "electrical_bounces", ""});
+        cols.push_back({p + "settle_time_s", "s"});
+        cols.push_back({p + "resistance_end_ohm", "ohm"});
+        cols.push_back({p + "contact_energy_j", "J"});
+        cols.push_back({p + "peak_pressure_pa", "Pa"});
+        cols.push_back({p + "yield_impacts", ""});
+    }
     return cols;
 }
 
-std::vector<SweepCell> simulate_cells(const SimulationRun& run) {
+std::vector<SweepCell> simulate_cells(const SimulationRun& run, int supports) {
     const ImpactSummary& s = run.summary;
     const double w1 = run.built.model.omega1;
     std::vector<SweepCell> cells = {
@@ -196,6 +238,8 @@ std::vector<SweepCell> simulate_cells(const SimulationRun& run) {
         cells.push_back(static_cast<std::int64_t>(im.episodes));
     }
     add_electrical_cells(cells, run.result.conduction);
+    add_damage_cells(cells, contact_damage(s.impacts));
+    for (int k = 0; k < supports; ++k) add_support_cells(cells, run, k);
     return cells;
 }
 

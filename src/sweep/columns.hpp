@@ -49,8 +49,10 @@ std::optional<double> numeric_cell(const SweepCell& cell);
 // How many impacts get their own columns in a simulate sweep.
 inline constexpr int kSweepImpactColumns = 3;
 
-// The columns of `analysis`; `modes` is the number of bending modes of a modes sweep.
-std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes);
+// The columns of `analysis`; `modes` is the number of bending modes of a modes sweep, `supports` the
+// number of supports of the swept case (a simulate sweep's per-support columns; a sweep sets values,
+// never the number of entries).
+std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes, int supports = 0);
 
 // A transient's values in the order of sweep_result_columns(simulate, ...): omega1_rad_s, impacts,
 // episodes, T_s, T1_s, T2_s, Tp_s, Tp_reason, tau, tau1, tau2, tau_p, y_max_m, z_max,
@@ -58,8 +60,11 @@ std::vector<SweepColumn> sweep_result_columns(SweepAnalysis analysis, int modes)
 // release_time_s, grouped_bounces, switching_state, collapse_time_s (the switching ledger, empty
 // without electrodes), then per impact k = 1..3 impact<k>_support, _t_on_s, _v_in_m_s,
 // _peak_force_n, _peak_penetration_m, _duration_s, _episodes; then electrical_bounces, settle_time_s,
-// resistance_end_ohm (the first contact with a resistance model; empty without one).
-std::vector<SweepCell> simulate_cells(const SimulationRun& run);
+// resistance_end_ohm (the first contact with a resistance model; empty without one); then the
+// impacts' sums contact_energy_j, peak_pressure_pa, yield_impacts (empty where not recorded); then
+// for each support k < supports: support<k>_electrical_bounces, _settle_time_s, _resistance_end_ohm
+// (empty without its resistance model), _contact_energy_j, _peak_pressure_pa, _yield_impacts.
+std::vector<SweepCell> simulate_cells(const SimulationRun& run, int supports = 0);
 
 // A modal study's values in the order of sweep_result_columns(modes, modes): per mode i,
 // f_unsupported_<i>_hz, f_supported_<i>_hz, ratio_<i>, nodes_supported_<i>_over_l (x/l, space separated).

@@ -39,7 +39,7 @@ std::vector<SweepCell> analyse(const Case& c, const SweepSettings& settings) {
     SimulationOptions o;
     o.history = false;
     o.energy = false;
-    return simulate_cells(run_simulation(c, o));
+    return simulate_cells(run_simulation(c, o), settings.supports);
 }
 
 bool has_adhesion(const Case& c) {

@@ -28,6 +28,7 @@ struct SweepSettings {
     int modes = 3;                                  // bending modes of a modes sweep
     SupportModel support_model = SupportModel::pin; // supports in the supported modes
     double point_timeout = 60.0;                    // wall-clock limit of one point [s]; 0 = none
+    int supports = 0;                               // the swept case's supports: a simulate sweep's per-support columns
     PointAnalysis study_analysis;                   // stiction and air-q only (with_study_analyses)
 };
 

@@ -139,6 +139,10 @@ private:
     double locate_missed_switch(int e, double tret);
     // The contacts' conduction at a return of CVODE at t, located on the last step's dense output.
     void advance_conduction(double t);
+    // The open episodes' contact energy up to a return of CVODE at t, on the last step's dense output.
+    void advance_dissipation(double t);
+    // The state at a time inside the last step, in s_.tmp.
+    [[nodiscard]] const double* dense_state(double t);
     void toggle(double t, const std::vector<int>& which);
     void restart(double t);
     void add_counters();
@@ -175,6 +179,7 @@ private:
     long steps_done_ = 0, setups_done_ = 0;
     double t_restart_ = 0.0, last_event_t_ = -1.0;
     double t_done_ = 0.0;                // time of the last return of CVODE (all before is recorded)
+    double dissipation_t_ = 0.0;         // the episodes' contact energy is integrated up to here [s]
     int burst_ = 0;
     int stalled_roots_ = 0;              // root returns in a row at one instant that switched nothing
     bool paced_ = false;                 // check_pace applies (set in prepare)
@@ -298,6 +303,7 @@ double Driver::handle_roots(double tret) {
         }
     }
     sample_until(t_ev, true);
+    advance_dissipation(t_ev);
     episodes_.update_peaks(t_ev, N_VGetArrayPointer(s_.y));
     episodes_.update_extremes(t_ev, N_VGetArrayPointer(s_.y), modes_);
     advance_conduction(t_ev);
@@ -309,16 +315,29 @@ double Driver::handle_roots(double tret) {
     return t_ev;
 }
 
+const double* Driver::dense_state(double t) {
+    check(CVodeGetDky(s_.mem, t, 0, s_.tmp), "CVodeGetDky");
+    return N_VGetArrayPointer(s_.tmp);
+}
+
 void Driver::advance_conduction(double t) {
     if (!conduction_.active()) return;
     double tcur = 0.0, hlast = 0.0;
     check(CVodeGetCurrentTime(s_.mem, &tcur), "CVodeGetCurrentTime");
     check(CVodeGetLastStep(s_.mem, &hlast), "CVodeGetLastStep");
-    const auto at = [this](double ts) {
-        check(CVodeGetDky(s_.mem, ts, 0, s_.tmp), "CVodeGetDky");
-        return static_cast<const double*>(N_VGetArrayPointer(s_.tmp));
-    };
-    conduction_.advance(t, N_VGetArrayPointer(s_.y), modes_, std::max(tcur - hlast, t_restart_), at);
+    conduction_.advance(t, N_VGetArrayPointer(s_.y), modes_, std::max(tcur - hlast, t_restart_),
+                        [this](double ts) { return dense_state(ts); });
+}
+
+void Driver::advance_dissipation(double t) {
+    if (episodes_.any_open() && t > dissipation_t_) {
+        double tcur = 0.0, hlast = 0.0;
+        check(CVodeGetCurrentTime(s_.mem, &tcur), "CVodeGetCurrentTime");
+        check(CVodeGetLastStep(s_.mem, &hlast), "CVodeGetLastStep");
+        const double lo = std::max({dissipation_t_, tcur - hlast, t_restart_});
+        episodes_.add_dissipation(lo, t, modes_, [this](double ts) { return dense_state(ts); });
+    }
+    dissipation_t_ = std::max(dissipation_t_, t);
 }
 
 // Bisection on the dense output of the last step for the instant element e's switching function
@@ -473,6 +492,7 @@ std::optional<double> Driver::step(double t, double t_stop) {
     if (steps_done_ + nst > o_.max_steps) throw WorkLimitReached(step_limit_message(tret));
     check_pace(tret, steps_done_ + nst);
     check_run();
+    if (o_.progress) o_.progress(tret);
     if (flag == CV_ROOT_RETURN) {
         const int events_before = r_.stats.events;
         t = handle_roots(tret);
@@ -496,6 +516,7 @@ std::optional<double> Driver::step(double t, double t_stop) {
         }
     } else {
         sample_until(tret, true);
+        advance_dissipation(tret);
         episodes_.update_peaks(tret, N_VGetArrayPointer(s_.y));
         episodes_.update_extremes(tret, N_VGetArrayPointer(s_.y), modes_);
         advance_conduction(tret);

@@ -224,6 +224,10 @@ double ModalSystem::stored_energy(int e, int mode, double t, const double* y) co
     return element(e).stored_energy(own_state(e, element_time(t), y), mode);
 }
 
+double ModalSystem::dissipated_power(int e, int mode, double t, const double* y) const {
+    return element(e).dissipated_power(own_state(e, element_time(t), y), mode);
+}
+
 double ModalSystem::contact_displacement(int j, const double* y) const {
     const Eigen::MatrixXd& P = rows_[static_cast<std::size_t>(contacts_[static_cast<std::size_t>(j)])];
     return P.row(0).dot(ConstVec(y, r_));

@@ -82,6 +82,8 @@ public:
     [[nodiscard]] double resistance(int e, double t, const double* y) const;
     [[nodiscard]] RunEnd run_end(int e, double t, const double* y) const;
     [[nodiscard]] double stored_energy(int e, int mode, double t, const double* y) const;
+    // Element e's dissipated power at y in mode `mode` [W].
+    [[nodiscard]] double dissipated_power(int e, int mode, double t, const double* y) const;
     // The mode each element starts in at y: the problem's modes0, turned to the contact mode where a
     // contact's initial_mode says it touches and moves in.
     [[nodiscard]] std::vector<int> initial_modes(const double* y) const;

@@ -17,7 +17,8 @@ DesignProblem design_problem(const Case& base, const DesignRequest& q) {
     p.settings.point_timeout = q.point_timeout;
     p.settings = with_study_analyses(p.settings);
     check_sweep_analysis(p.base, p.settings);
-    p.columns = sweep_result_columns(p.settings.analysis, p.settings.modes);
+    p.settings.supports = static_cast<int>(p.base.supports.size());
+    p.columns = sweep_result_columns(p.settings.analysis, p.settings.modes, p.settings.supports);
     for (const std::string& v : q.vary) {
         DesignVariable variable = parse_design_variable(v, p.base);
         for (const DesignVariable& earlier : p.variables) {
