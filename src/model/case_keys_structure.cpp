@@ -93,6 +93,10 @@ SectionSpec beam_sections_section() {
     w.default_text = "beam.width";
     bind_optional<BeamSection>(w, [](BeamSection& x) -> std::optional<double>& { return x.width; });
     KeySpec& t = s.add_key(number_key("thickness", Dimension::length)).in(positive());
+    t.only(when<BeamSection>([](const BeamSection& x) { return x.layers.empty(); }, {"layers"},
+                             "cannot be combined with $.layers (the layers' thicknesses give it)",
+                             "the section has layers; set their thicknesses in the case file"));
+    t.when.doc_text = "no `layers`";
     t.means("t of this section, of [material]");
     t.default_text = "beam.thickness (or the layers' sum)";
     bind_optional<BeamSection>(t, [](BeamSection& x) -> std::optional<double>& { return x.thickness; });
