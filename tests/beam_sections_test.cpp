@@ -19,6 +19,7 @@
 #include "fem/section_properties.hpp"
 #include "impacts/simulation.hpp"
 #include "fem/system.hpp"
+#include "forces/squeeze_film.hpp"
 #include "io/case_reader.hpp"
 #include "io/case_writer.hpp"
 #include "modal/eigen_solver.hpp"
@@ -277,6 +278,26 @@ TEST(BeamSections, SectionKeysArePathsAndTheWrittenCaseReadsBack) {
     EXPECT_EQ(back.beam.sections[1].layers[0].material, "gold");
     EXPECT_EQ(back.beam.sections[1].layers[0].thickness, 0.5e-6);
     EXPECT_EQ(case_to_json(c)["beam"]["sections"][1]["layers"][0]["material"], "gold");
+}
+
+// A squeeze film under both sections (30 um and 15 um wide): at the gap at rest, a uniform unit
+// velocity dissipates the film's c(w, g) = mu_eff w^3 / g^3 over each section's length.
+TEST(BeamSections, SqueezeFilmUsesTheWidthOverIt) {
+    const Case c = base_with(kStepped + "[air]\n[[films]]\nfrom = 0.2\nto = 0.9\ngap = \"2 um\"\n");
+    const BeamModel b = build_beam_model(c);
+    const ForceElement* film = nullptr;
+    for (const auto& f : b.forces) {
+        if (f->name() == "films[0]") film = f.get();
+    }
+    ASSERT_NE(film, nullptr);
+    const std::vector<double> q(film->dofs().size(), 0.0);
+    std::vector<double> v(film->dofs().size(), 0.0);
+    for (std::size_t i = 0; i < v.size(); ++i) v[i] = b.is_v[static_cast<std::size_t>(film->dofs()[i])] ? 1.0 : 0.0;
+    const double power = film->dissipated_power(ElementState{0.0, q.data(), v.data(), q.data()}, 0);
+    const FilmGas gas{c.air->viscosity, c.air->lambda()};
+    const double l = 100e-6;
+    const double expected = film_coefficient(gas, 30e-6, 2e-6).c * 0.2 * l + film_coefficient(gas, 15e-6, 2e-6).c * 0.5 * l;
+    EXPECT_NEAR(power, expected, 1e-12 * expected);
 }
 
 double ledger_total(const EnergyLedger& e) {

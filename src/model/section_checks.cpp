@@ -19,17 +19,20 @@ std::string section_key(std::size_t k, const char* field) {
 void check_cover(std::vector<CaseProblem>& out, const std::vector<BeamSection>& s) {
     double end = 0.0;
     for (std::size_t k = 0; k < s.size(); ++k) {
-        if (!(s[k].to > s[k].from)) {
-            out.push_back({section_key(k, "to"), "must lie beyond its from (" + significant(s[k].from, 6) + ")"});
-            return;
-        }
         const double step = s[k].from - end;
         if (std::abs(step) > kSectionEndTolerance) {
-            const std::string before = k == 0 ? "the clamp end x/l = 0" : "beam.sections[" + std::to_string(k - 1) + "], which ends at x/l = " + significant(end, 6);
-            out.push_back({section_key(k, "from"),
-                           (step > 0.0 ? "leaves a gap from x/l = " + significant(end, 6) + " to " + significant(s[k].from, 6) + " after "
-                                       : "overlaps " ) + before +
-                               "; the sections must cover the beam from 0 to 1 in order, each from at the previous to"});
+            const std::string before = k == 0 ? "the beam's start" : "beam.sections[" + std::to_string(k - 1) +
+                                                                      "], which ends at x/l = " + significant(end, 6);
+            const std::string what = step > 0.0 ? "leaves a gap from x/l = " + significant(end, 6) + " to " +
+                                                      significant(s[k].from, 6) + " after "
+                                                : "overlaps ";
+            out.push_back({section_key(k, "from"), what + before +
+                                                       "; the sections must cover the beam from 0 to 1 in order, "
+                                                       "each from at the previous to"});
+            return;
+        }
+        if (!(s[k].to > s[k].from)) {
+            out.push_back({section_key(k, "to"), "must lie beyond its from (" + significant(s[k].from, 6) + ")"});
             return;
         }
         end = s[k].to;
