@@ -20,6 +20,8 @@ setup(
     version=project.version(SOURCE),
     packages=[commands.PACKAGE],
     package_dir={commands.PACKAGE: "python/vibroimpact"},
+    # The type stub and its marker (PEP 561) go into the wheel beside the Python files.
+    package_data={commands.PACKAGE: ["*.pyi", "py.typed"]},
     # No sources: commands.build_ext takes the file CMake built. Declared, it makes the wheel a
     # platform wheel for this interpreter (cp311-cp311-linux_x86_64).
     ext_modules=[Extension(f"{commands.PACKAGE}._vibroimpact", sources=[])],

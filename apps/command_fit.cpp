@@ -11,8 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "calibration/feature_fit.hpp"
-#include "calibration/trajectory_fit.hpp"
+#include "calibration/fit_run.hpp"
 #include "commands.hpp"
 #include "figure_output.hpp"
 #include "fit_report.hpp"
@@ -41,14 +40,6 @@ struct FitCommandOptions {
     ProgressSettings progress;
 };
 
-// A case key's error located in the case file; an error that already names its file or option as is.
-InputError in_case(const Case& c, const InputError& e, const std::string& data_file) {
-    const std::string what = e.what();
-    const std::string key = what.substr(0, what.find(": "));
-    if (key.find(':') != std::string::npos || key.rfind("-", 0) == 0 || key == data_file) return e;
-    return locate_in_case(c, e);
-}
-
 std::string command_line(const FitCommandOptions& o) {
     std::string command = "vibroimpact fit " + o.case_path;
     command += o.data.empty() ? " --features " + o.features : " --data " + o.data;
@@ -60,20 +51,24 @@ std::string command_line(const FitCommandOptions& o) {
     return command;
 }
 
-int finish(const FitCommandOptions& o, const nlohmann::json& j, OutputFiles files, const std::vector<FigureSpec>& figures,
-           const std::string& gnuplot, const std::string& text, const std::vector<const FitResult*>& results) {
+int finish(const FitCommandOptions& o, const FitRun& run, const std::string& gnuplot) {
+    nlohmann::json j = run.json;
+    j["command"] = command_line(o);
+    OutputFiles files;
+    files["fit_residuals.csv"] = run.residuals_csv;
     files["fit.json"] = j.dump(2) + "\n";
-    const std::optional<std::string> figure_failed = write_with_figures(o.out, std::move(files), figures, gnuplot);
+    const FigureSpec figure = run.trajectory ? trajectory_figure(*run.trajectory, run.shown()) : feature_figure(*run.features, run.shown());
+    const std::optional<std::string> figure_failed = write_with_figures(o.out, std::move(files), {figure}, gnuplot);
     if (o.json) {
         std::printf("%s\n", j.dump(2).c_str());
     } else {
-        std::printf("%sWritten to %s/\n", text.c_str(), o.out.c_str());
+        std::printf("%sWritten to %s/\n", run.text.c_str(), o.out.c_str());
     }
     const std::string figure_note =
         figure_failed ? "; the figure was not drawn (" + *figure_failed + "), fit.json and fit_residuals.csv are written" : "";
-    for (const FitResult* r : results) {
-        if (!r->converged) {
-            std::fprintf(stderr, "vibroimpact: fit: did not converge (%s); fit.json holds the last estimate%s\n", r->message.c_str(),
+    for (const FitResult& r : run.results) {
+        if (!r.converged) {
+            std::fprintf(stderr, "vibroimpact: fit: did not converge (%s); fit.json holds the last estimate%s\n", r.message.c_str(),
                          figure_note.c_str());
             return kExitFailure;
         }
@@ -84,117 +79,6 @@ int finish(const FitCommandOptions& o, const nlohmann::json& j, OutputFiles file
         return kExitFailure;
     }
     return kExitOk;
-}
-
-int run_features(const FitCommandOptions& o, const Case& c, const std::vector<FitParameter>& params, const std::string& gnuplot,
-                 const FitOptions& fo, Progress& progress) {
-    if (o.time_shift || o.scale || o.two_stage) {
-        throw InputError(std::string(o.time_shift ? "--time-shift" : o.scale ? "--scale" : "--two-stage") +
-                         ": works on a trajectory (--data), not on features");
-    }
-    const MeasuredFeatures data = read_measured_features(o.features);
-    check_features(c, data);
-    FitResult r;
-    try {
-        r = fit_features(c, params, data, fo);
-    } catch (const InputError& e) {
-        throw in_case(c, e, o.features);
-    }
-    progress.finish();
-    nlohmann::json j = fit_result_json(params, r);
-    j["command"] = command_line(o);
-    j["features"] = {{"file", data.file}, {"count", data.features.size()}};
-    j["rms_normalized_residual"] = r.rms;
-    for (std::size_t k = 0; k < data.features.size(); ++k) {
-        const MeasuredFeature& f = data.features[k];
-        j["feature_residuals"].push_back({{"name", f.name}, {"value", f.value}, {"sigma", f.sigma}, {"model", r.model[k]},
-                                          {"normalized", r.residual[k] / f.sigma}});
-    }
-    std::string text;
-    {
-        char head[512];
-        std::snprintf(head, sizeof head, "Fit of %s to %s (%zu features): %s after %d iterations, %d simulations; rms of "
-                      "(model - value) / sigma %.3g\n", o.case_path.c_str(), data.file.c_str(), data.features.size(),
-                      r.converged ? "converged" : "NOT converged", r.iterations, r.simulations, r.rms);
-        text = head;
-    }
-    text += fit_result_text(params, r);
-    OutputFiles files;
-    files["fit_residuals.csv"] = feature_residuals_csv(data, r);
-    return finish(o, j, std::move(files), {feature_figure(data, r)}, gnuplot, text, {&r});
-}
-
-int run_trajectory(const FitCommandOptions& o, const Case& c, std::vector<FitParameter> params, const std::string& gnuplot,
-                   const FitOptions& fo, Progress& progress) {
-    const std::string column = o.column.empty() ? watched_point_name(c) + "_m" : o.column;
-    check_trajectory_column(c, column);
-    std::size_t extra = (o.time_shift ? 1 : 0) + (o.scale ? 1 : 0);
-    const MeasuredTrajectory data = read_measured_trajectory(o.data, column, params.size() + extra + 1);
-    if (o.time_shift) params.push_back(time_shift_parameter(data.t.back() - data.t.front(), o.time_shift_range));
-    if (o.scale) params.push_back(scale_parameter(o.scale_range));
-    nlohmann::json j;
-    std::string text;
-    const FitResult* shown = nullptr;
-    std::vector<const FitResult*> results;
-    TwoStageFit two;
-    FitResult one;
-    try {
-        if (o.two_stage) {
-            two = fit_two_stage(c, params, data, fo);
-        } else {
-            one = fit_trajectory(c, params, data, fo);
-        }
-    } catch (const InputError& e) {
-        throw in_case(c, e, o.data);
-    }
-    progress.finish();
-    if (o.two_stage) {
-        std::vector<FitParameter> p1, p2;
-        for (std::size_t i : two.stage1_params) p1.push_back(params[i]);
-        for (std::size_t i : two.stage2_params) p2.push_back(params[i]);
-        nlohmann::json s1 = fit_result_json(p1, two.stage1), s2 = fit_result_json(p2, two.stage2);
-        s1["samples"] = two.split_samples;
-        s1["record_end_s"] = two.split_time;
-        s2["samples"] = data.t.size();
-        for (double e : two.stage2_conditional_std_error) {
-            s2["std_error_given_stage1"].push_back(std::isfinite(e) ? nlohmann::json(e) : nlohmann::json(nullptr));
-        }
-        j["two_stage"] = {{"first_impact_s", two.split_time}, {"stage1", s1}, {"stage2", s2}};
-        j["converged"] = two.stage1.converged && two.stage2.converged;
-        j["estimate"] = nlohmann::json::object();
-        for (std::size_t i = 0; i < params.size(); ++i) j["estimate"][params[i].name()] = two.estimate[i];
-        shown = &two.stage2;
-        results = {&two.stage1, &two.stage2};
-        char head[512];
-        std::snprintf(head, sizeof head, "Two-stage fit of %s to %s (%zu samples, %zu before the first impact at %.6g us):\n",
-                      o.case_path.c_str(), data.file.c_str(), data.t.size(), two.split_samples, two.split_time * 1e6);
-        text = head;
-        const auto stage = [&](const char* name, const FitResult& r, const std::vector<FitParameter>& p) {
-            char line[256];
-            std::snprintf(line, sizeof line, "Stage %s: %s after %d iterations, %d simulations\n", name,
-                          r.converged ? "converged" : "NOT converged", r.iterations, r.simulations);
-            text += line + fit_result_text(p, r);
-        };
-        stage("1 (before the first impact)", two.stage1, p1);
-        stage("2 (contact parameters, whole record)", two.stage2, p2);
-    } else {
-        j = fit_result_json(params, one);
-        shown = &one;
-        results = {&one};
-        char head[512];
-        std::snprintf(head, sizeof head, "Fit of %s to %s (%zu samples): %s after %d iterations, %d simulations; rms residual %s\n",
-                      o.case_path.c_str(), data.file.c_str(), data.t.size(), one.converged ? "converged" : "NOT converged",
-                      one.iterations, one.simulations, round_trip_text(one.rms).c_str());
-        text = head + fit_result_text(params, one);
-    }
-    j["command"] = command_line(o);
-    j["data"] = {{"file", data.file}, {"column", data.column}, {"samples", data.t.size()}};
-    j["rms_residual"] = shown->rms;
-    j["noise"] = shown->sigma_from_residuals ? nlohmann::json{{"from", "residuals"}, {"sigma", shown->sigma}}
-                                             : nlohmann::json{{"from", "data sigma column"}};
-    OutputFiles files;
-    files["fit_residuals.csv"] = trajectory_residuals_csv(data, *shown);
-    return finish(o, j, std::move(files), {trajectory_figure(data, *shown)}, gnuplot, text, results);
 }
 
 }  // namespace
@@ -235,16 +119,13 @@ CommandBody add_fit_command(CLI::App& app) {
 
     return [opt]() {
         const FitCommandOptions& o = *opt;
-        if (o.data.empty() && o.features.empty()) throw InputError("--data or --features: one is required");
-        if (!o.time_shift && !o.time_shift_range.empty()) throw InputError("--time-shift-range: needs --time-shift");
-        if (!o.scale && !o.scale_range.empty()) throw InputError("--scale-range: needs --scale");
-        if (!o.features.empty() && !o.column.empty()) throw InputError("--column: works on a trajectory (--data)");
+        const FitRequest request{o.fit, o.data, o.features, o.column, o.time_shift, o.time_shift_range,
+                                 o.scale, o.scale_range, o.two_stage};
+        check_fit_request(request);
         const ProgressStyle style = progress_style(o.progress);
         const std::string gnuplot = require_gnuplot(o.gnuplot, "the fit figure");
         const Case c = read_case_file(o.case_path);
-        std::vector<FitParameter> params;
-        for (const std::string& f : o.fit) params.push_back(parse_fit_parameter(f, c));
-        check_distinct(params);
+        fit_parameters(c, request);  // the settings refused before the progress line starts
         // Iterations of the budget: a start that converges early counts the rest of its share as done,
         // outside the rate (so the time left is that of the budget at the rate of real iterations).
         const int budget = (o.two_stage ? 2 : 1) * o.starts * o.max_iterations;
@@ -254,9 +135,12 @@ CommandBody add_fit_command(CLI::App& app) {
                                 progress.advance(static_cast<std::size_t>(iterations));
                                 progress.skip(static_cast<std::size_t>(unused));
                             }};
-        const ProgressTicker ticker(progress);
-        return o.data.empty() ? run_features(o, c, params, gnuplot, fo, progress)
-                              : run_trajectory(o, c, params, gnuplot, fo, progress);
+        const FitRun run = [&] {
+            const ProgressTicker ticker(progress);
+            return run_fit(c, o.case_path, request, fo);
+        }();
+        progress.finish();
+        return finish(o, run, gnuplot);
     };
 }
 

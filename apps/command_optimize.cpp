@@ -18,6 +18,7 @@
 #include "figure_output.hpp"
 #include "progress.hpp"
 #include "design/design_journal.hpp"
+#include "design/optimize_output.hpp"
 #include "design/optimizer.hpp"
 #include "io/case_reader.hpp"
 #include "io/csv_writer.hpp"
@@ -28,71 +29,12 @@
 #include "model/run_control.hpp"
 #include "plot/figure_gnuplot.hpp"
 #include "stop_signals.hpp"
-#include "study/analyses/sweep_analyses.hpp"
+#include "study/analyses/design_setup.hpp"
 
 namespace vi::cli {
 namespace {
 
 CsvCell count(std::size_t n) { return csv_count(static_cast<std::int64_t>(n)); }
-
-// index, stage, each variable (its path and unit: supports[0].gap_m), the objective, each constraint's
-// quantity, feasible, best_<objective> (the best feasible so far), status.
-std::string evaluations_csv(const DesignProblem& p, const OptimizeResult& r) {
-    const std::string& q = p.columns[p.objective].name;
-    CsvTable t;
-    t.header = {"index", "stage"};
-    for (const DesignVariable& v : p.variables) t.header.push_back(case_path_column(v.path));
-    t.header.push_back(q);
-    for (const DesignConstraint& c : p.constraints) t.header.push_back(p.columns[c.column].name);
-    t.header.insert(t.header.end(), {"feasible", "best_" + q, "status"});
-    for (const DesignEvaluation& e : r.evaluations) {
-        std::vector<CsvCell> row{count(e.index), csv_text(e.stage)};
-        for (double x : e.x) row.push_back(csv_number(x));
-        row.push_back(csv_number(e.outcome.objective));
-        for (const auto& c : e.outcome.constraints) row.push_back(csv_number(c));
-        row.insert(row.end(), {csv_flag(e.feasible), csv_number(e.best), csv_text(e.outcome.status)});
-        t.add_row(row);
-    }
-    return t.str();
-}
-
-nlohmann::json result_json(const DesignProblem& p, const OptimizeResult& r, const std::string& command) {
-    nlohmann::json j;
-    j["command"] = command;
-    j["objective"] = {{"quantity", p.columns[p.objective].name}, {"sense", p.maximize ? "maximize" : "minimize"}};
-    for (const DesignVariable& v : p.variables) j["variables"].push_back({{"path", v.path.text()}, {"low", v.low}, {"high", v.high}});
-    j["constraints"] = nlohmann::json::array();
-    for (const DesignConstraint& c : p.constraints) j["constraints"].push_back(c.text);
-    int global = 0;
-    for (const DesignEvaluation& e : r.evaluations) global += e.stage == "global" ? 1 : 0;
-    j["evaluations"] = {{"global", global}, {"local", static_cast<int>(r.evaluations.size()) - global}};
-    j["global_end"] = r.global_end;
-    j["local_end"] = r.local_end;
-    if (r.best) {
-        const DesignEvaluation& b = r.evaluations[*r.best];
-        nlohmann::json best;
-        best["index"] = b.index;
-        for (std::size_t i = 0; i < b.x.size(); ++i) best["x"][p.variables[i].path.text()] = b.x[i];
-        best["objective"] = *b.outcome.objective;
-        for (std::size_t k = 0; k < p.constraints.size(); ++k) best["constraints"][p.constraints[k].text] = *b.outcome.constraints[k];
-        j["best"] = best;
-    } else {
-        j["best"] = nullptr;
-    }
-    return j;
-}
-
-// How the work went: the only part of optimize.json that depends on the threads.
-nlohmann::json run_json(const OptimizeResult& r, double wall_s) {
-    return {{"threads", r.threads},
-            {"from_journal", r.reused},
-            {"designs_computed", r.computed},
-            {"rounds", r.batches},
-            {"computed_ahead_unused", r.unused_guesses},
-            {"look_ahead_stopped_after_rounds", r.look_ahead_stopped_after},
-            {"look_ahead_s", r.look_ahead_s},
-            {"wall_s", wall_s}};
-}
 
 FigureSpec convergence_figure(const DesignProblem& p, const OptimizeResult& r) {
     const std::string q = p.columns[p.objective].name;
@@ -172,27 +114,8 @@ void print_result(const OptimizeCommandOptions& o, const DesignProblem& p, const
 }
 
 DesignProblem read_problem(const OptimizeCommandOptions& o, const std::string& case_text) {
-    DesignProblem p;
-    p.base = read_case_text(case_text, o.case_path);
-    p.settings.analysis = parse_sweep_analysis(o.analysis);
-    p.settings.modes = o.modes;
-    p.settings.point_timeout = o.point_timeout;
-    p.settings = with_study_analyses(p.settings);
-    check_sweep_analysis(p.base, p.settings);
-    p.columns = sweep_result_columns(p.settings.analysis, p.settings.modes);
-    for (const std::string& v : o.vary) {
-        DesignVariable variable = parse_design_variable(v, p.base);
-        for (const DesignVariable& earlier : p.variables) {
-            if (earlier.path.text() == variable.path.text()) {
-                throw InputError("--vary " + v + ": " + variable.path.text() + " is already varied by --vary " + earlier.setting);
-            }
-        }
-        p.variables.push_back(std::move(variable));
-    }
-    p.maximize = !o.maximize.empty();
-    p.objective = quantity_column(p.maximize ? o.maximize : o.minimize, p.columns, p.maximize ? "--maximize" : "--minimize");
-    for (const std::string& c : o.constraints) p.constraints.push_back(parse_design_constraint(c, p.columns));
-    return p;
+    return design_problem(read_case_text(case_text, o.case_path),
+                          {o.vary, o.minimize, o.maximize, o.constraints, o.analysis, o.modes, o.point_timeout});
 }
 
 // The search, reported as it goes: designs used of --max-evals (the search may end sooner), those
@@ -247,8 +170,8 @@ int run_optimize(const OptimizeCommandOptions& opt) {
     try {
         r = search(p, o, style, opt.progress.interval_s);
         const double wall_s = seconds_since(t0);
-        j = result_json(p, r, command_text(opt, p));
-        j["run"] = run_json(r, wall_s);
+        j = optimize_result_json(p, r, command_text(opt, p));
+        j["run"] = optimize_run_json(r, wall_s);
         OutputFiles files;
         files["optimize.json"] = j.dump(2) + "\n";
         files["evaluations.csv"] = evaluations_csv(p, r);

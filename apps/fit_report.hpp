@@ -1,10 +1,6 @@
 #pragma once
-// What `vibroimpact fit` writes: fit.json's parts, the text summary, the residual tables and the
-// figures of a trajectory or feature fit (docs/calibration.md).
-
-#include <nlohmann/json.hpp>
-#include <string>
-#include <vector>
+// The figures `vibroimpact fit` draws of a trajectory or feature fit (docs/calibration.md); the
+// JSON, text and tables are the library's (calibration/fit_output.hpp).
 
 #include "calibration/least_squares.hpp"
 #include "io/measured_features.hpp"
@@ -13,20 +9,9 @@
 
 namespace vi::cli {
 
-// One fit's (or one stage's) outcome: convergence, the parameters with their uncertainty, the
-// correlation matrix and the table of starts.
-nlohmann::json fit_result_json(const std::vector<FitParameter>& params, const FitResult& r);
-
-// The same as text lines: the parameters (nuisance ones marked), then the starts when there were several.
-std::string fit_result_text(const std::vector<FitParameter>& params, const FitResult& r);
-
-// t_s, data_<column>, model_<column>, residual_<column> per sample (the column's unit in its name: tip_m).
-std::string trajectory_residuals_csv(const MeasuredTrajectory& data, const FitResult& r);
+// The data and the fitted model against time, and the residual below.
 FigureSpec trajectory_figure(const MeasuredTrajectory& data, const FitResult& r);
-
-// feature (its name, e.g. f1_hz, carries its unit), value, sigma, model and residual in that unit
-// (*_in_feature_unit), residual_over_sigma, per feature.
-std::string feature_residuals_csv(const MeasuredFeatures& data, const FitResult& r);
+// Each feature's residual in units of its sigma.
 FigureSpec feature_figure(const MeasuredFeatures& data, const FitResult& r);
 
 }  // namespace vi::cli

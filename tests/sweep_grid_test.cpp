@@ -103,6 +103,30 @@ TEST(SweepGrid, BadSettingsNameTheSettingAndTheReason) {
     }
 }
 
+// The option and the path travel beside the message, whose spec may hold ':' and '=' itself.
+TEST(SweepGrid, ASettingsErrorKeepsItsOptionAndPath) {
+    for (const auto& [settings, key] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+             {{"supports[0].position=0.5:1"}, "supports[0].position"},
+             {{"supports[0].positio=0.5"}, "supports[0].positio"},
+             {{"beam.length=1e-4", "beam.length=2e-4:3e-4:2"}, "beam.length"},
+             {{"supports[0].position"}, "supports[0].position"}}) {
+        try {
+            parse_sweep_grid(settings, support_case());
+            ADD_FAILURE() << settings.back() << " was taken";
+        } catch (const InputError& e) {
+            EXPECT_EQ(e.option(), "--set") << e.what();
+            EXPECT_EQ(e.key(), key) << e.what();
+            EXPECT_EQ(std::string(e.what()).rfind("--set " + settings.back() + ": ", 0), 0u) << e.what();
+        }
+    }
+    try {
+        parse_sweep_grid({}, support_case());
+        ADD_FAILURE() << "no setting was taken";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.option(), "") << "an error of no one setting has no option apart";
+    }
+}
+
 TEST(SweepGrid, TooManyPointsAreRefused) {
     const std::string err = error_of({"beam.length=1:2:10000", "beam.width=1:2:10000", "beam.thickness=1:2:10"});
     EXPECT_NE(err.find("more than 100000000 points"), std::string::npos) << err;

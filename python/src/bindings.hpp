@@ -26,6 +26,10 @@ void bind_analyses(py::module_& m);
 void bind_sweep(py::module_& m);
 // uq_binding.cpp: uq.
 void bind_uq(py::module_& m);
+// design_binding.cpp: fit and optimize.
+void bind_design(py::module_& m);
+// paper_binding.cpp: paper.
+void bind_paper(py::module_& m);
 
 // convert.cpp: a CSV text as written by the command line -> dict of numpy arrays, one per column
 // in file order (read by io/csv_reader.hpp): int64 for integer_columns without a missing value,

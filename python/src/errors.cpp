@@ -23,7 +23,7 @@ struct Located {
 };
 
 // "FILE:LINE: rest" (the reader and locate_in_case), "FILE: cannot read file (...)", then in rest
-// "KEY: reason" where KEY has no space, or "--set PATH=SPEC: reason" (the key is PATH).
+// "KEY: reason" where KEY has no space.
 Located locate(const std::string& message) {
     Located l;
     std::string rest = message;
@@ -47,8 +47,7 @@ Located locate(const std::string& message) {
     }
     const auto sep = rest.find(": ");
     if (sep != std::string::npos) {
-        std::string key = rest.substr(0, sep);
-        if (key.rfind("--set ", 0) == 0) key = key.substr(6, key.find('=') - 6);  // npos - 6: to the end
+        const std::string key = rest.substr(0, sep);
         if (!key.empty() && key.find(' ') == std::string::npos) {
             l.key = key;
             rest = rest.substr(sep + 2);
@@ -64,12 +63,25 @@ py::object optional_object(const std::optional<std::string>& v) { return v ? py:
 PyObject* input_error_type = nullptr;
 PyObject* solver_error_type = nullptr;
 
-void raise_input_error(const std::string& message) {
-    const Located l = locate(message);
+// The error of an option's setting ("--set PATH=SPEC: reason") carries its option and path; the
+// message is not taken apart, since the spec may hold ':' itself. Every other message is.
+void raise_input_error(const InputError& e) {
+    const std::string message = e.what();
+    Located l;
+    std::optional<std::string> option;
+    if (!e.option().empty()) {
+        option = e.option();
+        l.key = e.key();
+        const auto sep = message.find(": ", e.option().size() + 1 + e.key().size());
+        l.reason = sep == std::string::npos ? message : message.substr(sep + 2);
+    } else {
+        l = locate(message);
+    }
     py::object error = py::reinterpret_borrow<py::object>(input_error_type)(message);
     error.attr("file") = optional_object(l.file);
     error.attr("line") = l.line ? py::object(py::int_(*l.line)) : py::none();
     error.attr("key") = optional_object(l.key);
+    error.attr("option") = optional_object(option);
     error.attr("reason") = py::str(l.reason);
     PyErr_SetObject(input_error_type, error.ptr());
 }
@@ -81,7 +93,8 @@ void bind_errors(py::module_& m) {
     static py::exception<std::runtime_error> solver_error(m, "SolverError", PyExc_RuntimeError);
     input_error_type = input_error.ptr();
     solver_error_type = solver_error.ptr();
-    input_error.doc() = "Bad input (case, path, value): attributes file, line, key (None when unknown) and reason";
+    input_error.doc() =
+        "Bad input (case, path, value): attributes file, line, key, option (None when unknown) and reason";
     solver_error.doc() = "A run that could not finish: numerical trouble or a bound on its work or time";
     py::register_exception_translator([](std::exception_ptr p) {
         try {
@@ -89,7 +102,7 @@ void bind_errors(py::module_& m) {
         } catch (const py::builtin_exception&) {
             throw;  // pybind11's own (cast errors, ...): its default translation
         } catch (const InputError& e) {
-            raise_input_error(e.what());
+            raise_input_error(e);
         } catch (const StopRequested&) {
             PyErr_SetNone(PyExc_KeyboardInterrupt);
         } catch (const std::runtime_error& e) {

@@ -9,4 +9,7 @@ PYBIND11_MODULE(_vibroimpact, m) {
     vi::python::bind_analyses(m);
     vi::python::bind_sweep(m);
     vi::python::bind_uq(m);
+    vi::python::bind_design(m);
+    vi::python::bind_paper(m);
+    m.attr("__version__") = VI_VERSION;  // CMake's project VERSION
 }

@@ -93,7 +93,7 @@ def test_the_metadata_has_cmakes_version_and_numpy(stand_in_build, tmp_path):
     assert stand_in_build[1] == []  # the metadata needs no build
 
 
-def test_the_wheel_holds_the_source_init_and_the_cmake_built_extension(stand_in_build, tmp_path):
+def test_the_wheel_holds_the_source_package_and_the_cmake_built_extension(stand_in_build, tmp_path):
     package, calls = stand_in_build
     name = backend.build_wheel(str(tmp_path / "dist"))
     version = project.version(SOURCE_DIR)
@@ -102,8 +102,11 @@ def test_the_wheel_holds_the_source_init_and_the_cmake_built_extension(stand_in_
     assert calls == [(SOURCE_DIR, tmp_path / "cmake")]
     with zipfile.ZipFile(tmp_path / "dist" / name) as whl:
         modules = {n for n in whl.namelist() if n.startswith("vibroimpact/")}
-        assert modules == {"vibroimpact/__init__.py", f"vibroimpact/_vibroimpact{SUFFIX}"}
-        assert whl.read("vibroimpact/__init__.py") == (SOURCE_DIR / "python/vibroimpact/__init__.py").read_bytes()
+        sources = [f for f in (SOURCE_DIR / "python/vibroimpact").iterdir() if f.suffix in (".py", ".pyi") or f.name == "py.typed"]
+        assert {"__init__.py", "__init__.pyi", "py.typed"} <= {f.name for f in sources}
+        assert modules == {f"vibroimpact/{f.name}" for f in sources} | {f"vibroimpact/_vibroimpact{SUFFIX}"}
+        for f in sources:
+            assert whl.read(f"vibroimpact/{f.name}") == f.read_bytes(), f.name
         assert whl.read(f"vibroimpact/_vibroimpact{SUFFIX}") == b"\x7fELF not really"
         wheel_info = whl.read(f"vibroimpact-{version}.dist-info/WHEEL").decode()
         assert "Root-Is-Purelib: false\n" in wheel_info and f"Tag: {python}-{python}-linux_" in wheel_info

@@ -19,7 +19,7 @@ std::string FitParameter::name() const {
 }
 
 FitParameter parse_fit_parameter(const std::string& text, const Case& c) {
-    const auto fail = [&](const std::string& reason) { return InputError("--fit " + text + ": " + reason); };
+    const auto fail = [&](const std::string& reason) { return InputError("--fit", text, reason); };
     const std::size_t eq = text.find('=');
     FitParameter p;
     p.setting = text;

@@ -16,7 +16,7 @@ bool is_text_column(const std::string& name) { return sweep_column_is_text(name)
 }  // namespace
 
 DesignVariable parse_design_variable(const std::string& text, const Case& c) {
-    const auto fail = [&](const std::string& reason) { return InputError("--vary " + text + ": " + reason); };
+    const auto fail = [&](const std::string& reason) { return InputError("--vary", text, reason); };
     const std::size_t eq = text.find('=');
     if (eq == std::string::npos) throw fail("expected PATH=LOW:HIGH, e.g. supports[0].position=0.3:1");
     DesignVariable v;

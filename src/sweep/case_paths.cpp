@@ -130,7 +130,7 @@ CasePath resolve_setting_path(std::string_view option, const std::string& settin
     try {
         return resolve_case_path(setting.substr(0, setting.find('=')), c);
     } catch (const InputError& e) {
-        throw InputError(std::string(option) + " " + setting + ": " + e.what());
+        throw InputError(option, setting, e.what());
     }
 }
 

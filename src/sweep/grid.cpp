@@ -12,7 +12,7 @@
 namespace vi {
 
 SweepAxis parse_sweep_setting(const std::string& setting, const Case& c) {
-    const auto fail = [&](const std::string& reason) { return InputError("--set " + setting + ": " + reason); };
+    const auto fail = [&](const std::string& reason) { return InputError("--set", setting, reason); };
     const std::size_t eq = setting.find('=');
     if (eq == std::string::npos) throw fail("expected PATH=SPEC, e.g. supports[0].position=0.5:1:11");
     SweepAxis axis;
@@ -39,15 +39,15 @@ SweepGrid::SweepGrid(std::vector<SweepAxis> axes) : axes_(std::move(axes)) {
     for (std::size_t a = 0; a < axes_.size(); ++a) {
         for (std::size_t b = 0; b < a; ++b) {
             if (axes_[a].path == axes_[b].path) {
-                throw InputError("--set " + axes_[a].setting + ": " + axes_[a].path.text() + " is already swept by --set " +
-                                 axes_[b].setting);
+                throw InputError("--set", axes_[a].setting,
+                                 axes_[a].path.text() + " is already swept by --set " + axes_[b].setting);
             }
         }
         const std::size_t n = axes_[a].values.size();
-        if (n == 0) throw InputError("--set " + axes_[a].setting + ": empty range");
+        if (n == 0) throw InputError("--set", axes_[a].setting, "empty range");
         if (size_ > kMaxPoints / n) {
-            throw InputError("--set " + axes_[a].setting + ": the grid would have more than " +
-                             std::to_string(kMaxPoints) + " points");
+            throw InputError("--set", axes_[a].setting,
+                             "the grid would have more than " + std::to_string(kMaxPoints) + " points");
         }
         size_ *= n;
     }

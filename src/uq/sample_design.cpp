@@ -7,7 +7,7 @@
 namespace vi {
 
 UqInput parse_uq_input(const std::string& text, const Case& c) {
-    const auto fail = [&](const std::string& reason) { return InputError("--vary " + text + ": " + reason); };
+    const auto fail = [&](const std::string& reason) { return InputError("--vary", text, reason); };
     const std::size_t eq = text.find('=');
     if (eq == std::string::npos) throw fail("expected PATH=DIST:..., e.g. beam.thickness=normal:2um:0.05um");
     UqInput in;
@@ -34,7 +34,7 @@ std::vector<UqInput> parse_uq_inputs(const std::vector<std::string>& texts, cons
     for (const std::string& t : texts) {
         UqInput in = parse_uq_input(t, c);
         for (const UqInput& other : inputs) {
-            if (other.path == in.path) throw InputError("--vary " + t + ": " + in.path.text() + " is already varied by --vary " + other.setting);
+            if (other.path == in.path) throw InputError("--vary", t, in.path.text() + " is already varied by --vary " + other.setting);
         }
         inputs.push_back(std::move(in));
     }

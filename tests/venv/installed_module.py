@@ -21,6 +21,7 @@ venv = pathlib.Path(sys.prefix).resolve()
 assert venv in where.parents, f"vibroimpact imported from {where}, not from the venv {venv}"
 installed = importlib.metadata.version("vibroimpact")
 assert installed == version, f"installed version {installed}, CMake's project VERSION {version}"
+assert vi.__version__ == version, f"vibroimpact.__version__ {vi.__version__}, CMake's project VERSION {version}"
 
 run = vi.simulate(vi.Case.from_file(case_file))
 cli = json.loads(pathlib.Path(cli_summary).read_text())
