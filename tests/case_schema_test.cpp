@@ -110,6 +110,8 @@ TEST(CaseSchema, EveryKeyIsCompletelyDescribed) {
             EXPECT_FALSE(k.unit.empty());
             if (is_numeric(k.kind) || k.kind == KeyKind::flag) {
                 EXPECT_TRUE(k.get_number && k.set_number);
+            } else if (k.kind == KeyKind::layer_stack) {
+                EXPECT_TRUE(k.layers);
             } else {
                 EXPECT_TRUE(k.get_text && k.set_text);
             }

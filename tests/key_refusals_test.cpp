@@ -172,6 +172,18 @@ rise = "1 us"
 [solver]
 horizon = "10 us"
 settle_tolerance = 0.02
+[[beam.sections]]
+from = 0
+to = 1
+width = "30 um"
+thickness = "2 um"
+[[materials]]
+name = "gold"
+youngs_modulus = "79 GPa"
+density = "19300 kg/m^3"
+poisson_ratio = 0.42
+residual_stress = "10 MPa"
+stress_gradient = 1e12
 )";
 
 // A base case as case_to_toml writes it (every key in effect on a line of its own) and the line of

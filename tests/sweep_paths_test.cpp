@@ -21,7 +21,8 @@ namespace {
 
 // The base case with two supports, ratio damping, a harmonic and a step load, a displacement step
 // with a modal velocity, electrodes with a sine, a step (on an adhesive layer), a pulse and a
-// two-step drive, air and two film spans: every path has something to address.
+// two-step drive, air and two film spans, two materials and two sections (one layered): every path
+// has something to address.
 Case full_case() {
     const std::string text = test::kBaseCase +
                              "[damping]\nratios = [0.01, 0.02]\nmodes = [1, 3]\n"
@@ -41,7 +42,12 @@ Case full_case() {
                              "[air]\npressure = \"100 Pa\"\n"
                              "[[films]]\nfrom = 0.0\nto = 0.05\ngap = \"1 um\"\n"
                              "[[films]]\nfrom = 0.92\nto = 0.95\nside = \"above\"\ngap = \"1 um\"\n"
-                             "[solver]\nhorizon = \"50 us\"\n";
+                             "[solver]\nhorizon = \"50 us\"\n"
+                             "[[materials]]\nname = \"a\"\nyoungs_modulus = \"100 GPa\"\ndensity = \"5000 kg/m^3\"\npoisson_ratio = 0.3\n"
+                             "[[materials]]\nname = \"b\"\nyoungs_modulus = \"80 GPa\"\ndensity = \"9000 kg/m^3\"\npoisson_ratio = 0.4\n"
+                             "[[beam.sections]]\nfrom = 0\nto = 0.5\n"
+                             "layers = [{ material = \"a\", thickness = \"1 um\" }, { material = \"b\", thickness = \"1 um\" }]\n"
+                             "[[beam.sections]]\nfrom = 0.5\nto = 1\nwidth = \"20 um\"\nthickness = \"1.5 um\"\n";
     return read_case_text(text, "full.toml");
 }
 
@@ -141,7 +147,8 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
     // keys beyond t_on and frequency (rise, hold, fall, level, phase, bias); since every number of the
     // schema is a path, the electrode's dielectric_modulus, work_of_adhesion, adhesion_range and
     // width, and the film's from, to and gap; the Hertz law's 13 numbers; solver.field_step.
-    EXPECT_EQ(checked, 82);
+    // The sections' from, to, width and thickness and the materials' five numbers.
+    EXPECT_EQ(checked, 91);
 }
 
 TEST(SweepCasePaths, ValuesLandWhereTheCaseFileWouldPutThem) {
@@ -248,7 +255,7 @@ TEST(SweepCasePaths, BadPathsSayWhatIsWrong) {
         const char* reason;
     } cases[] = {
         {"supports[0].foo", &full, "unknown key 'foo' in supports[i] (accepted: position, gap,"},
-        {"foo.bar", &full, "unknown key 'foo' (accepted: beam, material, supports[i],"},
+        {"foo.bar", &full, "unknown key 'foo' (accepted: beam, beam.sections[i], material, materials[i], supports[i],"},
         {"supports[0].stifness", &full, "unknown key 'stifness' in supports[i] (did you mean 'stiffness'?)"},
         {"suports[0].gap", &full, "unknown key 'suports' (did you mean 'supports'?)"},
         {"supports[2].position", &full, "supports[2]: index out of range (the case has 2 supports)"},

@@ -56,8 +56,11 @@ Mesh build_mesh(const Beam& beam, const std::vector<Support>& supports) {
     const double merge = kNodeMergeTolerance * h;
     std::vector<bool> taken(static_cast<std::size_t>(m) + 1, false);
     std::vector<double> insert;
-    for (const Support& s : supports) {
-        const double x0 = s.position * l;
+    // The supports' places, then the section boundaries inside the beam: each needs a node.
+    std::vector<double> places;
+    for (const Support& s : supports) places.push_back(s.position * l);
+    for (std::size_t k = 1; k < beam.sections.size(); ++k) places.push_back(beam.sections[k].from * l);
+    for (const double x0 : places) {
         const int j = std::clamp(static_cast<int>(std::lround(x0 / h)), 0, m);
         const double gap = std::abs(x0 - mesh.x[static_cast<std::size_t>(j)]);
         if (gap <= merge) {

@@ -1,5 +1,6 @@
 #pragma once
-// Mesh: node coordinates along the beam, a uniform grid with one node exactly at each support.
+// Mesh: node coordinates along the beam, a uniform grid with one node exactly at each support and at
+// each boundary between two sections.
 
 #include <vector>
 

@@ -31,6 +31,19 @@ System build_system(const Case& c, SupportModel model) {
     s.left = c.beam.left;
     s.right = c.beam.right;
     s.props = {c.material.effective_modulus(), c.beam.area(), c.beam.second_moment(), c.material.density};
+    s.sections = beam_sections(c);
+    s.sectioned = !c.beam.sections.empty();
+    std::vector<ElementProperties> per_section;
+    for (std::size_t k = 0; k < s.sections.size(); ++k) {
+        const bool layered = k < c.beam.sections.size() && !c.beam.sections[k].layers.empty();
+        per_section.push_back(c.beam.sections.empty() ? s.props : element_properties(c, s.sections[k], layered));
+    }
+    for (int e = 0; e < s.mesh.element_count(); ++e) {
+        const double mid = 0.5 * (s.mesh.x[static_cast<std::size_t>(e)] + s.mesh.x[static_cast<std::size_t>(e) + 1]);
+        const std::size_t k = section_index_at(c.beam, mid / c.beam.length);
+        s.element_section.push_back(static_cast<int>(k));
+        s.element_props.push_back(per_section[k]);
+    }
     s.total_dofs = 3 * s.mesh.node_count();
 
     const std::vector<bool> fixed = constrained_dofs(c, s.mesh, model);
@@ -51,12 +64,13 @@ System build_system(const Case& c, SupportModel model) {
     gt.reserve(kt.capacity());
     // The residual stress's axial force: constant along a beam whose ends hold the axis (case checks
     // refuse it otherwise), so its geometric stiffness is linear and joins K.
-    s.axial_force = c.beam.axis_held() ? c.beam.residual_stress * c.beam.area() : 0.0;
+    s.axial_force = held_axial_force(c, s.sections);
     for (int e = 0; e < s.mesh.element_count(); ++e) {
         const double L = s.mesh.element_length(e);
         const ElementMatrix ge = element_geometric_stiffness(L);
-        const ElementMatrix ke = element_stiffness(s.props, L) + s.axial_force * ge;
-        const ElementMatrix me = element_mass(s.props, L);
+        const ElementProperties& p = s.element_props[static_cast<std::size_t>(e)];
+        const ElementMatrix ke = element_stiffness(p, L) + s.axial_force * ge;
+        const ElementMatrix me = element_mass(p, L);
         for (int i = 0; i < 6; ++i) {
             const int ri = s.reduced_of[3 * e + i];
             if (ri < 0) continue;
@@ -147,6 +161,10 @@ double transverse_displacement(const System& s, const Eigen::VectorXd& reduced, 
     };
     const int a = p.element;
     return hermite_v(p.xi, s.mesh.element_length(a), value(a, 1), value(a, 2), value(a + 1, 1), value(a + 1, 2));
+}
+
+const SectionResultants& section_at(const System& s, double x) {
+    return s.section_of(locate(s.mesh, x).element);
 }
 
 Eigen::VectorXd solve_static(const System& s, const Eigen::VectorXd& load) {

@@ -7,6 +7,7 @@
 
 #include "fem/beam_element.hpp"
 #include "fem/mesh.hpp"
+#include "fem/section_properties.hpp"
 #include "model/case.hpp"
 
 namespace vi {
@@ -21,7 +22,10 @@ using SparseMatrix = Eigen::SparseMatrix<double>;
 
 struct System {
     Mesh mesh;
-    ElementProperties props;
+    ElementProperties props;             // the plain [beam] of [material]: the reference section
+    std::vector<SectionResultants> sections;        // the beam's sections (the plain one without [[beam.sections]])
+    std::vector<int> element_section;               // each element's index into `sections`
+    std::vector<ElementProperties> element_props;   // each element's properties
     double length = 0.0;                 // l [m]
     EndCondition left = EndCondition::clamped;   // end conditions, as in the case
     EndCondition right = EndCondition::free;
@@ -30,12 +34,17 @@ struct System {
     std::vector<int> reduced_of;         // reduced index of each global DOF, -1 if constrained
     SparseMatrix K;                      // stiffness over free DOFs, residual stress's N0 G included [N/m]
     SparseMatrix G;                      // int N_i' N_j' dx over free DOFs (bending only): K's part per unit axial force [1/m]
-    double axial_force = 0.0;            // N0 = residual_stress x A, tension positive [N]
+    double axial_force = 0.0;            // N0 = residual_stress x A (layers: held_axial_force), tension positive [N]
     SparseMatrix M;                      // consistent mass over free DOFs [kg]
     std::vector<int> bending;            // reduced indices of v and theta DOFs, ascending
     std::vector<int> axial;              // reduced indices of u DOFs, ascending
     std::vector<int> support_dof;        // reduced index of v at each support, -1 where v is fixed
     [[nodiscard]] int size() const { return static_cast<int>(free_dofs.size()); }
+    // The section under element e, and the beam's width there [m].
+    [[nodiscard]] const SectionResultants& section_of(int e) const {
+        return sections[static_cast<std::size_t>(element_section[static_cast<std::size_t>(e)])];
+    }
+    bool sectioned = false;              // whether the case describes the beam by [[beam.sections]]
 };
 
 // Assembles the case's beam with its end conditions and its supports as the given model.
@@ -62,6 +71,9 @@ Eigen::VectorXd on_bending(const System& s, const Eigen::VectorXd& reduced);
 // Consistent load vector of a unit transverse force at x/l = position, over the bending DOFs; its
 // dot product with a bending vector is v at that point.
 Eigen::VectorXd unit_point_load(const System& s, double position);
+
+// The section under coordinate x [m] (the later one at a boundary node).
+const SectionResultants& section_at(const System& s, double x);
 
 // Static displacement K q = f over the free DOFs; throws std::runtime_error if K is singular.
 Eigen::VectorXd solve_static(const System& s, const Eigen::VectorXd& load);

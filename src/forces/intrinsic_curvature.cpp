@@ -7,6 +7,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "fem/system.hpp"
 #include "model/case_schema.hpp"
 #include "model/number_format.hpp"
 
@@ -103,6 +104,14 @@ double farthest_toward(const Eigen::Vector4d& p, double toward, double from, dou
 
 std::string um(double v) { return significant(v * 1e6, 4) + " um"; }
 
+// The key a layered curl's problem names: the layers of the first section whose stack carries a moment.
+std::string first_layered_key(const Case& c) {
+    for (std::size_t k = 0; k < c.beam.sections.size(); ++k) {
+        if (!c.beam.sections[k].layers.empty()) return "beam.sections[" + std::to_string(k) + "].layers";
+    }
+    return "beam.sections";
+}
+
 // A surface `gap` [m] from the straight beam on side `side` over [from, to] (x/l): the problem when
 // the released shape reaches it.
 void check_gap(std::vector<CaseProblem>& out, const Case& c, const std::string& key, const Eigen::Vector4d& p,
@@ -118,37 +127,94 @@ void check_gap(std::vector<CaseProblem>& out, const Case& c, const std::string& 
                             " too far; a smaller curl or a larger gap is needed"});
 }
 
-// Gaps are measured from the straight beam: the released shape must leave every electrode's air
-// gap, every film's gap and every support's gap (one given as a gap, not a prestress) open.
-void check_released_gaps(std::vector<CaseProblem>& out, const Case& c) {
-    const ParameterSet* p = curl_table(c);
-    if (p == nullptr || given_key(*p).empty() || !(c.beam.length > 0.0)) return;
-    const double kappa0 = intrinsic_curvature(c);
-    if (kappa0 == 0.0 || !std::isfinite(kappa0)) return;
-    const std::string key = std::string(kSection) + "." + given_key(*p);
-    const Eigen::Vector4d shape = shape_coefficients(c.beam);
+// Every surface the released shape must leave open: each electrode's air gap, each film's gap and
+// each support's gap (one given as a gap, not a prestress): fn(side, from, to, gap, what).
+template <class Fn>
+void each_gap(const Case& c, Fn fn) {
     for (std::size_t k = 0; k < c.electrodes.size(); ++k) {
         const Electrode& e = c.electrodes[k];
-        check_gap(out, c, key, shape, kappa0, e.side, e.from, e.to, e.gap - e.dielectric_thickness,
-                  "the air gap of electrodes[" + std::to_string(k) + "]");
+        fn(e.side, e.from, e.to, e.gap - e.dielectric_thickness, "the air gap of electrodes[" + std::to_string(k) + "]");
     }
     for (std::size_t k = 0; k < c.films.size(); ++k) {
         const Film& f = c.films[k];
-        check_gap(out, c, key, shape, kappa0, f.side, f.from, f.to, f.gap, "the gap of films[" + std::to_string(k) + "]");
+        fn(f.side, f.from, f.to, f.gap, "the gap of films[" + std::to_string(k) + "]");
     }
     for (std::size_t k = 0; k < c.supports.size(); ++k) {
         const Support& s = c.supports[k];
         const bool as_gap = s.surface_key == "gap" || (s.surface_key.empty() && !(s.surface > 0.0));
-        if (!as_gap) continue;
-        check_gap(out, c, key, shape, kappa0, s.side, s.position, s.position, -s.surface,
-                  "the gap of supports[" + std::to_string(k) + "]");
+        if (as_gap) fn(s.side, s.position, s.position, -s.surface, "the gap of supports[" + std::to_string(k) + "]");
     }
+}
+
+// Whether any section's layers carry a moment (a curl of their own).
+bool layers_curl(const Case& c) {
+    for (std::size_t k = 0; k < c.beam.sections.size(); ++k) {
+        if (c.beam.sections[k].layers.empty()) continue;
+        try {
+            if (section_resultants(c, k).stress_moment != 0.0) return true;
+        } catch (const std::invalid_argument&) {
+            return false;  // a layer names no material: reported on its own
+        }
+    }
+    return false;
+}
+
+// The same for a beam of sections or layered curl: the released shape from the FE model's static
+// solution (no closed form once EI or kappa0 change along the beam), sampled on every element.
+void check_released_gaps_fe(std::vector<CaseProblem>& out, const Case& c, const std::string& key) {
+    System s;
+    Eigen::VectorXd q;
+    try {
+        s = build_system(c, SupportModel::none);
+        q = solve_static(s, curl_load(c, s));
+    } catch (const std::exception&) {
+        return;  // a mesh or stiffness the model refuses on its own, with its own message
+    }
+    const double l = c.beam.length;
+    each_gap(c, [&](Side side, double from, double to, double gap, const std::string& what) {
+        const double toward = side == Side::below ? -1.0 : 1.0;
+        double best_x = from * l, best = toward * transverse_displacement(s, q, from * l);
+        for (int e = 0; e < s.mesh.element_count(); ++e) {
+            const double x0 = std::max(s.mesh.x[static_cast<std::size_t>(e)], from * l);
+            const double x1 = std::min(s.mesh.x[static_cast<std::size_t>(e) + 1], to * l);
+            if (x1 < x0) continue;
+            for (int k = 0; k <= 16; ++k) {
+                const double x = x0 + (x1 - x0) * k / 16.0;
+                const double lift = toward * transverse_displacement(s, q, x);
+                if (lift > best) {
+                    best = lift;
+                    best_x = x;
+                }
+            }
+        }
+        if (!(best > 0.0) || gap - best > 0.0) return;
+        out.push_back({key, "the released shape closes " + what + " at x = " + um(best_x) + " (x/l = " +
+                                significant(best_x / l, 4) + "): it moves " + um(best) + " toward a gap of " + um(gap) +
+                                ", " + um(best - gap) + " too far; a smaller curl or a larger gap is needed"});
+    });
+}
+
+// Gaps are measured from the straight beam: the released shape must leave every gap open.
+void check_released_gaps(std::vector<CaseProblem>& out, const Case& c) {
+    const ParameterSet* p = curl_table(c);
+    const bool table = p != nullptr && !given_key(*p).empty();
+    if (!(c.beam.length > 0.0) || (!table && !layers_curl(c))) return;
+    const std::string key = table ? std::string(kSection) + "." + given_key(*p) : first_layered_key(c);
+    if (!c.beam.sections.empty()) {
+        check_released_gaps_fe(out, c, key);
+        return;
+    }
+    const double kappa0 = intrinsic_curvature(c);
+    if (kappa0 == 0.0 || !std::isfinite(kappa0)) return;
+    const Eigen::Vector4d shape = shape_coefficients(c.beam);
+    each_gap(c, [&](Side side, double from, double to, double gap, const std::string& what) {
+        check_gap(out, c, key, shape, kappa0, side, from, to, gap, what);
+    });
 }
 
 void check_curl(std::vector<CaseProblem>& out, const Case& c) {
     const ParameterSet* p = curl_table(c);
-    if (p == nullptr) return;
-    if (given_key(*p).empty()) {
+    if (p != nullptr && given_key(*p).empty()) {
         out.push_back({kSection, "give one of curvature, stress_gradient or tip_lift"});
         return;
     }
@@ -190,20 +256,13 @@ public:
     [[nodiscard]] std::string_view name() const override { return "intrinsic curvature"; }
 
     [[nodiscard]] std::vector<FamilyElement> elements(const ElementSource& src) const override {
-        if (curl_table(src.c) == nullptr) return {};
+        if (curl_table(src.c) == nullptr && !layers_curl(src.c)) return {};
         const System& sys = src.system;
-        const double moment = sys.props.E * sys.props.I * intrinsic_curvature(src.c);
-        // f = EI kappa0 int N''^T dx: -EI kappa0 on each element's first rotation, +EI kappa0 on its
-        // last; between two elements the two cancel.
+        const Eigen::VectorXd f = curl_load(src.c, sys);
         std::vector<double> on_bending(sys.bending.size(), 0.0);
-        const auto add = [&](int node, double f) {
-            const int reduced = sys.reduced_of[static_cast<std::size_t>(global_dof(node, 2))];
-            if (reduced < 0) return;
-            on_bending[static_cast<std::size_t>(src.bending_position[static_cast<std::size_t>(reduced)])] += f;
-        };
-        for (int e = 0; e < sys.mesh.element_count(); ++e) {
-            add(e, -moment);
-            add(e + 1, moment);
+        for (int r = 0; r < sys.size(); ++r) {
+            const int b = src.bending_position[static_cast<std::size_t>(r)];
+            if (b >= 0) on_bending[static_cast<std::size_t>(b)] += f[r];
         }
         std::vector<int> dofs;
         std::vector<double> load;
@@ -235,6 +294,26 @@ public:
 };
 
 }  // namespace
+
+Eigen::VectorXd curl_load(const Case& c, const System& s) {
+    const double kappa0 = intrinsic_curvature(c);
+    // Each element e takes its released moment M_e = EI_e kappa0 + M_r (the [curl] curvature and its
+    // section's layers): f = M_e int N''^T dx, -M_e on its first rotation, +M_e on its last; between
+    // two elements of one section the two cancel.
+    std::vector<double> moment;
+    for (const SectionResultants& r : s.sections) moment.push_back(r.EI * kappa0 + r.stress_moment);
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(s.size());
+    const auto add = [&](int node, double m) {
+        const int reduced = s.reduced_of[static_cast<std::size_t>(global_dof(node, 2))];
+        if (reduced >= 0) f[reduced] += m;
+    };
+    for (int e = 0; e < s.mesh.element_count(); ++e) {
+        const double m = moment[static_cast<std::size_t>(s.element_section[static_cast<std::size_t>(e)])];
+        add(e, -m);
+        add(e + 1, m);
+    }
+    return f;
+}
 
 double intrinsic_curvature(const Case& c) {
     const ParameterSet* p = curl_table(c);

@@ -3,10 +3,12 @@
 // through its thickness: the curl of a cantilever), as the constant load it puts on the straight
 // beam's DOFs; its family, which makes it from the case's [curl] table, and that table's keys.
 
+#include <Eigen/Dense>
 #include <string>
 #include <vector>
 
 #include "forces/element_family.hpp"
+#include "fem/system.hpp"
 #include "forces/force_element.hpp"
 
 namespace vi {
@@ -49,6 +51,10 @@ private:
 // stress_gradient Gamma over the bending modulus E (kappa0 = Gamma / E), or its tip_lift delta over
 // the beam's length (kappa0 = 2 delta / l^2); 0 without the table.
 double intrinsic_curvature(const Case& c);
+
+// The released curl's load on the reduced DOFs of s [N m]: on every element its section's EI kappa0
+// (kappa0 from [curl]) plus its layers' stress moment M_r, as moments -M and +M on its two rotations.
+Eigen::VectorXd curl_load(const Case& c, const System& s);
 
 // v(x) [m] of the unloaded beam of c released with curvature kappa0 [1/m] at x [m]: the cubic with
 // w'' = kappa0 at its free and pinned ends (no moment), w''' = 0 at a free end, w = 0 at a held one,

@@ -58,9 +58,15 @@ public:
     [[nodiscard]] std::vector<FamilyElement> elements(const ElementSource& src) const override {
         if (!src.c.beam.stretching) return {};
         const System& s = src.system;
-        // The axis's lengthening, on every bending DOF.
-        return {{std::make_shared<MidplaneStretching>("beam.stretching", submatrix(s.G, s.bending),
-                                                      s.props.E * s.props.A / s.length),
+        // The axis's lengthening, on every bending DOF; sections in series stretch as one spring of
+        // compliance sum L_e / EA_e.
+        double stiffness = s.props.E * s.props.A / s.length;
+        if (s.sectioned) {
+            double compliance = 0.0;
+            for (int e = 0; e < s.mesh.element_count(); ++e) compliance += s.mesh.element_length(e) / s.section_of(e).EA;
+            stiffness = 1.0 / compliance;
+        }
+        return {{std::make_shared<MidplaneStretching>("beam.stretching", submatrix(s.G, s.bending), stiffness),
                  {"beam", 0}}};
     }
 };

@@ -94,9 +94,45 @@ bool read_numeric(FieldReader& f, const KeySpec& k, std::size_t i, Reading& r, C
     return true;
 }
 
+// A layer stack: an array of inline tables, each with a material's name and a thickness; every
+// problem is logged under key[j].material or key[j].thickness.
+bool read_layers(FieldReader& f, const KeySpec& k, std::size_t i, Reading& r, Case& c) {
+    const toml::array* a = f.array(k.name, k.required, "an array of { material = \"name\", thickness = \"1 um\" }");
+    if (a == nullptr) return !f.has(k.name);
+    const std::string path = tomlio::child_path(f.path(), k.name);
+    const Position at = f.key_position(k.name);
+    std::vector<Layer> layers;
+    bool clean = true;
+    for (std::size_t j = 0; j < a->size(); ++j) {
+        const toml::node& node = *a->get(j);
+        const std::string entry = path + "[" + std::to_string(j) + "]";
+        const toml::table* t = node.as_table();
+        if (t == nullptr) {
+            r.log.problem(tomlio::position_of(node.source(), at), entry,
+                          "expected a table { material = \"name\", thickness = \"1 um\" }, got " + tomlio::type_name(node));
+            clean = false;
+            continue;
+        }
+        FieldReader lf(*t, entry, tomlio::position_of(node.source(), at), r.log, {"material", "thickness"});
+        const auto material = lf.string("material", true);
+        const auto thickness = lf.quantity("thickness", Dimension::length, true);
+        lf.finish();
+        if (!material || !thickness) {
+            clean = false;
+            continue;
+        }
+        if (!(*thickness > 0.0)) r.value_problems.push_back({entry + ".thickness", "must be positive"});
+        layers.push_back({*material, *thickness});
+    }
+    if (a->empty()) r.value_problems.push_back({path, "needs at least one layer"});
+    *k.layers(c, i) = std::move(layers);
+    return clean;
+}
+
 // Reads one key of entry i by its kind; returns false when it is present but could not be read.
 bool read_value(FieldReader& f, const KeySpec& k, std::size_t i, Reading& r, Case& c) {
     if (is_numeric(k.kind)) return read_numeric(f, k, i, r, c);
+    if (k.kind == KeyKind::layer_stack) return read_layers(f, k, i, r, c);
     const std::string path = tomlio::child_path(f.path(), k.name);
     std::optional<std::string> text;
     switch (k.kind) {
@@ -155,25 +191,42 @@ void read_keys(FieldReader& f, const SectionSpec& s, std::size_t i, Reading& r, 
     if (s.after) s.after(c, i);
 }
 
+// The sections nested in table section s ([[beam.sections]] in [beam]).
+std::vector<const SectionSpec*> children(const SectionSpec& s) {
+    std::vector<const SectionSpec*> out;
+    if (s.name.empty()) return out;
+    for (const SectionSpec& child : case_schema().sections) {
+        if (child.parent() == s.name) out.push_back(&child);
+    }
+    return out;
+}
+
+// The keys of s and the keys its nested sections take in its table. The views point into the
+// schema (its names), which outlives the reading.
 std::vector<std::string_view> key_names(const SectionSpec& s) {
     std::vector<std::string_view> out;
     for (const KeySpec& k : s.keys) out.emplace_back(k.name);
+    for (const SectionSpec* child : children(s)) out.emplace_back(std::string_view(child->name).substr(s.name.size() + 1));
     return out;
 }
+
+void read_array(FieldReader& f, const SectionSpec& s, Reading& r, Case& c);
 
 void read_entry(const toml::table& t, const SectionSpec& s, std::size_t i, const std::string& path, Position at,
                 Reading& r, Case& c) {
     FieldReader f(t, path, at, r.log, key_names(s));
     read_keys(f, s, i, r, c);
+    for (const SectionSpec* child : children(s)) read_array(f, *child, r, c);
     f.finish();
 }
 
 // Every entry of an array of tables ([[name]]); an entry that is not a table still takes its place
 // (the case is refused for it), so that entries and their paths keep one index.
 void read_array(FieldReader& f, const SectionSpec& s, Reading& r, Case& c) {
-    const toml::array* a = f.array(s.name, s.required, "an array of tables ([[" + s.name + "]])");
+    const std::string key = s.tail();
+    const toml::array* a = f.array(key, s.required, "an array of tables ([[" + s.name + "]])");
     if (a == nullptr) return;
-    const Position at = f.key_position(s.name);
+    const Position at = f.key_position(key);
     for (std::size_t i = 0; i < a->size(); ++i) {
         const toml::node& node = *a->get(i);
         const std::string path = s.entry_path(i);
@@ -192,13 +245,13 @@ Case read_root(const toml::table& root, const std::string& default_name, Reading
     const SectionSpec* top = schema.section("");
     std::vector<std::string_view> accepted = key_names(*top);
     for (const SectionSpec& s : schema.sections)
-        if (!s.name.empty()) accepted.emplace_back(s.name);
+        if (!s.name.empty() && s.parent().empty()) accepted.emplace_back(s.name);
     FieldReader f(root, "", Position{}, r.log, accepted);
     Case c;
     c.name = default_name;
     read_keys(f, *top, 0, r, c);
     for (const SectionSpec& s : schema.sections) {
-        if (s.name.empty()) continue;
+        if (s.name.empty() || !s.parent().empty()) continue;
         if (s.array) {
             read_array(f, s, r, c);
             continue;

@@ -18,7 +18,8 @@
 namespace vi {
 namespace {
 
-using KeyValue = std::variant<double, std::int64_t, bool, std::string, std::array<double, 2>, std::array<std::int64_t, 2>>;
+using KeyValue = std::variant<double, std::int64_t, bool, std::string, std::array<double, 2>, std::array<std::int64_t, 2>,
+                              std::vector<Layer>>;
 
 // A table file's name as the reader opens it, made absolute: the case file's folder joined with it.
 std::string table_path(const Case& c, const std::string& name) {
@@ -49,6 +50,7 @@ KeyValue key_value(const Case& c, const KeySpec& k, std::size_t i) {
         case KeyKind::table_file: return table_path(c, k.get_text(c, i));
         case KeyKind::choice:
         case KeyKind::text: return k.get_text(c, i);
+        case KeyKind::layer_stack: return *k.layers(const_cast<Case&>(c), i);
     }
     return std::string();
 }
@@ -113,6 +115,14 @@ struct TomlText {
     std::string operator()(const std::array<std::int64_t, 2>& v) const {
         return bracketed(std::to_string(v[0]), std::to_string(v[1]));
     }
+    std::string operator()(const std::vector<Layer>& v) const {
+        std::string out = "[";
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            out.append(i == 0 ? "" : ", ").append("{ material = ").append(toml_string(v[i].material));
+            out.append(", thickness = ").append(toml_float(v[i].thickness)).append(" }");
+        }
+        return out + "]";
+    }
 };
 
 struct JsonValue {
@@ -122,6 +132,11 @@ struct JsonValue {
     nlohmann::json operator()(const std::string& v) const { return v; }
     nlohmann::json operator()(const std::array<double, 2>& v) const { return {v[0], v[1]}; }
     nlohmann::json operator()(const std::array<std::int64_t, 2>& v) const { return {v[0], v[1]}; }
+    nlohmann::json operator()(const std::vector<Layer>& v) const {
+        nlohmann::json out = nlohmann::json::array();
+        for (const Layer& l : v) out.push_back({{"material", l.material}, {"thickness", l.thickness}});
+        return out;
+    }
 };
 
 }  // namespace
@@ -151,7 +166,8 @@ nlohmann::json case_to_json(const Case& c) {
             if (s.name.empty()) {
                 at = &out;
             } else if (s.array) {
-                nlohmann::json& list = out[s.name];
+                // A section nested in a table ([[beam.sections]]) is an array inside that table's object.
+                nlohmann::json& list = s.parent().empty() ? out[s.name] : out[s.parent()][s.tail()];
                 if (!list.is_array()) list = nlohmann::json::array();
                 list.push_back(nlohmann::json::object());
                 at = &list.back();

@@ -28,7 +28,36 @@ struct Material {
     [[nodiscard]] double effective_modulus() const;
 };
 
-// Straight prismatic beam along x from 0 to length, rectangular section width x thickness [m].
+// A material a layer names ([[materials]]); SI units. Its residual stress is the in-plane stress the
+// layer carries while the beam is held straight and at length (as deposited); its stress gradient
+// grows that stress linearly toward the layer's top.
+struct LayerMaterial {
+    std::string name;                  // how layers refer to it
+    double youngs_modulus = 0.0;       // E [Pa]
+    double density = 0.0;              // rho [kg/m^3]
+    double poisson_ratio = 0.0;        // nu [-]
+    double residual_stress = 0.0;      // sigma_r, tension positive [Pa]
+    double stress_gradient = 0.0;      // Gamma, d sigma / dz through the layer [Pa/m]
+};
+
+// One layer of a section's stack, listed bottom to top.
+struct Layer {
+    std::string material;              // a LayerMaterial's name
+    double thickness = 0.0;            // [m]
+};
+
+// A part [from, to] (x/l) of the beam with its own width, thickness or layer stack; what it leaves
+// out is the plain beam's (its width, its thickness, the [material]).
+struct BeamSection {
+    double from = 0.0;                 // x/l where it starts
+    double to = 1.0;                   // x/l where it ends
+    std::optional<double> width;       // [m]; unset: the beam's
+    std::optional<double> thickness;   // [m]; unset: the beam's (or the layers' sum)
+    std::vector<Layer> layers;         // bottom to top; empty: one layer of [material]
+};
+
+// Straight beam along x from 0 to length, rectangular section width x thickness [m], optionally
+// made of sections that change the width, the thickness or the layer stack along it.
 struct Beam {
     double length = 0.0;     // l [m]
     double width = 0.0;      // w [m]
@@ -41,6 +70,9 @@ struct Beam {
     double residual_stress = 0.0;
     // Mid-plane stretching: the axial force (E A / (2 l)) int v'^2 dx of a beam whose ends hold the axis.
     bool stretching = false;
+    // The parts of the beam, ascending, covering [0, 1] (x/l) without gaps or overlaps; empty: one
+    // prismatic beam of [material] with width and thickness.
+    std::vector<BeamSection> sections{};
     [[nodiscard]] double area() const { return width * thickness; }                          // A [m^2]
     [[nodiscard]] double second_moment() const { return width * thickness * thickness * thickness / 12.0; }  // I [m^4]
     // Whether both ends hold the axis (clamped or pinned), so that an axial force can act.
@@ -236,6 +268,7 @@ struct Case {
     std::string name;             // for output files and reports
     Beam beam;
     Material material;
+    std::vector<LayerMaterial> materials;  // the materials layers name ([[materials]])
     std::vector<Support> supports;
     RayleighDamping damping;
     InitialState initial;

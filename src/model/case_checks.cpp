@@ -9,6 +9,7 @@
 #include "model/key_checks.hpp"
 #include "model/magnitude_checks.hpp"
 #include "model/run_estimate.hpp"
+#include "model/section_checks.hpp"
 #include "model/number_format.hpp"
 
 namespace vi {
@@ -284,6 +285,7 @@ std::vector<CaseProblem> check_case(const Case& c) {
     const RayleighDamping& d = c.damping;
     if (d.from_ratios && d.mode1 == d.mode2) out.push_back({"damping.modes", "the two modes must differ"});
     check_axial(out, c);
+    check_sections(out, c);
     check_initial(out, c);
     for (std::size_t k = 0; k < c.loads.size(); ++k) check_load(out, c, k);
     if (c.electrodes.size() > kMaxElectrodes) {

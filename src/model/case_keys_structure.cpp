@@ -73,6 +73,71 @@ SectionSpec material_section() {
     return s;
 }
 
+SectionSpec beam_sections_section() {
+    SectionSpec s;
+    s.name = "beam.sections";
+    s.array = true;
+    s.entry_word = "section";
+    s.count = [](const Case& c) { return c.beam.sections.size(); };
+    s.add = [](Case& c) { c.beam.sections.emplace_back(); };
+    s.exclusive = {{"thickness", "layers"}};
+    bind_member(s.add_key(number_key("from", Dimension::dimensionless, "x/l")).require()
+                    .in(interval(0, false, 1, false, " (x/l)")).means("where the section starts"),
+                &BeamSection::from);
+    bind_member(s.add_key(number_key("to", Dimension::dimensionless, "x/l")).require()
+                    .in(interval(0, false, 1, false, " (x/l)"))
+                    .means("where it ends; the sections, in order, cover the beam from 0 to 1 without gaps or overlaps"),
+                &BeamSection::to);
+    KeySpec& w = s.add_key(number_key("width", Dimension::length)).in(positive());
+    w.means("w of this section (electrodes and films over it use it too)");
+    w.default_text = "beam.width";
+    bind_optional<BeamSection>(w, [](BeamSection& x) -> std::optional<double>& { return x.width; });
+    KeySpec& t = s.add_key(number_key("thickness", Dimension::length)).in(positive());
+    t.only(when<BeamSection>([](const BeamSection& x) { return x.layers.empty(); }, {"layers"},
+                             "cannot be combined with $.layers (the layers' thicknesses give it)",
+                             "the section has layers; set their thicknesses in the case file"));
+    t.when.doc_text = "no `layers`";
+    t.means("t of this section, of [material]");
+    t.default_text = "beam.thickness (or the layers' sum)";
+    bind_optional<BeamSection>(t, [](BeamSection& x) -> std::optional<double>& { return x.thickness; });
+    KeySpec& layers = s.add_key(layer_stack_key("layers"));
+    layers.means("the stack, bottom to top, each layer of a [[materials]] entry: the transformed section gives the "
+                 "neutral axis, EI, EA and rho A; the layers' residual stresses the axial force of a beam whose ends "
+                 "hold the axis and the released curl (docs/model.md, sections and layers)");
+    layers.default_text = "one layer of [material]";
+    layers.layers = [](Case& c, std::size_t i) { return &c.beam.sections[i].layers; };
+    layers.is_set = [](const Case& c, std::size_t i) { return !c.beam.sections[i].layers.empty(); };
+    return s;
+}
+
+SectionSpec materials_section() {
+    SectionSpec s;
+    s.name = "materials";
+    s.array = true;
+    s.entry_word = "material";
+    s.count = [](const Case& c) { return c.materials.size(); };
+    s.add = [](Case& c) { c.materials.emplace_back(); };
+    KeySpec& name = s.add_key(text_key("name")).require();
+    name.means("how a section's layers name it; unique");
+    name.empty_text = "must not be empty";
+    bind_text<LayerMaterial>(name, [](LayerMaterial& m) -> std::string& { return m.name; });
+    bind_member(s.add_key(number_key("youngs_modulus", Dimension::pressure)).require().in(positive()).means("E"),
+                &LayerMaterial::youngs_modulus);
+    bind_member(s.add_key(number_key("density", Dimension::density)).require().in(positive()).means("rho"),
+                &LayerMaterial::density);
+    bind_member(s.add_key(number_key("poisson_ratio", Dimension::dimensionless)).require()
+                    .in(interval(-1.0, true, 0.5, true)).means("nu (E / (1 - nu^2) with material.plate_modulus)"),
+                &LayerMaterial::poisson_ratio);
+    bind_member(s.add_key(number_key("residual_stress", Dimension::pressure)).otherwise(0.0)
+                    .means("sigma_r, the layer's in-plane stress while the beam is held straight and at length, tension "
+                           "positive"),
+                &LayerMaterial::residual_stress);
+    bind_member(s.add_key(number_key("stress_gradient", Dimension::dimensionless, "Pa/m")).otherwise(0.0)
+                    .means("Gamma, how that stress grows toward the layer's top (it adds the moment Gamma w t^3 / 12)"),
+                &LayerMaterial::stress_gradient);
+    return s;
+}
+
 SectionSpec damping_section() {
     SectionSpec s = table_section<RayleighDamping>("damping", false);
     s.exclusive = {{"ratios", "alpha"}, {"ratios", "beta"}};
@@ -161,7 +226,8 @@ SectionSpec initial_section() {
 }
 
 const CaseSchema& builtin_case_schema_sections() {
-    static const CaseSchema schema{{top_level_section(), beam_section(), material_section(), supports_section(),
+    static const CaseSchema schema{{top_level_section(), beam_section(), beam_sections_section(), material_section(),
+                                    materials_section(), supports_section(),
                                     damping_section(), initial_section(), loads_section(), electrodes_section(),
                                     air_section(), films_section(), solver_section()}};
     return schema;

@@ -226,6 +226,20 @@ KeySpec table_file_key(std::string name, std::string column) {
     return k;
 }
 
+KeySpec layer_stack_key(std::string name) {
+    return make_key(std::move(name), KeyKind::layer_stack, Dimension::dimensionless, "-");
+}
+
+std::string SectionSpec::parent() const {
+    const auto dot = name.find('.');
+    return dot == std::string::npos ? std::string() : name.substr(0, dot);
+}
+
+std::string SectionSpec::tail() const {
+    const auto dot = name.find('.');
+    return dot == std::string::npos ? name : name.substr(dot + 1);
+}
+
 const KeySpec* SectionSpec::key(std::string_view n) const {
     for (const KeySpec& k : keys)
         if (k.name == n) return &k;

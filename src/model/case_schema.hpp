@@ -31,6 +31,7 @@ enum class KeyKind {
     choice,        // a string, one of the key's options
     text,          // a string
     table_file,    // a CSV file name, relative to the case file: the rows t_s,<column> of a g(t)
+    layer_stack,   // an array of inline tables { material = "name", thickness = length }, bottom to top
 };
 
 // True for the kinds a sweep, a fit or an optimisation can set: number, integer and the pairs.
@@ -120,6 +121,8 @@ struct KeySpec {
     std::function<bool(const Case&, std::size_t i)> is_set;
     // table_file: the g(t) the rows go into.
     std::function<TimeFunction*(Case&, std::size_t i)> table;
+    // layer_stack: the layers the rows go into.
+    std::function<std::vector<Layer>*(Case&, std::size_t i)> layers;
 
     // Fluent setters for the tables of keys.
     KeySpec& means(std::string text);
@@ -140,6 +143,7 @@ KeySpec flag_key(std::string name);
 KeySpec choice_key(std::string name, std::vector<std::string> options);
 KeySpec text_key(std::string name);
 KeySpec table_file_key(std::string name, std::string column);
+KeySpec layer_stack_key(std::string name);
 
 // One section of a case file: a table ([beam]), an array of tables ([[supports]]) or the top level
 // (name ""), its keys in file order, and how its entries are reached in a Case.
@@ -172,6 +176,10 @@ struct SectionSpec {
     std::string doc;
 
     [[nodiscard]] const KeySpec* key(std::string_view name) const;
+    // For a section nested in a table ("beam.sections"): the table's name and the key under it;
+    // empty for a section at the top of the file.
+    [[nodiscard]] std::string parent() const;
+    [[nodiscard]] std::string tail() const;
     // The path of entry i ("supports[1]", "beam", "" for the top level).
     [[nodiscard]] std::string entry_path(std::size_t i) const;
     // The section as a path form: "supports[i]", "beam".

@@ -22,6 +22,12 @@ struct EntryAccess;
 template <> struct EntryAccess<Case> { static Case& at(Case& c, std::size_t) { return c; } };
 template <> struct EntryAccess<Beam> { static Beam& at(Case& c, std::size_t) { return c.beam; } };
 template <> struct EntryAccess<Material> { static Material& at(Case& c, std::size_t) { return c.material; } };
+template <> struct EntryAccess<LayerMaterial> {
+    static LayerMaterial& at(Case& c, std::size_t i) { return c.materials[i]; }
+};
+template <> struct EntryAccess<BeamSection> {
+    static BeamSection& at(Case& c, std::size_t i) { return c.beam.sections[i]; }
+};
 template <> struct EntryAccess<Support> { static Support& at(Case& c, std::size_t i) { return c.supports[i]; } };
 template <> struct EntryAccess<RayleighDamping> {
     static RayleighDamping& at(Case& c, std::size_t) { return c.damping; }

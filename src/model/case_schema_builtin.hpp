@@ -8,6 +8,8 @@ namespace vi::schema {
 SectionSpec top_level_section();
 SectionSpec beam_section();
 SectionSpec material_section();
+SectionSpec beam_sections_section();
+SectionSpec materials_section();
 SectionSpec supports_section();
 SectionSpec damping_section();
 SectionSpec initial_section();

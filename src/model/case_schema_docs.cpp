@@ -51,6 +51,7 @@ std::string type_cell(const KeySpec& k) {
         case KeyKind::choice: return quoted_options(k.options);
         case KeyKind::text: return "string";
         case KeyKind::table_file: return "string: a CSV file with the columns `t_s," + k.column + "`";
+        case KeyKind::layer_stack: return "array of `{ material = \"name\", thickness = length }`, bottom to top";
     }
     return "-";
 }

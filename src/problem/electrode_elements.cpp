@@ -7,6 +7,8 @@
 
 #include "fem/beam_element.hpp"
 #include "fem/gauss_legendre.hpp"
+#include "model/input_error.hpp"
+#include "model/number_format.hpp"
 
 namespace vi {
 namespace {
@@ -32,14 +34,29 @@ PadMesh pad_mesh(const Case& c, std::size_t k, const System& s, const std::vecto
     g.gap = e.gap;
     g.dielectric_thickness = e.dielectric_thickness;
     g.dielectric_permittivity = e.dielectric_permittivity;
-    g.width = e.width > 0.0 ? e.width : c.beam.width;
-    g.beam_thickness = c.beam.thickness;
     g.fringing = e.fringing;
     g.from = e.from * s.length;
     g.to = e.to * s.length;
+    const SectionResultants& middle = section_at(s, 0.5 * (g.from + g.to));
+    g.width = e.width > 0.0 ? e.width : middle.width;
+    g.beam_thickness = middle.thickness;
     SpanQuadrature q = span_quadrature(s, bending_position, g.from, g.to);
     m.dofs = std::move(q.dofs);
     m.points = std::move(q.points);
+    // Over sections of other widths, each point's parallel-plate force and layer stiffness scale
+    // with the width there; Meijs-Fokkema's fringe is a law of one strip width, so an electrode with
+    // fringing must face one width.
+    if (e.width > 0.0 || !s.sectioned) return m;
+    for (PadPoint& p : m.points) {
+        const double w = section_at(s, p.x).width;
+        if (w == g.width) continue;
+        if (e.fringing != Fringing::none) {
+            throw InputError("electrodes[" + std::to_string(k) + "].fringing: the electrode faces sections of widths " +
+                             significant(g.width * 1e6, 4) + " um and " + significant(w * 1e6, 4) +
+                             " um; the fringing model is for one strip width: split the electrode at the section boundary");
+        }
+        p.weight *= w / g.width;
+    }
     return m;
 }
 

@@ -48,12 +48,18 @@ public:
             FilmGeometry g;
             g.sign = f.side == Side::above ? 1.0 : -1.0;
             g.gap = f.gap;
-            g.width = c.beam.width;
             g.from = f.from * s.length;
             g.to = f.to * s.length;
+            g.width = section_at(s, 0.5 * (g.from + g.to)).width;
             g.ends_on_contact = f.on_layer;
             SpanQuadrature q = span_quadrature(s, src.bending_position, g.from, g.to, kFilmGaussPoints);
             if (q.dofs.empty()) continue;
+            // The narrow-beam film damps each length by mu_eff w^3 / g^3: over another width, the
+            // point's weight takes (w / w_film)^3.
+            for (PadPoint& p : q.points) {
+                const double ratio = section_at(s, p.x).width / g.width;
+                if (ratio != 1.0) p.weight *= ratio * ratio * ratio;
+            }
             out.push_back({std::make_shared<const SqueezeFilm>(f.name, std::move(q.dofs), std::move(q.points), g,
                                                                gas_of(*c.air)),
                            f.entry});

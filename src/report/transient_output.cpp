@@ -59,16 +59,18 @@ nlohmann::json damage_json(const ContactDamage& d) {
 }
 
 // The case as it ran: the values the run worked out for keys left to their defaults (the horizon and
-// output step it used, the grouping gap, the mean free path, an electrode's width) written in, so
-// that the resolved case read back as a case file runs the same.
+// output step it used, the grouping gap, the mean free path, an electrode's width over a beam without
+// sections) written in, so that the resolved case read back as a case file runs the same.
 Case case_as_run(const Case& c, const BuiltProblem& b, const ImpactSummary& s) {
     Case r = c;
     r.solver.horizon = b.problem.t_end;
     r.solver.output_step = b.problem.output_step;
     if (c.solver.grouping == SolverSettings::Grouping::flights) r.solver.group_gap = s.group_gap;
     if (r.air && !r.air->mean_free_path) r.air->mean_free_path = r.air->lambda();
+    // Over a beam of sections an electrode left without a width takes the width under each of its
+    // points, which no single number states: it stays unset there.
     for (Electrode& e : r.electrodes) {
-        if (e.width == 0.0) e.width = c.beam.width;
+        if (e.width == 0.0 && c.beam.sections.empty()) e.width = c.beam.width;
     }
     return r;
 }

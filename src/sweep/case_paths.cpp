@@ -138,7 +138,22 @@ CasePath resolve_setting_path(std::string_view option, const std::string& settin
 CasePath resolve_case_path(std::string_view text, const Case& c) {
     std::string_view rest = text;
     CasePath p;
-    const Part section = read_part(rest, text);
+    Part section = read_part(rest, text);
+    // A section nested in a table ("beam.sections[1].thickness"): the table's name and the key under
+    // it name the section.
+    if (!section.index && rest.size() > 1 && rest.front() == '.') {
+        std::string_view after = rest.substr(1);
+        const std::string_view before = rest;
+        Part nested = read_part(after, text);
+        const std::string joined = section.name + "." + nested.name;
+        if (const SectionSpec* n = case_schema().section(joined); n != nullptr && n->array) {
+            nested.name = joined;
+            section = nested;
+            rest = after;
+        } else {
+            rest = before;
+        }
+    }
     p.section = section.name;
     p.section_index = section.index;
     const SectionSpec* s = path_section(p.section);
