@@ -11,7 +11,10 @@ namespace {
 // A file's temporary name beside it: a name with folders ("field/beam_00000.vtu") keeps them.
 std::filesystem::path partial_path(const std::string& dir, const std::string& name) {
     const std::filesystem::path p = std::filesystem::path(dir) / name;
-    return p.parent_path() / ("." + p.filename().string() + ".partial");
+    std::string temp_name = ".";  // appended, not "." + string: GCC 12's -Wrestrict misfires there
+    temp_name += p.filename().string();
+    temp_name += ".partial";
+    return p.parent_path() / temp_name;
 }
 
 }  // namespace
