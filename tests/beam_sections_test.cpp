@@ -312,6 +312,7 @@ TEST(BeamSections, SteppedLayeredCurledSwitchLedgerCloses) {
     Case c = read_case_file(test::source_path("examples/devices/ohmic_paddle_switch.toml"));
     c.solver.horizon = 60e-6;
     c.solver.rtol = 1e-10;
+    c.solver.reduced_modes = 0;  // the full model: every DOF in the ledger
     const SimulationRun run = run_simulation(c);
     const TransientResult& r = run.result;
     ASSERT_FALSE(r.episodes.empty());
