@@ -143,7 +143,7 @@ TEST(BoundedRuns, MeshesBeyondWhatACommandTakesAreRefusedOnBeamElements) {
                    {"more than a transient with solver.method = \"cvode\" takes (at most 400"}, out, "switch-report m = 1000");
     for (const char* command : {"simulate", "switch-report"}) {
         expect_refused({command, mesh(400), "--out", out}, mesh(400) + ":19: beam.elements",
-                       {"more than a transient on the full model takes with an electrode (at most 200",
+                       {"more than a transient on the full model takes with an electrode (at most 100",
                         "set solver.reduced_modes"},
                        out, command);
     }

@@ -28,8 +28,8 @@ inline constexpr int kMaxCvodeElements = 400;
 // state between the n modal coordinates and the DOFs (products by the dense n x n basis, O(n^2)):
 // the switch example takes 0.34 s of CPU at m = 50, 0.88 s at 100, 3.2 s at 200 and 12.7 s at 400
 // (bench/cvode_mesh_bench.cpp; docs/electrostatics.md §9); on a reduced model of 10 modes 0.38 s at
-// m = 200.
-inline constexpr int kMaxFullModelFieldElements = 200;
+// m = 200. Kept at 100: a film with adhesion at m = 200 ran past 100 s of CPU (the physics fuzz).
+inline constexpr int kMaxFullModelFieldElements = 100;
 // Most elements at which `pullin --dynamic` confirms its bracket on the full model with an electrode
 // (above: on its finest reduced model): its bisection runs the model tens of times.
 inline constexpr int kMaxFullModelBisectionElements = 100;
