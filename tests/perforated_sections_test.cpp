@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -25,6 +26,8 @@
 #include "modal/eigen_solver.hpp"
 #include "model/input_error.hpp"
 #include "problem/beam_model.hpp"
+#include "support/run_command.hpp"
+#include "support/test_files.hpp"
 
 namespace vi {
 namespace perforated_test {
@@ -287,6 +290,19 @@ TEST(PerforatedSections, BadHolesAreRefusedAtTheirLine) {
     EXPECT_NE(error_of("{ pitch = \"10 um\" }").find("holes.toml:14: beam.sections[0].holes.size: missing"), std::string::npos)
         << error_of("{ pitch = \"10 um\" }");
     EXPECT_NE(error_of("\"5 um\"").find("holes.toml:14: beam.sections[0].holes:"), std::string::npos);
+}
+
+// From the command line: holes wider than the section exit 2 with that one line on stderr and
+// nothing written.
+TEST(PerforatedSections, CommandLineRefusesBadHolesWithExitTwo) {
+    const std::string dir = test::make_temp_dir();
+    std::string text = test::kBaseCase + "[[beam.sections]]\nfrom = 0\nto = 1\nholes = { size = \"40 um\", pitch = \"50 um\" }\n";
+    test::write_text(dir + "/holes.toml", text);
+    const auto r = test::run_vibroimpact({"modes", dir + "/holes.toml", "--out", dir + "/out"});
+    EXPECT_EQ(r.exit_code, 2);
+    EXPECT_EQ(r.err, "vibroimpact: error: " + dir + "/holes.toml:14: beam.sections[0].holes.size: the holes (40 um) are "
+                     "as wide as the section or wider (w = 30 um): they would cut it\n");
+    EXPECT_FALSE(std::filesystem::exists(dir + "/out"));
 }
 
 }  // namespace perforated_test
