@@ -112,6 +112,8 @@ TEST(CaseSchema, EveryKeyIsCompletelyDescribed) {
                 EXPECT_TRUE(k.get_number && k.set_number);
             } else if (k.kind == KeyKind::layer_stack) {
                 EXPECT_TRUE(k.layers);
+            } else if (k.kind == KeyKind::hole_array) {
+                EXPECT_TRUE(k.holes);
             } else {
                 EXPECT_TRUE(k.get_text && k.set_text);
             }

@@ -167,6 +167,16 @@ std::vector<Named> own_elements() {
              return std::make_shared<SqueezeFilm>("films[1]", std::vector<int>{0, 1, 2, 3}, test::one_element_points(L),
                                                   FilmGeometry{1.0, 2.5e-6, 20e-6, 0.0, L}, FilmGas{1.85e-5, 7e-6});
          }},
+        {"squeeze film below a perforated plate", "squeeze films",
+         [] {
+             const double L = 1.0;
+             std::vector<PadPoint> points = test::one_element_points(L);
+             // Round 8 um holes at 18 um through 2 um of plate, the strip 100 um wide.
+             std::vector<FilmPerforation> holes(points.size(), FilmPerforation{8e-6, 18e-6, true, 2e-6, 100e-6});
+             return std::make_shared<SqueezeFilm>("films[2]", std::vector<int>{0, 1, 2, 3}, std::move(points),
+                                                  FilmGeometry{-1.0, 3e-6, 100e-6, 0.0, L}, FilmGas{1.85e-5, 68e-9},
+                                                  std::move(holes));
+         }},
         // The layers on one element 1 m long (as the films), their face 0.1 um from the axis, so that
         // the samples' +-1 um press in, pass through the attraction's range and leave it.
         {"dielectric contact below", "dielectric layers",

@@ -1,6 +1,7 @@
 #include "fem/section_properties.hpp"
 
 #include <algorithm>
+#include <numbers>
 #include <stdexcept>
 
 namespace vi {
@@ -48,7 +49,16 @@ void add_layers(const Case& c, const BeamSection& s, double w, SectionResultants
 
 }  // namespace
 
-SectionFactors section_factors(const Beam&, std::size_t) { return {}; }
+SectionFactors hole_factors(const Holes& h) {
+    const double r = h.size / h.pitch;
+    const double open = h.shape == HoleShape::circle ? 0.25 * std::numbers::pi * r * r : r * r;
+    return {1.0 - r, 1.0 - open, 1.0 - open};
+}
+
+SectionFactors section_factors(const Beam& beam, std::size_t k) {
+    const std::optional<Holes>& h = beam.sections.at(k).holes;
+    return h ? hole_factors(*h) : SectionFactors{};
+}
 
 SectionResultants plain_section(const Case& c) {
     const Beam& b = c.beam;
@@ -78,10 +88,18 @@ SectionResultants section_resultants(const Case& c, std::size_t k) {
     } else {
         add_layers(c, s, r.width, r);
     }
-    const SectionFactors f = section_factors(c.beam, k);
-    r.EA *= f.stiffness;
-    r.EI *= f.stiffness;
-    r.rho_A *= f.mass;
+    // The holes leave the neutral axis where it is (they go through the whole stack); the layers'
+    // residual stresses act as eigenstrains of the material, so their resultants follow EA and EI.
+    if (s.holes) {
+        const SectionFactors f = section_factors(c.beam, k);
+        r.EA *= f.stiffness;
+        r.EI *= f.stiffness;
+        r.stress_force *= f.stiffness;
+        r.stress_moment *= f.stiffness;
+        r.rho_A *= f.mass;
+        r.solid_fraction = f.area;
+        r.holes = s.holes;
+    }
     return r;
 }
 
@@ -104,7 +122,10 @@ ElementProperties element_properties(const Case& c, const SectionResultants& s, 
         // The same expressions as the plain beam's, so that a section repeating it is bit-for-bit it.
         const double a = s.width * s.thickness;
         const double i = s.width * s.thickness * s.thickness * s.thickness / 12.0;
-        return {e, a * (s.EA / (e * a)), i * (s.EI / (e * i)), c.material.density * ((s.rho_A / (c.material.density * a)))};
+        // rho is rho A over the element's A (holes put different factors on the two; 1 when solid).
+        const double area_factor = s.EA / (e * a);
+        return {e, a * area_factor, i * (s.EI / (e * i)),
+                c.material.density * ((s.rho_A / (c.material.density * a))) / area_factor};
     }
     const double a = s.EA / e;
     return {e, a, s.EI / e, s.rho_A / a};

@@ -2,6 +2,7 @@
 // Cross-section properties of a beam of sections and layers (SI): the transformed (laminated)
 // section's neutral axis, EA, EI and rho A, and the resultants of its layers' residual stresses.
 
+#include <optional>
 #include <vector>
 
 #include "fem/beam_element.hpp"
@@ -9,12 +10,17 @@
 
 namespace vi {
 
-// Factors a section's own geometry puts on its solid properties: 1 for a solid section. Where a
-// section's perforation will enter (effective stiffness and mass of a perforated plate).
+// Factors a section's release holes put on its solid properties (1 for a solid section).
 struct SectionFactors {
-    double stiffness = 1.0;  // on EA and EI [-]
+    double stiffness = 1.0;  // on EA, EI and the residual stresses' force and moment [-]
     double mass = 1.0;       // on rho A [-]
+    double area = 1.0;       // on the plan area an electrode faces [-]
 };
+
+// The factors of holes of size s at pitch p (r = s / p < 1) in a square array (docs/model.md,
+// perforated sections): stiffness mu = 1 - r, the ligament efficiency; mass and area the solid
+// fraction, 1 - r^2 for square holes, 1 - (pi / 4) r^2 for round ones.
+SectionFactors hole_factors(const Holes& h);
 
 // One section's properties, each over the whole width.
 struct SectionResultants {
@@ -29,9 +35,11 @@ struct SectionResultants {
     // Released, the section takes the strain -N_r / EA and the curvature M_r / EI (curling up).
     double stress_force = 0.0;
     double stress_moment = 0.0;
+    double solid_fraction = 1.0;  // of the plan area, what the holes leave [-]
+    std::optional<Holes> holes;   // the section's release holes; unset: solid
 };
 
-// The factors of section k of the beam (1 for every section today).
+// The factors of section k of the beam (its holes', or 1).
 SectionFactors section_factors(const Beam& beam, std::size_t k);
 
 // The plain beam's section ([beam] width and thickness of [material]; beam.residual_stress as its

@@ -46,12 +46,19 @@ double squeeze_number(const FilmGas& gas, double width, double gap, double omega
 }
 
 SqueezeFilm::SqueezeFilm(std::string name, std::vector<int> dofs, std::vector<PadPoint> points, FilmGeometry geometry,
-                         FilmGas gas)
-    : name_(std::move(name)), dofs_(std::move(dofs)), points_(std::move(points)), geometry_(geometry), gas_(gas) {
+                         FilmGas gas, std::vector<FilmPerforation> holes)
+    : name_(std::move(name)), dofs_(std::move(dofs)), points_(std::move(points)), geometry_(geometry), gas_(gas),
+      holes_(std::move(holes)) {
     const FilmGeometry& g = geometry_;
     if (points_.empty() || std::abs(g.sign) != 1.0 || !(g.gap > 0.0) || !(g.width > 0.0) || !(gas_.viscosity > 0.0) ||
         !(gas_.mean_free_path > 0.0)) {
         throw std::invalid_argument(name_ + ": inconsistent squeeze film data");
+    }
+    if (!holes_.empty() && holes_.size() != points_.size()) throw std::invalid_argument(name_ + ": one perforation per point");
+    for (const FilmPerforation& h : holes_) {
+        if (h.size > 0.0 && !(h.size < h.pitch && h.plate_thickness > 0.0 && h.width > 0.0)) {
+            throw std::invalid_argument(name_ + ": inconsistent perforation data");
+        }
     }
     for (const PadPoint& p : points_) {
         for (int l : p.local) {
@@ -63,8 +70,9 @@ SqueezeFilm::SqueezeFilm(std::string name, std::vector<int> dofs, std::vector<Pa
 FilmCoefficient SqueezeFilm::coefficient(const PadPoint& p, const double* q) const {
     const double g = geometry_.gap - geometry_.sign * point_displacement(p, q);
     const double end = kFilmEndGap * geometry_.gap;
-    if (g > end) return film_coefficient(gas_, geometry_.width, g);
-    if (geometry_.ends_on_contact) return {film_coefficient(gas_, geometry_.width, end).c, 0.0};
+    const auto k = static_cast<std::size_t>(&p - points_.data());
+    if (g > end) return perforated(k, g);
+    if (geometry_.ends_on_contact) return {perforated(k, end).c, 0.0};
     char buf[200];
     std::snprintf(buf, sizeof buf, "the beam closes the film to %.3g nm at x = %.4g um (gap at rest %.3g um)", g * 1e9,
                   p.x * 1e6, geometry_.gap * 1e6);
@@ -73,6 +81,15 @@ FilmCoefficient SqueezeFilm::coefficient(const PadPoint& p, const double* q) con
         "; the film has no finite force at contact: a support must stop the beam before the surface "
         "(docs/squeeze-film.md)");
     throw std::domain_error(message);
+}
+
+FilmCoefficient SqueezeFilm::perforated(std::size_t k, double g) const {
+    FilmCoefficient c = film_coefficient(gas_, geometry_.width, g);
+    if (holes_.empty() || !(holes_[k].size > 0.0)) return c;
+    const PerforationFactor f = perforation_factor(holes_[k], gas_, g, c.dc / c.c);
+    c.dc = c.dc * f.value + c.c * f.slope;
+    c.c *= f.value;
+    return c;
 }
 
 void SqueezeFilm::add_force(const ElementState& s, int mode, double* f) const {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "forces/electrostatic_pad.hpp"
+#include "forces/perforated_film.hpp"
 
 namespace vi {
 
@@ -68,13 +69,15 @@ double rectangular_plate_factor(double width_over_length);
 double squeeze_number(const FilmGas& gas, double width, double gap, double omega, double pressure);
 inline constexpr double kSqueezeNumberLimit = 0.3;
 
-// The film. Line force on the beam -c(g(x)) dv/dt(x), with the local gap g = gap - sign v(x): a
+// The film. Line force on the beam -c(g(x)) dv/dt(x), with the local gap g = gap - sign v(x) (and,
+// under release holes, c the perforated strip's: perforation_factor): a
 // damper only (stored energy 0, input power 0, dissipated power int c (dv/dt)^2 dx >= 0), nonlinear
 // in the gap as the beam closes it.
 class SqueezeFilm final : public ForceElement {
 public:
+    // `holes`: per point, the perforation of the plate there (size 0: solid); empty: solid everywhere.
     SqueezeFilm(std::string name, std::vector<int> dofs, std::vector<PadPoint> points, FilmGeometry geometry,
-                FilmGas gas);
+                FilmGas gas, std::vector<FilmPerforation> holes = {});
 
     [[nodiscard]] const std::string& name() const override { return name_; }
     [[nodiscard]] std::string kind() const override { return "squeeze film"; }
@@ -99,12 +102,15 @@ private:
     // below that and the film ends on a contact surface (dc then 0); throws std::domain_error there
     // for a film without one (the film has no finite force at contact: a support must stop the beam).
     [[nodiscard]] FilmCoefficient coefficient(const PadPoint& p, const double* q) const;
+    // The solid strip's coefficient at gap g, times the holes' factor at point k.
+    [[nodiscard]] FilmCoefficient perforated(std::size_t k, double g) const;
 
     std::string name_;
     std::vector<int> dofs_;
     std::vector<PadPoint> points_;
     FilmGeometry geometry_;
     FilmGas gas_;
+    std::vector<FilmPerforation> holes_;
 };
 
 }  // namespace vi

@@ -14,6 +14,7 @@
 #include "model/case_checks.hpp"
 #include "model/case_schema.hpp"
 #include "model/input_error.hpp"
+#include "model/number_format.hpp"
 
 // Reading happens in two passes. The first walks the schema (model/case_schema.hpp) over the TOML
 // tree: each section's table, or each entry of its array, is read key by key into the Case through
@@ -129,10 +130,33 @@ bool read_layers(FieldReader& f, const KeySpec& k, std::size_t i, Reading& r, Ca
     return clean;
 }
 
+// Release holes: an inline table { size, pitch, shape }; its problems are logged under key.size, ...
+bool read_holes(FieldReader& f, const KeySpec& k, std::size_t i, Reading& r, Case& c) {
+    const toml::table* t = f.table(k.name, k.required);
+    if (t == nullptr) return !f.has(k.name);
+    const std::string path = tomlio::child_path(f.path(), k.name);
+    FieldReader hf(*t, path, f.key_position(k.name), r.log, {"size", "pitch", "shape"});
+    const auto size = hf.quantity("size", Dimension::length, true);
+    const auto pitch = hf.quantity("pitch", Dimension::length, true);
+    const std::vector<std::string> shapes{"square", "circle"};
+    const auto shape = hf.has("shape") ? hf.choice("shape", shapes, false) : std::optional<std::string>("square");
+    hf.finish();
+    if (!size || !pitch || !shape) return false;
+    if (!(*size > 0.0)) r.value_problems.push_back({path + ".size", "must be positive"});
+    if (!(*pitch > 0.0)) r.value_problems.push_back({path + ".pitch", "must be positive"});
+    if (*size > 0.0 && *pitch > 0.0 && !(*size < *pitch)) {
+        r.value_problems.push_back({path + ".size", "must be below the pitch (" + significant(*pitch * 1e6, 4) +
+                                                        " um): the holes would leave no material between them"});
+    }
+    *k.holes(c, i) = Holes{*size, *pitch, *shape == "circle" ? HoleShape::circle : HoleShape::square};
+    return true;
+}
+
 // Reads one key of entry i by its kind; returns false when it is present but could not be read.
 bool read_value(FieldReader& f, const KeySpec& k, std::size_t i, Reading& r, Case& c) {
     if (is_numeric(k.kind)) return read_numeric(f, k, i, r, c);
     if (k.kind == KeyKind::layer_stack) return read_layers(f, k, i, r, c);
+    if (k.kind == KeyKind::hole_array) return read_holes(f, k, i, r, c);
     const std::string path = tomlio::child_path(f.path(), k.name);
     std::optional<std::string> text;
     switch (k.kind) {

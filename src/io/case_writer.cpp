@@ -19,7 +19,7 @@ namespace vi {
 namespace {
 
 using KeyValue = std::variant<double, std::int64_t, bool, std::string, std::array<double, 2>, std::array<std::int64_t, 2>,
-                              std::vector<Layer>>;
+                              std::vector<Layer>, Holes>;
 
 // A table file's name as the reader opens it, made absolute: the case file's folder joined with it.
 std::string table_path(const Case& c, const std::string& name) {
@@ -51,6 +51,7 @@ KeyValue key_value(const Case& c, const KeySpec& k, std::size_t i) {
         case KeyKind::choice:
         case KeyKind::text: return k.get_text(c, i);
         case KeyKind::layer_stack: return *k.layers(const_cast<Case&>(c), i);
+        case KeyKind::hole_array: return k.holes(const_cast<Case&>(c), i)->value_or(Holes{});
     }
     return std::string();
 }
@@ -123,6 +124,11 @@ struct TomlText {
         }
         return out + "]";
     }
+    std::string operator()(const Holes& h) const {
+        std::string out = "{ size = ";
+        out.append(toml_float(h.size)).append(", pitch = ").append(toml_float(h.pitch)).append(", shape = ");
+        return out.append(h.shape == HoleShape::circle ? "\"circle\"" : "\"square\"").append(" }");
+    }
 };
 
 struct JsonValue {
@@ -136,6 +142,9 @@ struct JsonValue {
         nlohmann::json out = nlohmann::json::array();
         for (const Layer& l : v) out.push_back({{"material", l.material}, {"thickness", l.thickness}});
         return out;
+    }
+    nlohmann::json operator()(const Holes& h) const {
+        return {{"size", h.size}, {"pitch", h.pitch}, {"shape", h.shape == HoleShape::circle ? "circle" : "square"}};
     }
 };
 

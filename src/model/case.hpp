@@ -46,6 +46,17 @@ struct Layer {
     double thickness = 0.0;            // [m]
 };
 
+// The shape of a section's release holes.
+enum class HoleShape { square, circle };
+
+// Release holes through a section in a square array: each a square of side `size` or a circle of
+// diameter `size`, at `pitch` along and across the beam [m].
+struct Holes {
+    double size = 0.0;
+    double pitch = 0.0;
+    HoleShape shape = HoleShape::square;
+};
+
 // A part [from, to] (x/l) of the beam with its own width, thickness or layer stack; what it leaves
 // out is the plain beam's (its width, its thickness, the [material]).
 struct BeamSection {
@@ -54,6 +65,7 @@ struct BeamSection {
     std::optional<double> width;       // [m]; unset: the beam's
     std::optional<double> thickness;   // [m]; unset: the beam's (or the layers' sum)
     std::vector<Layer> layers;         // bottom to top; empty: one layer of [material]
+    std::optional<Holes> holes;        // unset: a solid section
 };
 
 // Straight beam along x from 0 to length, rectangular section width x thickness [m], optionally

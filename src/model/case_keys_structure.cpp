@@ -107,6 +107,14 @@ SectionSpec beam_sections_section() {
     layers.default_text = "one layer of [material]";
     layers.layers = [](Case& c, std::size_t i) { return &c.beam.sections[i].layers; };
     layers.is_set = [](const Case& c, std::size_t i) { return !c.beam.sections[i].layers.empty(); };
+    KeySpec& holes = s.add_key(hole_array_key("holes"));
+    holes.means("release holes through the section in a square array, each a square of side `size` (or a circle of "
+                "diameter `size`) at `pitch` along and across: the ligament efficiency sets EI and EA, the solid "
+                "fraction rho A and the area of electrodes under it, and the holes vent the squeeze film "
+                "(docs/model.md, perforated sections; docs/squeeze-film.md §9)");
+    holes.default_text = "none (solid)";
+    holes.holes = [](Case& c, std::size_t i) { return &c.beam.sections[i].holes; };
+    holes.is_set = [](const Case& c, std::size_t i) { return c.beam.sections[i].holes.has_value(); };
     return s;
 }
 

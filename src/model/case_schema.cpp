@@ -230,6 +230,10 @@ KeySpec layer_stack_key(std::string name) {
     return make_key(std::move(name), KeyKind::layer_stack, Dimension::dimensionless, "-");
 }
 
+KeySpec hole_array_key(std::string name) {
+    return make_key(std::move(name), KeyKind::hole_array, Dimension::dimensionless, "-");
+}
+
 std::string SectionSpec::parent() const {
     const auto dot = name.find('.');
     return dot == std::string::npos ? std::string() : name.substr(0, dot);

@@ -32,6 +32,7 @@ enum class KeyKind {
     text,          // a string
     table_file,    // a CSV file name, relative to the case file: the rows t_s,<column> of a g(t)
     layer_stack,   // an array of inline tables { material = "name", thickness = length }, bottom to top
+    hole_array,    // an inline table { size = length, pitch = length, shape = "square" | "circle" }
 };
 
 // True for the kinds a sweep, a fit or an optimisation can set: number, integer and the pairs.
@@ -123,6 +124,8 @@ struct KeySpec {
     std::function<TimeFunction*(Case&, std::size_t i)> table;
     // layer_stack: the layers the rows go into.
     std::function<std::vector<Layer>*(Case&, std::size_t i)> layers;
+    // hole_array: where the holes go.
+    std::function<std::optional<Holes>*(Case&, std::size_t i)> holes;
 
     // Fluent setters for the tables of keys.
     KeySpec& means(std::string text);
@@ -144,6 +147,7 @@ KeySpec choice_key(std::string name, std::vector<std::string> options);
 KeySpec text_key(std::string name);
 KeySpec table_file_key(std::string name, std::string column);
 KeySpec layer_stack_key(std::string name);
+KeySpec hole_array_key(std::string name);
 
 // One section of a case file: a table ([beam]), an array of tables ([[supports]]) or the top level
 // (name ""), its keys in file order, and how its entries are reached in a Case.

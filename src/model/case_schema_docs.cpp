@@ -52,6 +52,7 @@ std::string type_cell(const KeySpec& k) {
         case KeyKind::text: return "string";
         case KeyKind::table_file: return "string: a CSV file with the columns `t_s," + k.column + "`";
         case KeyKind::layer_stack: return "array of `{ material = \"name\", thickness = length }`, bottom to top";
+        case KeyKind::hole_array: return "`{ size = length, pitch = length, shape = \"square\" }` (`shape`: `\"square\"` or `\"circle\"`)";
     }
     return "-";
 }

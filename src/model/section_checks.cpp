@@ -55,6 +55,15 @@ void check_sections(std::vector<CaseProblem>& out, const Case& c) {
             }
         }
     }
+    for (std::size_t k = 0; k < c.beam.sections.size(); ++k) {
+        const BeamSection& s = c.beam.sections[k];
+        const double w = s.width.value_or(c.beam.width);
+        if (s.holes && s.holes->size > 0.0 && w > 0.0 && !(s.holes->size < w)) {
+            out.push_back({section_key(k, "holes.size"), "the holes (" + significant(s.holes->size * 1e6, 4) +
+                                                             " um) are as wide as the section or wider (w = " +
+                                                             significant(w * 1e6, 4) + " um): they would cut it"});
+        }
+    }
     std::string names;
     for (const LayerMaterial& m : c.materials) names += (names.empty() ? "" : ", ") + ("\"" + m.name + "\"");
     for (std::size_t k = 0; k < c.beam.sections.size(); ++k) {

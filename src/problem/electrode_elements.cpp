@@ -46,6 +46,9 @@ PadMesh pad_mesh(const Case& c, std::size_t k, const System& s, const std::vecto
     // Over sections of other widths, each point's parallel-plate force and layer stiffness scale
     // with the width there; Meijs-Fokkema's fringe is a law of one strip width, so an electrode with
     // fringing must face one width.
+    // Release holes take their area out of the electrode's (their own edges' fringe field ignored):
+    // the force, the capacitance and the layer's contact all scale with the solid fraction there.
+    for (PadPoint& p : m.points) p.weight *= section_at(s, p.x).solid_fraction;
     if (e.width > 0.0 || !s.sectioned) return m;
     for (PadPoint& p : m.points) {
         const double w = section_at(s, p.x).width;

@@ -56,12 +56,20 @@ public:
             if (q.dofs.empty()) continue;
             // The narrow-beam film damps each length by mu_eff w^3 / g^3: over another width, the
             // point's weight takes (w / w_film)^3.
+            // Under release holes the gas also leaves through them: each point takes its section's.
+            std::vector<FilmPerforation> holes;
             for (PadPoint& p : q.points) {
-                const double ratio = section_at(s, p.x).width / g.width;
+                const SectionResultants& here = section_at(s, p.x);
+                const double ratio = here.width / g.width;
                 if (ratio != 1.0) p.weight *= ratio * ratio * ratio;
+                if (!here.holes) continue;
+                if (holes.empty()) holes.resize(q.points.size());
+                holes[static_cast<std::size_t>(&p - q.points.data())] = {
+                    here.holes->size, here.holes->pitch, here.holes->shape == HoleShape::circle, here.thickness,
+                    here.width};
             }
             out.push_back({std::make_shared<const SqueezeFilm>(f.name, std::move(q.dofs), std::move(q.points), g,
-                                                               gas_of(*c.air)),
+                                                               gas_of(*c.air), std::move(holes)),
                            f.entry});
         }
         return out;
@@ -84,7 +92,22 @@ std::vector<FilmRegime> film_regimes(const Case& c, double omega) {
         r.gap = f.gap;
         r.knudsen = gas.mean_free_path / f.gap;
         r.viscosity_ratio = 1.0 / veijola_factor(r.knudsen);
-        r.squeeze_number = squeeze_number(gas, c.beam.width, f.gap, omega, c.air->pressure);
+        // The section at the span's middle (the film element's width): under release holes the film's
+        // spring-to-damping ratio falls with its damping, so the squeeze number takes the holes' factor.
+        double width = c.beam.width;
+        double factor = 1.0;
+        if (!c.beam.sections.empty()) {
+            const SectionResultants sec = section_resultants(c, section_index_at(c.beam, 0.5 * (f.from + f.to)));
+            width = sec.width;
+            if (sec.holes) {
+                const FilmCoefficient solid = film_coefficient(gas, width, f.gap);
+                factor = perforation_factor({sec.holes->size, sec.holes->pitch, sec.holes->shape == HoleShape::circle,
+                                             sec.thickness, width},
+                                            gas, f.gap, solid.dc / solid.c)
+                             .value;
+            }
+        }
+        r.squeeze_number = squeeze_number(gas, width, f.gap, omega, c.air->pressure) * factor;
         out.push_back(std::move(r));
     }
     return out;
