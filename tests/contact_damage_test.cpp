@@ -22,6 +22,7 @@
 #include "model/input_error.hpp"
 #include "report/transient_output.hpp"
 #include "support/run_command.hpp"
+#include "hertz_point_mass.hpp"
 #include "transient_fixtures.hpp"
 
 namespace vi {
@@ -29,30 +30,12 @@ namespace damage_test {
 
 double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
-constexpr double kRadius = 2e-6, kMass = 1e-11;
-double gold_star() { return effective_modulus(79e9, 0.42, 79e9, 0.42); }
-double gold_k() { return hertz_stiffness(gold_star(), kRadius); }
-
-// A mass m 0.1 um above a Hertz surface, moving down to it at v_in; nothing else acts.
-TransientProblem falling_mass(double v_in, double alpha, double yield_strength) {
-    const double h = 0.1e-6;
-    TransientProblem p = test::one_dof(kMass, 0.0);
-    p.forces.push_back(std::make_shared<HertzContact>("supports[0]", 0, 1.0, 0.0, 0.0, gold_k(), alpha, kRadius,
-                                                      std::nullopt, yield_strength));
-    p.q0 = Eigen::VectorXd::Constant(1, h);
-    p.v0 = Eigen::VectorXd::Constant(1, -v_in);
-    p.modes0 = {0};
-    const double d_max = std::pow(5.0 * kMass * v_in * v_in / (4.0 * gold_k()), 0.4);
-    p.t_end = h / v_in + 6.0 * d_max / v_in;
-    p.output_step = p.t_end / 50;
-    return p;
-}
-
-CvodeOptions tight() {
-    CvodeOptions o;
-    o.rtol = 1e-12;
-    return o;
-}
+using test::hertz::falling_mass;
+using test::hertz::gold_k;
+using test::hertz::gold_star;
+using test::hertz::kMass;
+using test::hertz::kRadius;
+using test::hertz::tight;
 
 // The energy the damped contact takes from a point mass is its kinetic energy lost,
 // (1 - e^2) m v^2 / 2 with e the Hunt-Crossley restitution at alpha v; undamped, nothing.
@@ -62,7 +45,7 @@ TEST(ContactDamage, PointMassLosesTheContactEnergyOfItsRestitution) {
         for (const double v : {0.1, 1.0}) {
             SCOPED_TRACE("e " + std::to_string(e) + ", v " + std::to_string(v));
             const double alpha = e < 1.0 ? hunt_crossley_damping(e, v) : 0.0;
-            const TransientResult r = solve_cvode(falling_mass(v, alpha, nan), {}, tight());
+            const TransientResult r = solve_cvode(falling_mass(v, alpha, 1.0, nan), {}, tight());
             ASSERT_EQ(r.episodes.size(), 1u);
             const ContactEpisode& ep = r.episodes[0];
             const double k0 = 0.5 * kMass * v * v;
@@ -84,14 +67,14 @@ TEST(ContactDamage, PeakPressureIsHertzsAndYieldOnsetIsAt1Point6Y) {
     const double p0 = 3.0 * f / (2.0 * std::numbers::pi * a * a);
     for (const double margin : {0.99, 1.01}) {
         const double y = margin * p0 / 1.6;
-        const TransientResult r = solve_cvode(falling_mass(v, 0.0, y), {}, tight());
+        const TransientResult r = solve_cvode(falling_mass(v, 0.0, 1.0, y), {}, tight());
         ASSERT_EQ(r.episodes.size(), 1u);
         const ContactEpisode& ep = r.episodes[0];
         EXPECT_LT(rel(ep.peak_pressure, p0), 1e-6);
         ASSERT_TRUE(ep.yielded.has_value());
         EXPECT_EQ(*ep.yielded, margin < 1.0) << margin;
     }
-    const TransientResult none = solve_cvode(falling_mass(v, 0.0, std::numeric_limits<double>::quiet_NaN()), {}, tight());
+    const TransientResult none = solve_cvode(falling_mass(v, 0.0), {}, tight());
     EXPECT_FALSE(none.episodes.at(0).yielded.has_value());
 }
 

@@ -20,6 +20,7 @@
 #include "report/contact_resistance.hpp"
 #include "report/transient_output.hpp"
 #include "support/run_command.hpp"
+#include "hertz_point_mass.hpp"
 #include "transient_fixtures.hpp"
 
 namespace vi {
@@ -28,30 +29,11 @@ namespace hertz_test {
 
 double rel(double a, double b) { return std::abs(a - b) / std::abs(b); }
 
-// Gold on gold (E = 79 GPa, nu = 0.42) through a dimple of R = 2 um.
-constexpr double kRadius = 2e-6, kMass = 1e-11;
-double gold_k() { return hertz_stiffness(effective_modulus(79e9, 0.42, 79e9, 0.42), kRadius); }
-
-// A mass m above a Hertz surface at 0 (below for sign = +1, above for -1), 0.1 um away, moving to it
-// at v_in; nothing else acts.
-TransientProblem falling_mass(double v_in, double alpha, double sign) {
-    const double h = 0.1e-6;
-    TransientProblem p = test::one_dof(kMass, 0.0);
-    p.forces.push_back(std::make_shared<HertzContact>("supports[0]", 0, sign, 0.0, 0.0, gold_k(), alpha, kRadius));
-    p.q0 = Eigen::VectorXd::Constant(1, sign * h);
-    p.v0 = Eigen::VectorXd::Constant(1, -sign * v_in);
-    p.modes0 = {0};
-    const double d_max = std::pow(5.0 * kMass * v_in * v_in / (4.0 * gold_k()), 0.4);
-    p.t_end = h / v_in + 6.0 * d_max / v_in;
-    p.output_step = p.t_end / 50;
-    return p;
-}
-
-CvodeOptions tight() {
-    CvodeOptions o;
-    o.rtol = 1e-12;
-    return o;
-}
+using test::hertz::falling_mass;
+using test::hertz::gold_k;
+using test::hertz::kMass;
+using test::hertz::kRadius;
+using test::hertz::tight;
 
 // Hertz's impact of a point mass (Johnson 1985, eq. 11.24-11.25): d_max = (5 m v^2 / (4 k))^(2/5),
 // F_max = k d_max^(3/2), contact time t_c = 2 (d_max / v) Int_0^1 du / sqrt(1 - u^(5/2))

@@ -9,8 +9,8 @@
 #include <numbers>
 #include <random>
 
-#include "dynamics/exact/event_search.hpp"
-#include "dynamics/exact/signal_scan.hpp"
+#include "dynamics/signal/event_search.hpp"
+#include "dynamics/signal/signal_scan.hpp"
 
 namespace vi {
 namespace {

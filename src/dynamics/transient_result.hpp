@@ -89,6 +89,8 @@ struct SolverStats {
     int basis_vectors = 0;
     int basis_modes = 0;
     double initial_projection_error = 0.0;
+    // CVODE: flights carried in closed form (CvodeOptions::free_flight) instead of stepped.
+    int free_flights = 0;
     std::string method;            // "exact" or "cvode"
     // Why the exact solver handed the run to CVODE (a contact state it could not decompose), or
     // empty when the method that ran is the one chosen.

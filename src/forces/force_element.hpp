@@ -34,6 +34,19 @@ struct ContactReading {
     double point_velocity = 0.0;
 };
 
+// A linear function of an element's state, wq . q + wv . v + offset over its DOFs (the units of the
+// switching function it is part of).
+struct LinearPart {
+    std::vector<double> wq, wv;  // weights over dofs()
+    double offset = 0.0;
+};
+
+// An element that exerts no force in some mode (an open contact): there its switching function is
+// the smallest of `parts`, so its mode ends where they are all positive; no parts: it never switches.
+struct FreeMode {
+    std::vector<LinearPart> parts;
+};
+
 // What a terminal mode (ForceElement::ends_run) answers, read where the element entered it: a
 // one-word outcome ("collapsed"), the place along the beam [m] (negative when none), the value that
 // decided it (for an electrode, the narrowest air gap [m]) and one sentence saying what happened.
@@ -147,6 +160,11 @@ public:
 
     // The element as the exact solver needs it, or nullopt when its force is not piecewise linear.
     [[nodiscard]] virtual std::optional<LinearForm> linear_form() const { return std::nullopt; }
+
+    // In `mode`: where the element neither acts nor stores or dissipates energy there, its switching
+    // function as linear parts (a solver may then carry the beam's free motion in closed form up to
+    // the switch); nullopt where it acts or its switching function is not of that form.
+    [[nodiscard]] virtual std::optional<FreeMode> free_mode(int /*mode*/) const { return std::nullopt; }
 
     // Contacts report episodes: which mode is "in contact", and the reading.
     [[nodiscard]] virtual bool is_contact() const { return false; }

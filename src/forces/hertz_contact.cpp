@@ -113,6 +113,15 @@ double HertzContact::switching_function(const ElementState& s, int mode) const {
     return mode == 1 ? -g : g;
 }
 
+std::optional<FreeMode> HertzContact::free_mode(int mode) const {
+    if (mode == 1) return std::nullopt;
+    // d / R = sign (surface - q) / R; 1 + alpha dd/dt = 1 - alpha sign v (switching_function's parts).
+    FreeMode m;
+    m.parts.push_back({{-sign_ / radius_}, {0.0}, sign_ * surface_ / radius_});
+    m.parts.push_back({{0.0}, {-alpha_ * sign_}, 1.0});
+    return m;
+}
+
 int HertzContact::static_mode(const ElementState& s) const {
     const double tol = 1e-12 * std::max(std::abs(surface_), std::abs(s.q[0]));
     return penetration(s) > tol ? 1 : 0;

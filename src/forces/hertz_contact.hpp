@@ -77,6 +77,8 @@ public:
 
     // 0: dd/dt; 1: dF/dt while closed, 1 while open (PointContact).
     void watch_functions(const ElementState& s, int mode, double* g) const override;
+    // Open: min(d / R, 1 + alpha dd/dt), both linear; closed: nullopt.
+    [[nodiscard]] std::optional<FreeMode> free_mode(int mode) const override;
 
     [[nodiscard]] ContactReading contact_reading(const ElementState& s) const override;
     // With a resistance model: R of the spot at penetration d (+inf for d <= 0); else NaN.

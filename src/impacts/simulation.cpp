@@ -81,6 +81,8 @@ void require_first_impact(const Case& c, const SimulationRun& run, bool at_rest)
     }
 }
 
+}  // namespace
+
 ImpactSettings impact_settings(const Case& c, const BuiltProblem& b) {
     ImpactSettings s;
     s.omega1 = b.model.omega1;
@@ -95,8 +97,6 @@ ImpactSettings impact_settings(const Case& c, const BuiltProblem& b) {
     if (!b.model.contacts.empty()) s.contact_equilibrium = q_eq[b.model.forces[b.model.contacts.front().element]->dofs().front()];
     return s;
 }
-
-}  // namespace
 
 std::vector<LedgerContact> ledger_contacts(const Case& c, const BeamModel& m) {
     std::vector<LedgerContact> out;

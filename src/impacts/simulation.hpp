@@ -48,6 +48,9 @@ long field_every(const SolverSettings& s, int dofs);
 TransientOptions transient_options(const SolverSettings& s, const SimulationOptions& o = {});
 CvodeOptions cvode_options(const SolverSettings& s);
 
+// How the case's impacts are summarised (omega1, grouping, settling, equilibria): what summarize_impacts takes.
+ImpactSettings impact_settings(const Case& c, const BuiltProblem& b);
+
 // Runs the case's transient on the solver it chooses (solver.method), CVODE where the exact solver
 // gives up and solver.fallback allows. Throws InputError when the case cannot run (no horizon, a
 // horizon too short to see the first impact, a limit of check_transient_run, checked before any

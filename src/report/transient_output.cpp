@@ -249,6 +249,8 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
         j["solver"]["basis_vectors"] = r.stats.basis_vectors;
         j["solver"]["basis_modes"] = r.stats.basis_modes;
         j["solver"]["initial_projection_error"] = r.stats.initial_projection_error;
+        // Only where flights were carried in closed form, so that other summaries stay as they were.
+        if (r.stats.free_flights > 0) j["solver"]["free_flights"] = r.stats.free_flights;
     }
     if (!r.stats.fallback_reason.empty()) j["solver"]["fallback_reason"] = r.stats.fallback_reason;
     if (switching) {

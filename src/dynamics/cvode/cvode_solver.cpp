@@ -20,6 +20,7 @@
 #include "dynamics/cvode/cvode_linear_solver.hpp"
 #include "dynamics/cvode/cvode_system.hpp"
 #include "dynamics/cvode/fast_nvector.hpp"
+#include "dynamics/cvode/free_flight.hpp"
 #include "model/number_format.hpp"
 #include "model/run_control.hpp"
 
@@ -125,6 +126,11 @@ private:
     void enter_initial_modes(const std::vector<int>& start);
     void integrate();
     std::optional<double> step(double t, double t_stop);
+    // A flight (every element in a free mode) carried in closed form from t towards t_stop: its
+    // samples, the extremes, the first switch, as step() meets them; where step() would leave the run.
+    std::optional<double> fly(double t, double t_stop, const std::vector<FreeMode>& free);
+    // The flight's extremes over [t, t_ev] after the first onset (update_extremes' between the ends).
+    void flight_extremes(double t_ev);
     void finish();
     void check(int flag, const char* what) const;
     void setup();
@@ -171,6 +177,10 @@ private:
     std::vector<int> modes_;             // each element's mode
     cvode_detail::EpisodeRecorder episodes_{sys_, r_};
     cvode_detail::ConductionRecorder conduction_{sys_, r_};
+    // Flights in closed form (c_.free_flight and a basis it can take), and what their searches may
+    // spend: solver.max_steps evaluations, as the exact solver's.
+    cvode_detail::FreeFlight flight_{sys_};
+    long flight_budget_ = 0;
     // Energy that appears or vanishes in an element at a switch: a Kelvin-Voigt contact opening with
     // d > 0 (the damped case: F = 0 before d = 0) drops 1/2 Kc d^2 from its stored energy. A massless
     // element left alone relaxes through its damper, which dissipates exactly that, so it is booked
@@ -439,6 +449,7 @@ std::vector<int> Driver::prepare() {
     const std::vector<int> start = sys_.initial_modes(y0_.data());
     // A run that ends at its first contact may end long before the horizon: its pace says nothing.
     paced_ = !c_.stop_at_first_contact;
+    flight_budget_ = o_.max_steps;
     windows_needed_ = top_undamped() ? 1 : 3;
     modes_.assign(start.size(), 0);
     sys_.set_modes(modes_);
@@ -524,6 +535,64 @@ std::optional<double> Driver::step(double t, double t_stop) {
     }
     t_done_ = t;
     return t;
+}
+
+std::optional<double> Driver::fly(double t, double t_stop, const std::vector<FreeMode>& free) {
+    double* y = N_VGetArrayPointer(s_.y);
+    flight_.start(t, y);
+    double t_ev = t_stop;
+    std::vector<int> which;
+    for (int e = 0; e < sys_.elements(); ++e) {
+        const std::optional<double> ts = flight_.first_switch(e, free[static_cast<std::size_t>(e)], t_ev, &flight_budget_);
+        if (!ts) continue;
+        if (!which.empty() && same_time(*ts, t_ev)) {
+            which.push_back(e);
+        } else {
+            which = {e};
+            t_ev = *ts;
+        }
+    }
+    ++r_.stats.free_flights;
+    if (!r_.episodes.empty()) {
+        episodes_.update_extremes(t, y, modes_);
+        flight_extremes(t_ev);
+    }
+    for (long k = 0; next_sample_ < samples_ && sample_time(next_sample_) < t_ev && !same_time(sample_time(next_sample_), t_ev);
+         ++next_sample_, ++k) {
+        if ((k & 1023) == 1023) check_run();
+        const double ts = sample_time(next_sample_);
+        flight_.state(ts, N_VGetArrayPointer(s_.tmp));
+        record(ts, N_VGetArrayPointer(s_.tmp));
+    }
+    flight_.state(t_ev, y);
+    sample_until(t_ev, false);
+    check_run();
+    if (o_.progress) o_.progress(t_ev);
+    dissipation_t_ = std::max(dissipation_t_, t_ev);
+    episodes_.update_extremes(t_ev, y, modes_);
+    t_done_ = t_ev;
+    if (which.empty()) return t_ev;
+    toggle(t_ev, which);
+    conduction_.switched(t_ev, y, modes_);
+    episodes_.update_extremes(t_ev, y, modes_);
+    if (ended_by_element(t_ev) || (c_.stop_at_first_contact && contact_closed())) {
+        t_final_ = t_ev;
+        return std::nullopt;
+    }
+    return t_ev;
+}
+
+void Driver::flight_extremes(double t_ev) {
+    Extremes& ex = r_.extremes;
+    const SignalMaximum top = flight_.maximum(sys_.watched_row(), t_ev, ex.watched_max, &flight_budget_);
+    if (top.tau >= 0.0) {
+        ex.watched_max = top.value;
+        ex.watched_max_t = top.tau;
+    }
+    if (!sys_.contacts().empty()) {
+        const SignalMaximum c = flight_.maximum(sys_.contact_row(0), t_ev, ex.contact_max, &flight_budget_);
+        if (c.tau >= 0.0) ex.contact_max = c.value;
+    }
 }
 
 // solver.max_steps reached at t: what raises it, and why the steps were many when the model keeps
@@ -629,7 +698,9 @@ void Driver::integrate() {
             restart(t);
             continue;
         }
-        const std::optional<double> next = step(t, t_stop);
+        std::optional<std::vector<FreeMode>> free;
+        if (c_.free_flight && flight_.usable()) free = flight_.free_modes(modes_);
+        const std::optional<double> next = free ? fly(t, t_stop, *free) : step(t, t_stop);
         if (!next) return;
         t = *next;
     }

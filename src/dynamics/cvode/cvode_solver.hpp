@@ -31,6 +31,11 @@ struct CvodeOptions {
     // End the run at the first contact onset (the result's t_end is then that time, the episode
     // closed_at_end): a question that the first contact answers (dynamic pull-in) needs no more.
     bool stop_at_first_contact = false;
+    // Carry a flight, where every element is in a mode that exerts no force (ForceElement::free_mode:
+    // open contacts and nothing else acting), in closed form: each basis vector is then a damped
+    // oscillator, its switches are found by the exact solver's certified search, and CVODE steps only
+    // while something acts. Off: CVODE steps through the flights too (the cross-check).
+    bool free_flight = true;
 };
 
 // Integrates p from 0 to p.t_end (TransientSolver's rules; max_steps counts CVODE's internal steps,

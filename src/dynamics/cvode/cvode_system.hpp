@@ -94,6 +94,11 @@ public:
         return watched_row_.dot(Eigen::Map<const Eigen::VectorXd>(y + r_, r_));
     }
     [[nodiscard]] double contact_displacement(int j, const double* y) const;
+    // The basis rows of the watched point's and of contact j's displacement (1 x r).
+    [[nodiscard]] const Eigen::RowVectorXd& watched_row() const { return watched_row_; }
+    [[nodiscard]] Eigen::RowVectorXd contact_row(int j) const {
+        return rows_[static_cast<std::size_t>(contacts_[static_cast<std::size_t>(j)])].row(0);
+    }
 
     // kinetic, strain, the elements' stored energy and the dissipation and work integrals from y;
     // `jump` is added to the contacts' dissipated energy (what a massless element loses when it

@@ -11,7 +11,7 @@
 #include <sstream>
 #include <string>
 
-#include "dynamics/exact/event_search.hpp"
+#include "dynamics/signal/event_search.hpp"
 #include "dynamics/exact/exact_state.hpp"
 #include "dynamics/piecewise_linear_form.hpp"
 #include "dynamics/exact/state_modes.hpp"

@@ -6,7 +6,7 @@
 #include <memory>
 #include <vector>
 
-#include "dynamics/exact/exp_signal.hpp"
+#include "dynamics/signal/exp_signal.hpp"
 #include "dynamics/exact/state_modes.hpp"
 #include "dynamics/piecewise_linear_problem.hpp"
 #include "dynamics/transient_result.hpp"

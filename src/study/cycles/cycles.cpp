@@ -36,30 +36,31 @@ TimeFunction repeated_table(const TimeFunction& g, double period, int n, const s
     return r;
 }
 
+// The intervals (contact episodes, conduction stretches) that begin in [t0, t1), times from t0, cut
+// at t1; one cut there is still open at its end (`open_at_end`, the interval type's own flag).
+template <class Interval>
+std::vector<Interval> slice(const std::vector<Interval>& all, double t0, double t1, bool Interval::*open_at_end) {
+    std::vector<Interval> out;
+    for (const Interval& e : all) {
+        if (e.t_on < t0 || e.t_on >= t1) continue;
+        Interval x = e;
+        x.t_on -= t0;
+        x.t_off = std::min(e.t_off, t1) - t0;
+        x.*open_at_end = e.*open_at_end || e.t_off > t1;
+        out.push_back(x);
+    }
+    return out;
+}
+
 // The records of cycle k: its episodes and conduction stretches, times from its start, cut at its end.
 TransientResult cycle_slice(const TransientResult& r, double t0, double period) {
     TransientResult s;
     s.t_end = period;
     const double t1 = t0 + period;
-    for (const ContactEpisode& e : r.episodes) {
-        if (e.t_on < t0 || e.t_on >= t1) continue;
-        ContactEpisode x = e;
-        x.t_on -= t0;
-        x.t_off = std::min(e.t_off, t1) - t0;
-        x.closed_at_end = e.closed_at_end || e.t_off > t1;
-        s.episodes.push_back(x);
-    }
+    s.episodes = slice(r.episodes, t0, t1, &ContactEpisode::closed_at_end);
     for (const ContactConduction& c : r.conduction) {
         ContactConduction x = c;
-        x.stretches.clear();
-        for (const ConductionStretch& st : c.stretches) {
-            if (st.t_on < t0 || st.t_on >= t1) continue;
-            ConductionStretch y = st;
-            y.t_on -= t0;
-            y.t_off = std::min(st.t_off, t1) - t0;
-            y.on_at_end = st.on_at_end || st.t_off > t1;
-            x.stretches.push_back(y);
-        }
+        x.stretches = slice(c.stretches, t0, t1, &ConductionStretch::on_at_end);
         s.conduction.push_back(x);
     }
     return s;

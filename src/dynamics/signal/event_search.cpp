@@ -1,11 +1,11 @@
-#include "dynamics/exact/event_search.hpp"
+#include "dynamics/signal/event_search.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
 
-#include "dynamics/exact/signal_scan.hpp"
+#include "dynamics/signal/signal_scan.hpp"
 #include "model/run_control.hpp"
 
 namespace vi {

@@ -7,7 +7,7 @@
 #include <memory>
 #include <vector>
 
-#include "dynamics/exact/exp_signal.hpp"
+#include "dynamics/signal/exp_signal.hpp"
 
 namespace vi {
 

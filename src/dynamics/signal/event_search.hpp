@@ -5,7 +5,7 @@
 #include <limits>
 #include <optional>
 
-#include "dynamics/exact/exp_signal.hpp"
+#include "dynamics/signal/exp_signal.hpp"
 
 namespace vi {
 

@@ -1,4 +1,4 @@
-#include "dynamics/exact/signal_scan.hpp"
+#include "dynamics/signal/signal_scan.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "dynamics/exact/exp_signal.hpp"
+#include "dynamics/signal/exp_signal.hpp"
 
 #include <algorithm>
 #include <cmath>
