@@ -21,7 +21,9 @@
 #include "model/run_estimate.hpp"
 #include "model/section_scales.hpp"
 #include "problem/beam_model.hpp"
+#include "impacts/simulation.hpp"
 #include "problem/film_elements.hpp"
+#include "report/transient_output.hpp"
 #include "statics/layer_hold.hpp"
 #include "study/stiction/stiction.hpp"
 
@@ -202,6 +204,28 @@ TEST(SectionsEstimates, FringingRangeTakesTheSectionUnderTheElectrode) {
                               "thickness = \"4 um\"\n";
     EXPECT_NE(error_of(electrode).find("t/g = 0.2"), std::string::npos) << error_of(electrode);
     EXPECT_EQ(error_of(thick + electrode), "");
+}
+
+// summary.json's resolved beam: each section as the model took it (width, thickness, EI, rho A,
+// neutral axis) and the beam's mass; a plain beam lists none.
+TEST(SectionsEstimates, SummaryListsTheSections) {
+    const std::string run = "[[supports]]\nposition = 1\ngap = \"0.5 um\"\nstiffness = \"50 N/m\"\n"
+                            "[initial]\nkind = \"displacement\"\ndisplacement = \"1 um\"\n"
+                            "[solver]\nmethod = \"exact\"\nhorizon = \"20 us\"\n";
+    const Case c = with(kStepped + run);
+    const SimulationRun r = run_simulation(c);
+    const nlohmann::json j = resolved_case_json(c, r.built, r.summary);
+    ASSERT_EQ(j["beam"]["sections"].size(), 2u);
+    const double E = 200e9, rho = 8900.0;
+    EXPECT_DOUBLE_EQ(j["beam"]["sections"][1]["width_m"].get<double>(), 15e-6);
+    EXPECT_DOUBLE_EQ(j["beam"]["sections"][1]["thickness_m"].get<double>(), 1.2e-6);
+    EXPECT_LT(rel(j["beam"]["sections"][0]["EI_n_m2"].get<double>(), E * 30e-6 * 64e-18 / 12.0), 1e-14);
+    EXPECT_LT(rel(j["beam"]["sections"][1]["rho_A_kg_m"].get<double>(), rho * 15e-6 * 1.2e-6), 1e-14);
+    EXPECT_LT(rel(j["beam"]["mass_kg"].get<double>(), rho * (30e-6 * 4e-6 * 40e-6 + 15e-6 * 1.2e-6 * 60e-6)), 1e-14);
+    const SimulationRun p = run_simulation(with(run));
+    const nlohmann::json plain = resolved_case_json(with(run), p.built, p.summary);
+    EXPECT_FALSE(plain["beam"].contains("sections"));
+    EXPECT_LT(rel(plain["beam"]["mass_kg"].get<double>(), rho * 30e-6 * 2e-6 * 100e-6), 1e-14);
 }
 
 }  // namespace
