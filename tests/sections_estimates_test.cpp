@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -21,6 +22,7 @@
 #include "model/run_estimate.hpp"
 #include "model/section_scales.hpp"
 #include "problem/beam_model.hpp"
+#include "forces/hertz_contact.hpp"
 #include "impacts/simulation.hpp"
 #include "problem/film_elements.hpp"
 #include "report/transient_output.hpp"
@@ -226,6 +228,37 @@ TEST(SectionsEstimates, SummaryListsTheSections) {
     const nlohmann::json plain = resolved_case_json(with(run), p.built, p.summary);
     EXPECT_FALSE(plain["beam"].contains("sections"));
     EXPECT_LT(rel(plain["beam"]["mass_kg"].get<double>(), rho * 30e-6 * 2e-6 * 100e-6), 1e-14);
+}
+
+// A Hertz dimple on a layered section meets the layer facing it: the bottom one for a support below,
+// the top one above (1/E* = (1 - nu1^2)/E1 + (1 - nu2^2)/E2 with that layer's E1, nu1).
+TEST(SectionsEstimates, HertzContactMeetsTheFacingLayer) {
+    const std::string stack =
+        "[[materials]]\nname = \"nitride\"\nyoungs_modulus = \"250 GPa\"\ndensity = \"3100 kg/m^3\"\npoisson_ratio = 0.23\n"
+        "[[materials]]\nname = \"gold\"\nyoungs_modulus = \"79 GPa\"\ndensity = \"19300 kg/m^3\"\npoisson_ratio = 0.42\n"
+        "[[beam.sections]]\nfrom = 0\nto = 1\n"
+        "layers = [{ material = \"nitride\", thickness = \"0.5 um\" }, { material = \"gold\", thickness = \"1.5 um\" }]\n"
+        "[solver]\nmethod = \"cvode\"\n";
+    const auto force = [&](const char* side, double v) {
+        const Case c = with(stack + "[[supports]]\nposition = 1.0\nside = \"" + side + "\"\ngap = \"0.1 um\"\n"
+                            "law = \"hertz\"\nradius = \"2 um\"\nyoungs_modulus = \"100 GPa\"\npoisson_ratio = 0.3\n");
+        const BeamModel b = build_beam_model(c);
+        for (const auto& f : b.forces) {
+            if (f->name() != "supports[0]") continue;
+            const std::vector<double> q(f->dofs().size(), v), zero(f->dofs().size(), 0.0);
+            std::vector<double> out(f->dofs().size(), 0.0);
+            f->add_force(ElementState{0.0, q.data(), zero.data(), zero.data()}, 1, out.data());  // mode 1: closed
+            double largest = 0.0;
+            for (double x : out) largest = std::max(largest, std::abs(x));
+            return largest;
+        }
+        return -1.0;
+    };
+    const double d = 0.1e-6, r = 2e-6;
+    const double below = hertz_stiffness(effective_modulus(250e9, 0.23, 100e9, 0.3), r) * std::pow(d, 1.5);
+    const double above = hertz_stiffness(effective_modulus(79e9, 0.42, 100e9, 0.3), r) * std::pow(d, 1.5);
+    EXPECT_NEAR(force("below", -0.2e-6), below, 1e-9 * below);
+    EXPECT_NEAR(force("above", 0.2e-6), above, 1e-9 * above);
 }
 
 }  // namespace

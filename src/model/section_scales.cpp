@@ -13,7 +13,8 @@ SectionScale layered(const Case& c, const BeamSection& s, double w) {
     double ea = 0.0, first = 0.0, z = 0.0;
     std::vector<std::pair<const LayerMaterial*, double>> stack;
     for (const Layer& l : s.layers) {
-        const auto m = std::find_if(c.materials.begin(), c.materials.end(), [&](const LayerMaterial& x) { return x.name == l.material; });
+        const auto m = std::find_if(c.materials.begin(), c.materials.end(),
+                                    [&](const LayerMaterial& x) { return x.name == l.material; });
         if (m == c.materials.end()) continue;
         const double e = bending_modulus(c, m->youngs_modulus, m->poisson_ratio);
         ea += e * w * l.thickness;

@@ -44,7 +44,7 @@ std::string section_elsewhere() {
            "e (tip lift Gamma l^2 / (2 E)), of a bilayer against Timoshenko's bimetal strip, of two sections of "
            "different curls against the piecewise arc; the run estimates, mode amplitudes, squeeze number, peel "
            "on an adhesive layer, detached length and fringing range of a beam written as one section unlike `[b"
-           "eam]` equal to those of the plain beam of that section.\n"
+           "eam]` equal to those of the plain beam of that section; a Hertz dimple's E* with the layer facing it.\n"
            "- **Adhesion** (`tests/adhesion_test.cpp`; docs/adhesion.md §8): pull-off forces 2 pi R w (DMT: "
            "Derjaguin, Muller and Toporov, *J. Colloid Interface Sci.* 53 (1975) 314) and 1.5 pi R w (JKR: "
            "Johnson, Kendall and Roberts, *Proc. R. Soc. Lond. A* 324 (1971) 301); the release threshold "
