@@ -50,7 +50,7 @@ void bind_analyses(py::module_& m) {
         },
         py::arg("case"), py::arg("count") = 5, py::arg("support_model") = "pin",
         "Natural modes (`vibroimpact modes --out`): {'modes': dict, 'frequencies': {column: array}, "
-        "'shapes_unsupported': ..., 'shapes_supported': ...}");
+        "'shapes_unsupported': ..., 'shapes_supported': ..., 'released_shape': ... (a curled beam)}");
     m.def(
         "simulate",
         [](const Case& c) {

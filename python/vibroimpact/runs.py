@@ -30,7 +30,8 @@ def modes(case, count=5, support_model="pin"):
     dict
         ``"modes"``: modes.json (frequencies in Hz); ``"frequencies"``: Table (``f_unsupported_hz``,
         ``f_supported_hz``, ...); ``"shapes_unsupported"``, ``"shapes_supported"``: Tables of the
-        mode shapes along the beam (``x_over_l``, ``mode1``, ...).
+        mode shapes along the beam (``x_over_l``, ``mode1``, ...); ``"released_shape"`` (a curled beam
+        only): its released shape at the nodes (``x_over_l``, ``x_m``, ``v_m``, ``theta_rad``).
     """
     return tables(_vibroimpact.modes(as_case(case), count, support_model))
 

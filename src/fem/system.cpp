@@ -163,6 +163,13 @@ double transverse_displacement(const System& s, const Eigen::VectorXd& reduced, 
     return hermite_v(p.xi, s.mesh.element_length(a), value(a, 1), value(a, 2), value(a + 1, 1), value(a + 1, 2));
 }
 
+double beam_mass(const System& s) {
+    if (!s.sectioned) return s.props.rho * s.props.A * s.length;
+    double mass = 0.0;
+    for (int e = 0; e < s.mesh.element_count(); ++e) mass += s.section_of(e).rho_A * s.mesh.element_length(e);
+    return mass;
+}
+
 const SectionResultants& section_at(const System& s, double x) {
     return s.section_of(locate(s.mesh, x).element);
 }

@@ -72,6 +72,10 @@ Eigen::VectorXd on_bending(const System& s, const Eigen::VectorXd& reduced);
 // dot product with a bending vector is v at that point.
 Eigen::VectorXd unit_point_load(const System& s, double position);
 
+// The beam's mass [kg]: rho A l of the plain beam; of a beam of sections, its elements' rho A L summed
+// (the scale of dimensionless mode amplitudes, v sqrt(m) and theta l sqrt(m)).
+double beam_mass(const System& s);
+
 // The section under coordinate x [m] (the later one at a boundary node).
 const SectionResultants& section_at(const System& s, double x);
 

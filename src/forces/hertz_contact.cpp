@@ -6,7 +6,9 @@
 #include <memory>
 #include <numbers>
 #include <stdexcept>
+#include <utility>
 
+#include "fem/section_properties.hpp"
 #include "forces/support_contacts.hpp"
 #include "model/bisection.hpp"
 #include "model/case_schema.hpp"
@@ -210,7 +212,8 @@ std::vector<KeySpec> hertz_keys() {
     star.default_text = "from the two materials";
     KeySpec e2 = number_key("youngs_modulus", Dimension::pressure);
     e2.require().in(positive()).only(hertz_without_effective_modulus())
-        .means("E2 of the counter-surface (the beam's material is the other body)");
+        .means("E2 of the counter-surface (the beam's face is the other body: [material], or the layer of its "
+               "section facing the support)");
     KeySpec nu2 = number_key("poisson_ratio", Dimension::dimensionless, "-");
     nu2.require().in(interval(-1.0, true, 0.5, false)).only(hertz_without_effective_modulus())
         .means("nu2 of the counter-surface");
@@ -311,14 +314,28 @@ public:
     }
 
 private:
+    // The beam's face the support touches, E and nu: its section's bottom layer (a support below) or
+    // top layer (above); [material] for a section without layers or a beam without sections.
+    static std::pair<double, double> face_material(const Case& c, const Support& s) {
+        if (!c.beam.sections.empty()) {
+            const BeamSection& section = c.beam.sections[section_index_at(c.beam, s.position)];
+            if (!section.layers.empty()) {
+                const Layer& face = s.side == Side::below ? section.layers.front() : section.layers.back();
+                for (const LayerMaterial& m : c.materials) {
+                    if (m.name == face.material) return {m.youngs_modulus, m.poisson_ratio};
+                }
+            }
+        }
+        return {c.material.youngs_modulus, c.material.poisson_ratio};
+    }
+
     static ForceElementPtr contact(const ElementSource& src, std::size_t k) {
         const ParameterSet& p = src.c.supports[k].params;
         const SupportGeometry g = support_geometry(src, k);
-        const Material& beam = src.c.material;
+        const auto [e1, nu1] = face_material(src.c, src.c.supports[k]);
         const double star = p.numbers.count("effective_modulus") > 0
                                 ? p.number("effective_modulus")
-                                : effective_modulus(beam.youngs_modulus, beam.poisson_ratio, p.number("youngs_modulus"),
-                                                    p.number("poisson_ratio"));
+                                : effective_modulus(e1, nu1, p.number("youngs_modulus"), p.number("poisson_ratio"));
         const double radius = p.number("radius");
         const double e = p.number("restitution", 1.0);
         const double alpha = e < 1.0 ? hunt_crossley_damping(e, p.number("reference_speed")) : 0.0;

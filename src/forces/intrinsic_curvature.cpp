@@ -240,7 +240,8 @@ SectionSpec curl_section() {
     curvature.default_text = "-";
     KeySpec gradient = number_key("stress_gradient", Dimension::dimensionless, "Pa/m");
     gradient.means("Gamma, the residual stress's gradient through the thickness (tension growing toward the top "
-                   "is positive): kappa0 = Gamma / E, E the bending modulus (`material.plate_modulus` applies)");
+                   "is positive): kappa0 = Gamma / E, E the bending modulus of [material] (`material.plate_modulus` "
+                   "applies), on a beam of sections too; a layer's own gradient is its material's `stress_gradient`");
     gradient.default_text = "-";
     KeySpec lift = number_key("tip_lift", Dimension::length);
     lift.means("delta, the tip lift of the beam released as a cantilever: kappa0 = 2 delta / l^2");

@@ -43,6 +43,7 @@ ModalStudy modal_study(const Case& c, int count, SupportModel support_model) {
     ModalStudy study;
     study.support_model = support_model;
     study.unsupported = analyse_modes(build_system(c, SupportModel::none), count);
+    study.released = released_curl(c, study.unsupported.system);
     if (!c.supports.empty()) {
         study.supported = analyse_modes(build_system(c, support_model), count);
         const std::size_t n = std::min(study.supported.bending.size(), study.unsupported.bending.size());

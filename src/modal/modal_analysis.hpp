@@ -2,9 +2,11 @@
 // Modal analysis of a case: bending and axial modes of the unsupported and the supported beam.
 
 #include <Eigen/Dense>
+#include <optional>
 #include <vector>
 
 #include "fem/system.hpp"
+#include "modal/released_curl.hpp"
 #include "modal/shape_points.hpp"
 #include "model/case.hpp"
 
@@ -37,6 +39,8 @@ struct ModalStudy {
     ModalResult unsupported;
     ModalResult supported;
     std::vector<double> ratios;
+    // The beam's released (curled) shape at rest, about which it vibrates; none when nothing curls it.
+    std::optional<ReleasedCurl> released;
 };
 
 // Runs both analyses; `count` bending (and axial) modes each. support_model is pin or spring.

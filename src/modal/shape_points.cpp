@@ -157,7 +157,7 @@ ShapeFeatures shape_features(const System& s, const Eigen::VectorXd& g) {
     const EndFlags ends{s.left != EndCondition::free, s.right != EndCondition::free,
                         s.left == EndCondition::clamped, s.right == EndCondition::clamped};
 
-    const double mass_scale = std::sqrt(s.props.rho * s.props.A * s.length);
+    const double mass_scale = std::sqrt(beam_mass(s));
     ShapeFeatures out;
     collect_zeros(s, v, ends.v_fixed_left, ends.v_fixed_right, out.nodes);
     collect_zeros(s, theta, ends.t_fixed_left, ends.t_fixed_right, out.rotation_nodes);

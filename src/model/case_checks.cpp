@@ -134,9 +134,18 @@ void check_fringing_range(std::vector<CaseProblem>& out, const Case& c, std::siz
     const Electrode& e = c.electrodes[k];
     if (e.fringing != Fringing::meijs_fokkema) return;
     const double gap = (e.gap - e.dielectric_thickness) + e.dielectric_thickness / e.dielectric_permittivity;
-    const double width = e.width > 0.0 ? e.width : c.beam.width;
-    if (!(gap > 0.0) || !std::isfinite(gap) || !(width > 0.0) || !(c.beam.thickness > 0.0)) return;
-    const double w = width / gap, t = c.beam.thickness / gap;
+    // The beam's width and thickness under the electrode's middle (the section its force takes).
+    double width = c.beam.width, thickness = c.beam.thickness;
+    for (const BeamSection& s : c.beam.sections) {
+        if (0.5 * (e.from + e.to) < s.from) break;
+        width = s.width.value_or(c.beam.width);
+        thickness = s.thickness.value_or(c.beam.thickness);
+        if (!s.layers.empty()) thickness = 0.0;
+        for (const Layer& l : s.layers) thickness += l.thickness;
+    }
+    if (e.width > 0.0) width = e.width;
+    if (!(gap > 0.0) || !std::isfinite(gap) || !(width > 0.0) || !(thickness > 0.0)) return;
+    const double w = width / gap, t = thickness / gap;
     if (w >= 0.3 && w <= 30.0 && t >= 0.3 && t <= 30.0) return;
     out.push_back({"electrodes[" + std::to_string(k) + "].fringing",
                    "\"meijs-fokkema\" holds for 0.3 <= w/g <= 30 and 0.3 <= t/g <= 30; here w/g = " + number_text(w) +
@@ -212,7 +221,8 @@ void check_axial(std::vector<CaseProblem>& out, const Case& c) {
         }
         return;
     }
-    const double critical = buckling_stress(c);
+    // A beam of sections buckles at its finite-element Euler load (problem/buckling_check.hpp).
+    const double critical = b.sections.empty() ? buckling_stress(c) : 0.0;
     if (std::isfinite(b.residual_stress) && critical > 0.0 && b.residual_stress <= -critical) {
         out.push_back({"beam.residual_stress", "is a compression at or beyond buckling: the beam buckles at -" +
                                                    number_text(critical) +

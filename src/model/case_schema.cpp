@@ -409,6 +409,20 @@ SchemaRegistration register_keys(std::string_view section, std::vector<KeySpec> 
     return SchemaRegistration(std::string(section), names);
 }
 
+void add_section_check(std::string_view section, std::function<void(std::vector<CaseProblem>&, const Case&)> check) {
+    const std::lock_guard<std::mutex> lock(registry_mutex());
+    SectionSpec* s = find_section(section);
+    if (s == nullptr) throw std::invalid_argument("add_section_check: no section '" + std::string(section) + "'");
+    if (!s->check) {
+        s->check = std::move(check);
+        return;
+    }
+    s->check = [before = std::move(s->check), after = std::move(check)](std::vector<CaseProblem>& out, const Case& c) {
+        before(out, c);
+        after(out, c);
+    };
+}
+
 SchemaRegistration register_option(std::string_view section, std::string_view key, std::string option,
                                    std::string meaning) {
     const std::lock_guard<std::mutex> lock(registry_mutex());

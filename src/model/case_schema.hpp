@@ -235,6 +235,11 @@ private:
 // beside a choice that selects it; their values live in the entries' ParameterSets.
 [[nodiscard]] SchemaRegistration register_keys(std::string_view section, std::vector<KeySpec> keys);
 
+// Adds a rule to section's check (after those it has), kept for the program's life: a rule that only
+// a higher layer can judge (a beam of sections buckles at the load its finite-element model gives).
+// Throws std::invalid_argument for an unknown section.
+void add_section_check(std::string_view section, std::function<void(std::vector<CaseProblem>&, const Case&)> check);
+
 // Adds `option` to the choice `key` of `section`, and " or `\"option\"` (meaning)" to the key's
 // meaning: a law a force family brings to a choice that lives with its section (supports' `law`),
 // so that the next law adds its own option without touching the file of the one before. Throws

@@ -1,4 +1,6 @@
 #include "model/run_estimate.hpp"
+
+#include "model/section_scales.hpp"
 #include "model/number_format.hpp"
 
 #include <unistd.h>
@@ -57,15 +59,18 @@ RunEstimate estimate_run(const Case& c) {
     const double supports = static_cast<double>(c.supports.size());
     e.bending_dofs = 2.0 * (m + 1.0 + supports) - held(b.left) - held(b.right);
 
-    const double ei = c.material.effective_modulus() * b.second_moment();
-    const double rho_a = c.material.density * b.area();
+    // A beam of sections by its effective values (model/section_scales.hpp): its parts' stiffness in
+    // series and mean mass per length for mode 1, its stiffest part for the mesh's top.
+    const EffectiveBeam beam = effective_beam(c);
+    const double ei = beam.EI;
+    const double rho_a = beam.rho_A;
     const double wave = std::sqrt(ei / rho_a);  // omega = (beta l)^2 wave / l^2
     const double root = first_root(b.left, b.right);
     e.omega1 = root * root * wave / (l * l);
     // The largest generalized eigenvalue of one Hermite element with consistent mass is
     // 8400 EI / (rho A h^4), and the assembled system's cannot exceed its elements' (Rayleigh quotient).
     const double h = l / m;
-    e.omega_top = std::sqrt(8400.0) * wave / (h * h);
+    e.omega_top = std::sqrt(8400.0) * beam.wave_max / (h * h);
     e.bending_stiffness = ei / (l * l * l);
 
     // The slowest motions fix nothing; the shortest period to resolve is mode 1's, a contact's with

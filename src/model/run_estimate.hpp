@@ -73,6 +73,7 @@ inline constexpr double kMemoryCap = 8.0 * 1024 * 1024 * 1024;
 // What a case asks of a run, from closed forms (no mesh, no solve).
 struct RunEstimate {
     double bending_dofs = 0.0;         // n, the transient's size (v and theta of every free node)
+    // Of the plain beam, or of a beam of sections by its effective values (model/section_scales.hpp).
     double omega1 = 0.0;               // first bending circular frequency, unsupported beam [rad/s]; 0 if unrestrained
     double omega_top = 0.0;            // bound of the mesh's highest bending frequency [rad/s]
     double bending_stiffness = 0.0;    // EI / l^3 [N/m]

@@ -7,6 +7,7 @@
 #include "forces/midplane_stretching.hpp"
 #include "forces/point_load_element.hpp"
 #include "forces/support_contacts.hpp"
+#include "problem/buckling_check.hpp"
 #include "problem/electrode_elements.hpp"
 #include "problem/film_elements.hpp"
 
@@ -29,9 +30,11 @@ const std::vector<const ElementFamily*>& element_families() {
 
 namespace {
 
-// Every family's own keys, registered before the first case is read.
+// Every family's own keys, registered before the first case is read, and the rules that need the
+// finite-element model (a beam of sections buckles at its own Euler load).
 const bool kFamilyKeysRegistered = register_at_first_use([] {
     for (const ElementFamily* family : element_families()) family->register_case_keys();
+    add_section_check("beam.sections", check_sectioned_buckling);
 });
 
 }  // namespace

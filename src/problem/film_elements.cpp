@@ -1,5 +1,7 @@
 #include "problem/film_elements.hpp"
 
+#include <algorithm>
+
 #include "problem/electrode_elements.hpp"
 
 namespace vi {
@@ -34,6 +36,16 @@ std::vector<FilmSpan> film_spans(const Case& c) {
 }
 
 FilmGas gas_of(const Air& a) { return {a.viscosity, a.lambda()}; }
+
+// The widest part of the beam over [from, to] (x/l): where the film is most a spring.
+double widest_under(const Case& c, double from, double to) {
+    if (c.beam.sections.empty()) return c.beam.width;
+    double w = 0.0;
+    for (const BeamSection& s : c.beam.sections) {
+        if (s.from < to && s.to > from) w = std::max(w, s.width.value_or(c.beam.width));
+    }
+    return w;
+}
 
 // One film per span of the case, all as wide as the beam, skipping a span that faces no part of the
 // beam that moves. The gas films damp only: they leave the static state alone (no force at v = 0).
@@ -92,13 +104,12 @@ std::vector<FilmRegime> film_regimes(const Case& c, double omega) {
         r.gap = f.gap;
         r.knudsen = gas.mean_free_path / f.gap;
         r.viscosity_ratio = 1.0 / veijola_factor(r.knudsen);
-        // The section at the span's middle (the film element's width): under release holes the film's
-        // spring-to-damping ratio falls with its damping, so the squeeze number takes the holes' factor.
-        double width = c.beam.width;
+        // The widest section the film faces; under release holes (the section at the span's middle) the
+        // film's spring-to-damping ratio falls with its damping, so the squeeze number takes their factor.
+        double width = widest_under(c, f.from, f.to);
         double factor = 1.0;
         if (!c.beam.sections.empty()) {
             const SectionResultants sec = section_resultants(c, section_index_at(c.beam, 0.5 * (f.from + f.to)));
-            width = sec.width;
             if (sec.holes) {
                 const FilmCoefficient solid = film_coefficient(gas, width, f.gap);
                 factor = perforation_factor({sec.holes->size, sec.holes->pitch, sec.holes->shape == HoleShape::circle,

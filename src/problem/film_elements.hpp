@@ -17,7 +17,8 @@ namespace vi {
 // the beam; none without [air] or with film = false.
 const ElementFamily& squeeze_films();
 
-// A film's regime at rest: Knudsen number lambda / g [-], mu_eff / mu [-], squeeze number at omega.
+// A film's regime at rest: Knudsen number lambda / g [-], mu_eff / mu [-], squeeze number at omega
+// (of the widest part of the beam the film faces, where it is most a spring).
 struct FilmRegime {
     std::string name;
     double gap = 0.0;             // [m]

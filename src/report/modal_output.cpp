@@ -94,6 +94,14 @@ nlohmann::json modal_study_json(const ModalStudy& study) {
                       {"bending", modes_json(study.supported.bending, true)},
                       {"axial", modes_json(study.supported.axial, false)},
                       {"ratios", study.ratios}};
+    if (study.released) {
+        const ReleasedCurl& r = *study.released;
+        const double l = study.unsupported.system.length;
+        std::vector<double> at;
+        for (double x : r.x) at.push_back(x / l);
+        j["released"] = {{"tip_lift_m", r.tip_lift}, {"largest_lift_m", r.largest}, {"largest_at_x_over_l", r.largest_at},
+                         {"nodes", {{"x_over_l", at}, {"v_m", r.v}, {"theta_rad", r.theta}}}};
+    }
     j["units"] = {{"frequency_hz", "Hz"},
                   {"omega_rad_s", "rad/s"},
                   {"nodes", "x/l"},
@@ -108,6 +116,12 @@ std::string modal_study_text(const ModalStudy& study) {
     out += "Unsupported beam: axial modes\n  mode   frequency [Hz]    omega [rad/s]\n";
     for (const Mode& m : study.unsupported.axial) {
         out += formatted("  %4.0f", m.number) + formatted("  %15.6e", m.frequency_hz) + formatted("  %15.6e", m.omega) + "\n";
+    }
+    if (study.released) {
+        const ReleasedCurl& r = *study.released;
+        out += "Released shape at rest (the curl): tip lift " + significant(r.tip_lift * 1e6, 5) + " um, largest lift " +
+               significant(r.largest * 1e6, 5) + " um at x/l = " + significant(r.largest_at, 4) +
+               " (modes are about the straight beam; gaps are measured from it)\n";
     }
     if (!study.supported.bending.empty()) {
         out += std::string("Supported beam (supports as ") + model_name(study.support_model) + "): bending modes\n";
@@ -156,6 +170,15 @@ OutputFiles modal_study_files(const ModalStudy& study) {
     }
     files["frequencies.csv"] = freq.str();
     files["shapes_unsupported.csv"] = mode_shapes_csv(study.unsupported, 8).str();
+    if (study.released) {
+        CsvTable shape;
+        shape.header = {"x_over_l", "x_m", "v_m", "theta_rad"};
+        const ReleasedCurl& r = *study.released;
+        for (std::size_t k = 0; k < r.x.size(); ++k) {
+            shape.add_row({r.x[k] / study.unsupported.system.length, r.x[k], r.v[k], r.theta[k]});
+        }
+        files["released_shape.csv"] = shape.str();
+    }
     if (!study.supported.bending.empty()) files["shapes_supported.csv"] = mode_shapes_csv(study.supported, 8).str();
     return files;
 }

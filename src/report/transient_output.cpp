@@ -93,6 +93,18 @@ nlohmann::json resolved_case_json(const Case& c, const BuiltProblem& b, const Im
                  {"thickness_m", c.beam.thickness}, {"elements", c.beam.elements},
                  {"left", end_name(c.beam.left)},   {"right", end_name(c.beam.right)},
                  {"nodes", b.model.system.mesh.node_count()}, {"bending_dofs", b.problem.size()}};
+    j["beam"]["mass_kg"] = beam_mass(b.model.system);
+    if (b.model.system.sectioned) {
+        // Each section as the model took it: the plain width and thickness are only its defaults.
+        nlohmann::json parts = nlohmann::json::array();
+        for (std::size_t k = 0; k < c.beam.sections.size(); ++k) {
+            const SectionResultants& r = b.model.system.sections.at(k);
+            parts.push_back({{"from", c.beam.sections[k].from}, {"to", c.beam.sections[k].to}, {"width_m", r.width},
+                             {"thickness_m", r.thickness}, {"EI_n_m2", r.EI}, {"rho_A_kg_m", r.rho_A},
+                             {"neutral_axis_m", r.neutral_axis}});
+        }
+        j["beam"]["sections"] = parts;
+    }
     j["material"] = {{"youngs_modulus_pa", c.material.youngs_modulus},
                      {"density_kg_m3", c.material.density},
                      {"poisson_ratio", c.material.poisson_ratio},

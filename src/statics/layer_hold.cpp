@@ -30,7 +30,7 @@ struct PeelSide {
         if (end == EndCondition::free) return {};  // an unloaded overhang stays flat
         const double s = left ? x : c.beam.length - x;
         if (!(s > 0.0)) return {kInfinity, kInfinity, kInfinity};
-        return peel_release_rate(c, end, s, h, kSectionElements);
+        return peel_release_rate(c, end, s, h, kSectionElements, left);
     }
 };
 
@@ -60,9 +60,34 @@ double last_at_most(const PeelSide& side, double a, double b, double W) {
 
 }  // namespace
 
-PeelRate peel_release_rate(const Case& c, EndCondition end, double s, double offset, int elements) {
+SectionResultants electrode_section(const Case& c, std::size_t k) {
+    const Electrode& e = c.electrodes.at(k);
+    return beam_sections(c)[section_index_at(c.beam, 0.5 * (e.from + e.to))];
+}
+
+std::vector<BeamSection> part_sections(const Beam& b, double s, bool from_left) {
+    std::vector<BeamSection> out;
+    const double l = b.length;
+    for (std::size_t i = 0; i < b.sections.size(); ++i) {
+        const BeamSection& k = b.sections[from_left ? i : b.sections.size() - 1 - i];
+        // Its ends as distances from the held end [m]; the far end's section goes on past the beam.
+        const double near = from_left ? k.from * l : (1.0 - k.to) * l;
+        const bool last = i + 1 == b.sections.size();
+        const double far = last ? std::max(s, l) : (from_left ? k.to * l : (1.0 - k.from) * l);
+        if (!(near < s)) break;
+        BeamSection part = k;
+        part.from = out.empty() ? 0.0 : out.back().to;
+        part.to = far >= s ? 1.0 : far / s;
+        out.push_back(std::move(part));
+        if (far >= s) break;
+    }
+    return out;
+}
+
+PeelRate peel_release_rate(const Case& c, EndCondition end, double s, double offset, int elements, bool from_left) {
     if (end == EndCondition::free) throw std::invalid_argument("peel_release_rate: a free end holds nothing");
     Case span = c;
+    span.beam.sections = part_sections(c.beam, s, from_left);
     span.beam.length = s;
     span.beam.elements = elements;
     span.beam.left = end;
@@ -98,7 +123,7 @@ PeelRate peel_release_rate(const Case& c, EndCondition end, double s, double off
     PeelRate r;
     r.moment = K.row(rt).dot(q);
     r.shear = K.row(rv).dot(q);
-    r.release_rate = r.moment * r.moment / (2.0 * sys.props.E * sys.props.I);
+    r.release_rate = r.moment * r.moment / (2.0 * sys.section_of(sys.mesh.element_count() - 1).EI);
     return r;
 }
 
@@ -108,12 +133,13 @@ LayerHold layer_hold(const Case& c, std::size_t k) {
     }
     const Electrode& e = c.electrodes[k];
     const double l = c.beam.length;
-    const double width = e.width > 0.0 ? e.width : c.beam.width;
+    const SectionResultants under = electrode_section(c, k);
+    const double width = e.width > 0.0 ? e.width : under.width;
     LayerHold h;
     h.electrode = k;
     h.air_gap = e.gap - e.dielectric_thickness;
     h.adhesion_energy = *e.work_of_adhesion * width;
-    const double EI = c.material.effective_modulus() * c.beam.width * std::pow(c.beam.thickness, 3) / 12.0;
+    const double EI = under.EI;
     h.holding_moment = std::sqrt(2.0 * EI * h.adhesion_energy);
     h.span_from = e.from * l;
     h.span_to = e.to * l;

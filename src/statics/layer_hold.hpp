@@ -9,21 +9,32 @@
 #include <vector>
 
 #include "fem/system.hpp"
+#include "fem/section_properties.hpp"
 #include "model/case.hpp"
 
 namespace vi {
 
-// The section [0, s] of the case's beam (its section and material; no supports, loads, electrodes,
-// residual stress or stretching) with end condition `end` at x = 0, held at v = -offset, theta = 0
-// at x = s (flat on the surface from there on), on `elements` elements: the reaction moment M and
-// shear V at x = s [N m, N] and the release rate M^2 / (2 E I) [J/m] (the J-integral of a peeled
+// The part of length s of the case's beam from its left end (from_left) or its right end (its
+// sections, mirrored from the right, the last one carried on past the far end; its material; no
+// supports, loads, electrodes, residual stress or stretching) with end condition `end` at that end,
+// held at v = -offset, theta = 0 at distance s (flat on the surface from there on), on `elements`
+// elements and a node at each section end: the reaction moment M and shear V at the front [N m, N]
+// and the release rate M^2 / (2 EI) [J/m], EI the section's at the front (the J-integral of a peeled
 // beam: moving the front by ds releases that strain energy). `end` must not be free.
 struct PeelRate {
     double release_rate = 0.0;
     double moment = 0.0;
     double shear = 0.0;
 };
-PeelRate peel_release_rate(const Case& c, EndCondition end, double s, double offset, int elements);
+PeelRate peel_release_rate(const Case& c, EndCondition end, double s, double offset, int elements, bool from_left = true);
+
+// The section under the middle of electrodes[k] of c (the width its force and layer take when it
+// gives none, the EI that holds the beam flat on it).
+SectionResultants electrode_section(const Case& c, std::size_t k);
+
+// The sections of the part of length s [m] of beam b from its left end (or its right end, mirrored)
+// as x/s; none for a beam without sections.
+std::vector<BeamSection> part_sections(const Beam& b, double s, bool from_left);
 
 // The peel balance of the beam on electrode k's adhesive layer, rigid and of zero range (the limit of
 // the law as both vanish), with no voltage, no other electrode and no support.

@@ -5,6 +5,7 @@
 #include "problem/beam_model.hpp"
 #include "statics/static_minimum.hpp"
 #include "forces/adhesive_layer_law.hpp"
+#include "statics/layer_hold.hpp"
 #include "study/stiction/stiction.hpp"
 
 namespace vi {
@@ -16,13 +17,14 @@ std::vector<LayerStiction> layer_stiction(const Case& c) {
     if (!any) return out;
     const BeamModel b = build_beam_model(c);
     const bool cantilever = (c.beam.left == EndCondition::free) != (c.beam.right == EndCondition::free);
-    const double EI = b.system.props.E * b.system.props.I;
     for (std::size_t k = 0; k < c.electrodes.size(); ++k) {
         const Electrode& e = c.electrodes[k];
         if (!e.work_of_adhesion || !(e.dielectric_thickness > 0.0)) continue;
         LayerStiction s;
         s.hold = layer_hold(c, k);
-        const double width = e.width > 0.0 ? e.width : c.beam.width;
+        const SectionResultants under = electrode_section(c, k);
+        const double EI = under.EI;
+        const double width = e.width > 0.0 ? e.width : under.width;
         const double stiffness = e.dielectric_modulus * width / e.dielectric_thickness;
         const AdhesiveLayerLaw law(stiffness, s.hold.adhesion_energy, e.adhesion_range);
         // Laid at the law's rest on the face, toward the electrode.
@@ -38,8 +40,10 @@ std::vector<LayerStiction> layer_stiction(const Case& c) {
             s.settled_to = touch->second;
         }
         if (cantilever) {
-            s.detached_closed_form = detached_length_closed_form(c.material.effective_modulus(), c.beam.thickness,
-                                                                 s.hold.air_gap, *e.work_of_adhesion);
+            s.detached_closed_form = c.beam.sections.empty()
+                                         ? detached_length_closed_form(c.material.effective_modulus(), c.beam.thickness,
+                                                                       s.hold.air_gap, *e.work_of_adhesion)
+                                         : detached_length_of_section(EI, under.width, s.hold.air_gap, *e.work_of_adhesion);
             s.detached_on_layer = detached_length_on_layer(EI, s.hold.air_gap, s.hold.adhesion_energy, stiffness);
             if (s.settled_stuck) {
                 s.detached_settled = c.beam.right == EndCondition::free ? s.settled_from : c.beam.length - s.settled_to;

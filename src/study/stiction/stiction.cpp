@@ -1,6 +1,7 @@
 #include "study/stiction/stiction.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -31,6 +32,10 @@ double detached_length_closed_form(double youngs_modulus, double thickness, doub
     return std::pow(1.5 * youngs_modulus * thickness * thickness * thickness * gap * gap / work_of_adhesion, 0.25);
 }
 
+double detached_length_of_section(double bending_stiffness, double width, double gap, double work_of_adhesion) {
+    return std::pow(18.0 * bending_stiffness * gap * gap / (width * work_of_adhesion), 0.25);
+}
+
 double detached_length_on_layer(double bending_stiffness, double gap, double adhesion_energy, double line_stiffness) {
     const double d0 = std::sqrt(2.0 * adhesion_energy / line_stiffness);
     const double beta = std::pow(line_stiffness / (4.0 * bending_stiffness), 0.25);
@@ -46,9 +51,14 @@ double detached_length_on_layer(double bending_stiffness, double gap, double adh
 }
 
 double detached_length_fe(const Case& c, double gap, double work_of_adhesion, int elements) {
-    const double line_energy = work_of_adhesion * c.beam.width;  // gamma w [J/m]
+    // gamma w [J/m], w the width at the front (the tip's past the tip).
+    const auto line_energy = [&](double s) {
+        if (c.beam.sections.empty()) return work_of_adhesion * c.beam.width;
+        const BeamSection& at = c.beam.sections[section_index_at(c.beam, std::min(s / c.beam.length, 1.0))];
+        return work_of_adhesion * at.width.value_or(c.beam.width);
+    };
     // Energy balance: the free span grows while the strain energy it releases, -dU/ds, exceeds gamma w.
-    const auto excess = [&](double s) { return release_rate(c, s, gap, elements) - line_energy; };
+    const auto excess = [&](double s) { return release_rate(c, s, gap, elements) - line_energy(s); };
     double lo = c.beam.length, hi = c.beam.length;
     constexpr int kBracket = 200;  // factors of 2 each way: far beyond any physical l_d
     int k = 0;
@@ -104,8 +114,13 @@ StictionResult stiction_check(const Case& c) {
         d.support = st.support;
         d.gap = -s.surface;
         d.work_of_adhesion = s.work_of_adhesion;
-        d.closed_form = detached_length_closed_form(c.material.effective_modulus(), c.beam.thickness, d.gap,
-                                                    d.work_of_adhesion);
+        if (c.beam.sections.empty()) {
+            d.closed_form = detached_length_closed_form(c.material.effective_modulus(), c.beam.thickness, d.gap,
+                                                        d.work_of_adhesion);
+        } else {
+            const SectionResultants& under = sys.sections[section_index_at(c.beam, s.position)];
+            d.closed_form = detached_length_of_section(under.EI, under.width, d.gap, d.work_of_adhesion);
+        }
         d.finite_element = detached_length_fe(c, d.gap, d.work_of_adhesion, c.beam.elements);
         d.beam_longer = c.beam.length > d.closed_form;
         r.detached.push_back(d);

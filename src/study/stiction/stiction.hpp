@@ -51,6 +51,9 @@ StictionResult stiction_check(const Case& c);
 
 // l_d from the closed form (E the beam's effective modulus) [m].
 double detached_length_closed_form(double youngs_modulus, double thickness, double gap, double work_of_adhesion);
+// The same for a section of bending stiffness EI [N m^2] and width w [m]: (18 EI h^2 / (w gamma))^(1/4),
+// which E w t^3 / 12 makes the line above; a beam of sections takes the section under its contact.
+double detached_length_of_section(double bending_stiffness, double width, double gap, double work_of_adhesion);
 
 // The same cantilever lying on a compliant adhesive layer, in the limit of the layer's law
 // (docs/adhesion.md §9) as its range vanishes: a Winkler foundation of line stiffness k [N/m^2] that
@@ -65,7 +68,8 @@ double detached_length_on_layer(double bending_stiffness, double gap, double adh
 // l_d from the FE model of the case's beam section: the span [0, s] clamped at the gap above the
 // substrate and flat on it at s (v = -h, theta = 0 there), a static solve on `elements` elements,
 // its energy release rate -dU/ds = M(s)^2 / (2 E I) from the reaction moment M, and the balance
-// -dU/ds = gamma w found by bisection on s (bounded) [m].
+// -dU/ds = gamma w found by bisection on s (bounded) [m]; on a beam of sections EI and w are those
+// at the front s (past the tip, the tip's).
 double detached_length_fe(const Case& c, double gap, double work_of_adhesion, int elements);
 
 }  // namespace vi
