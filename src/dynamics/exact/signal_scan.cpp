@@ -1,6 +1,8 @@
 #include "dynamics/exact/signal_scan.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -27,6 +29,16 @@ double quadratic_reach(double c0, double c1, double c2) {
 }
 
 double magnitude(cd z) { return std::sqrt(std::norm(z)); }  // no hypot: nothing here nears overflow
+
+// The exponent std::frexp gives x, read from the bits of a normal x (no library call).
+int frexp_exponent(double x) {
+    if (!std::isnormal(x)) {
+        int e = 0;
+        std::frexp(x, &e);
+        return e;
+    }
+    return static_cast<int>((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff) - 1022;
+}
 
 // The spare buffer of this thread: a scan takes it and gives it back when done.
 struct SpareStore {
@@ -92,9 +104,7 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
         } else if (md.amp <= skip_) {
             md.dead = 0.0;
         } else if (md.re < 0.0) {
-            int e = 0;
-            std::frexp(md.amp / skip_, &e);
-            md.dead = e * std::numbers::ln2 / -md.re;
+            md.dead = frexp_exponent(md.amp / skip_) * std::numbers::ln2 / -md.re;
         } else {
             md.dead = std::numeric_limits<double>::infinity();
         }
@@ -126,8 +136,9 @@ ScanPoint SignalScan::evaluate(double t) {
         }
         double vre = 0.0, lre = 0.0, unc = 0.0;
         // |v_k| exactly (or, below exp(-707), an upper bound) before deciding whether to evaluate it.
+        // At t = 0 every factor is 1 (what exp, cos and sin return there).
         const double x = md.re * t;
-        const double e = x < -707.0 ? 1e-307 : std::exp(x);
+        const double e = t == 0.0 ? 1.0 : x < -707.0 ? 1e-307 : std::exp(x);
         const double mk = md.amp * e;
         if (mk <= skip_) {
             unc = mk;  // Re v and Re(lambda v) lie within +-|v| and +-|lambda||v|
@@ -136,7 +147,7 @@ ScanPoint SignalScan::evaluate(double t) {
             lre = md.re * vre;
         } else {
             const double ph = md.im * t;
-            const cd v = md.A * cd(e * std::cos(ph), e * std::sin(ph));
+            const cd v = t == 0.0 ? md.A : md.A * cd(e * std::cos(ph), e * std::sin(ph));
             vre = v.real();
             lre = md.re * v.real() - md.im * v.imag();
         }
