@@ -40,7 +40,7 @@ int frexp_exponent(double x) {
     return static_cast<int>((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff) - 1022;
 }
 
-// The spare buffer of this thread: a scan takes it and gives it back when done.
+// The spare buffers of this thread: a scan takes them and gives them back when done.
 struct SpareStore {
     std::unique_ptr<double[]> data;
     std::size_t capacity = 0;
@@ -54,6 +54,12 @@ SignalScan::~SignalScan() {
         spare.data = std::move(store_);
         spare.capacity = capacity_;
     }
+    if (modes_.capacity() > spare_modes().capacity()) spare_modes() = std::move(modes_);
+}
+
+std::vector<SignalScan::Mode>& SignalScan::spare_modes() {
+    thread_local std::vector<Mode> modes;
+    return modes;
 }
 
 SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
@@ -64,13 +70,15 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
     const Eigen::VectorXcd& lam = *f.lambda;
     // Decompositions come sorted; signals built by hand may not be.
     bool sorted = true;
-    for (int k = 1; k < m_; ++k) sorted = sorted && std::norm(lam[k - 1]) <= std::norm(lam[k]);
+    for (int k = 1; k < m_ && sorted; ++k) sorted = std::norm(lam[k - 1]) <= std::norm(lam[k]);
     std::vector<int> order;
     if (!sorted) {
         order.resize(static_cast<std::size_t>(m_));
         std::iota(order.begin(), order.end(), 0);
         std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return std::norm(lam[a]) < std::norm(lam[b]); });
     }
+    // The thread's spare array: every field of every mode is written below.
+    modes_ = std::move(spare_modes());
     modes_.resize(static_cast<std::size_t>(m_));
     for (int j = 0; j < m_; ++j) {
         const int k = sorted ? j : order[static_cast<std::size_t>(j)];
