@@ -25,7 +25,7 @@ struct StateMemoKey {
 StateMemoKey state_memo_key(const PiecewiseLinearProblem& p, const std::vector<bool>& active);
 
 // Memory the memo of one thread keeps at most [bytes] (besides a run's own cache).
-inline constexpr std::size_t kStateMemoBytes = std::size_t{64} << 20;
+inline constexpr std::size_t kStateMemoBytes = std::size_t{16} << 20;
 
 // The memo of this thread, made the one of model (b, p, energy): the states of any other model
 // (another beam, contact points, watched point, load shapes, or with/without the energy ledger) are
