@@ -13,6 +13,7 @@
 #include "design/optimizer.hpp"
 #include "impacts/simulation.hpp"
 #include "io/case_reader.hpp"
+#include "peak_rss.hpp"  // prints the peak RSS at exit
 
 namespace {
 

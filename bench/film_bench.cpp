@@ -9,6 +9,7 @@
 
 #include "impacts/simulation.hpp"
 #include "io/case_reader.hpp"
+#include "peak_rss.hpp"  // prints the peak RSS at exit
 
 namespace {
 

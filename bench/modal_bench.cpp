@@ -4,6 +4,7 @@
 
 #include "modal/modal_analysis.hpp"
 #include "model/case.hpp"
+#include "peak_rss.hpp"  // prints the peak RSS at exit
 
 namespace {
 

@@ -20,6 +20,7 @@
 #include "plot/figure_gnuplot.hpp"
 #include "study/paper/figures.hpp"
 #include "study/paper/report.hpp"
+#include "peak_rss.hpp"  // prints the peak RSS at exit
 
 namespace {
 

@@ -16,6 +16,7 @@
 #include "io/case_reader.hpp"
 #include "modal/modal_analysis.hpp"
 #include "statics/pullin.hpp"
+#include "peak_rss.hpp"  // prints the peak RSS at exit
 
 namespace {
 

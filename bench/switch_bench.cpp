@@ -14,6 +14,7 @@
 #include "statics/pullin.hpp"
 #include "impacts/simulation.hpp"
 #include "io/case_reader.hpp"
+#include "peak_rss.hpp"  // prints the peak RSS at exit
 
 namespace {
 

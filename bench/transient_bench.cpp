@@ -17,6 +17,7 @@
 #include "dynamics/exact/exact_solver.hpp"
 #include "io/case_reader.hpp"
 #include "study/cycles/cycles.hpp"
+#include "peak_rss.hpp"  // prints the peak RSS at exit
 
 namespace {
 

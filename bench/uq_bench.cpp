@@ -19,6 +19,7 @@
 #include "sweep/table.hpp"
 #include "uq/sample_design.hpp"
 #include "uq/uq_summary.hpp"
+#include "peak_rss.hpp"  // prints the peak RSS at exit
 
 namespace {
 

@@ -37,6 +37,8 @@ public:
     ~GiveUpOnClosedStatesForTest();
     GiveUpOnClosedStatesForTest(const GiveUpOnClosedStatesForTest&) = delete;
     GiveUpOnClosedStatesForTest& operator=(const GiveUpOnClosedStatesForTest&) = delete;
+    // Whether one lives (states decomposed by earlier runs are then not taken either).
+    static bool active();
 };
 
 }  // namespace vi

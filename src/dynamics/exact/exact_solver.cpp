@@ -174,7 +174,8 @@ private:
     void record_field(const PieceSolution& s, double tau);
     void grow_episodes(const PieceSolution& s);
     void count_zero_length_piece();
-    void switch_contact(const PieceSolution& s);
+    // e: the piece's exponentials at its end.
+    void switch_contact(const PieceSolution& s, const Eigen::VectorXcd& e);
     void finish();
     void open_episode(int c, double t, double v_in);
 
@@ -394,16 +395,16 @@ void ExactRun::count_zero_length_piece() {
 }
 
 // Contact who_ switches at t_ (its new state holds from the next piece on).
-void ExactRun::switch_contact(const PieceSolution& s) {
+void ExactRun::switch_contact(const PieceSolution& s, const Eigen::VectorXcd& e) {
     last_switch_ = who_;
     last_switch_t_ = t_;
     ++res_.stats.events;
-    const double v_contact = s.contact_velocity(who_).value(tau_e_);
+    const double v_contact = s.contact_velocity(who_).value(tau_e_, e);
     const std::size_t w = static_cast<std::size_t>(who_);
     // A damped contact opens (F = 0) while still compressed (d > 0): the massless Kelvin-Voigt
     // element then relaxes through its damper, so its spring energy is booked as contact
     // dissipation; a closing at d > 0 books it back (docs/model.md).
-    const double d_switch = std::max(0.0, s.penetration(who_).value(tau_e_));
+    const double d_switch = std::max(0.0, s.penetration(who_).value(tau_e_, e));
     const double stored = 0.5 * p_.contacts[w].stiffness * d_switch * d_switch;
     ledger_.contact_dissipated += active_[w] ? stored : -stored;
     if (active_[w]) {
@@ -452,13 +453,14 @@ bool ExactRun::advance() {
     sample_piece(s);
     grow_episodes(s);
     if (o_.energy) s.accumulate_dissipation(tau_e_, ledger_);
-    x_ = s.state_at(tau_e_);
+    const Eigen::VectorXcd e_end = s.exponentials(tau_e_);
+    x_ = s.state_at(tau_e_, e_end);
     res_.stats.propagation_s += seconds_since(t_prop);
     ++res_.stats.steps;
     t_ += tau_e_;
     last_piece_ = tau_e_;
     count_zero_length_piece();
-    if (who_ >= 0) switch_contact(s);
+    if (who_ >= 0) switch_contact(s, e_end);
     return true;
 }
 

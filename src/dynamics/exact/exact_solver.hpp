@@ -15,7 +15,9 @@ struct ExactOptions {
     double h_min_periods = 1e-9;  // smallest search step, in periods of the first free mode
     // Memory for decomposed contact states kept for reuse [bytes]; the least recently used go first
     // and are decomposed again when met again. 1 GiB: some 6 states with the energy ledger at
-    // m = 400 (each O(n^2) complex matrices, n ~ 2m), hundreds at the paper's m = 50.
+    // m = 400 (each O(n^2) complex matrices, n ~ 2m), hundreds at the paper's m = 50. Besides, each
+    // thread keeps up to 16 MiB of them (never more than this) for its next run of the same beam
+    // (dynamics/exact/state_memo.hpp).
     std::size_t state_cache_bytes = std::size_t{1} << 30;
 };
 

@@ -7,6 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "dynamics/exact/exact_give_up.hpp"
+#include "dynamics/exact/state_memo.hpp"
 #include "model/run_control.hpp"
 
 namespace vi {
@@ -56,7 +58,7 @@ std::size_t state_bytes(const StateData& sd) {
 }  // namespace
 
 ExactModel::ExactModel(const PiecewiseLinearProblem& p, bool energy, std::size_t cache_bytes)
-    : p_(&p), energy_(energy), base_(base_modes(p)), cache_limit_(cache_bytes) {}
+    : p_(&p), energy_(energy), base_(base_modes(p)), memo_(&StateMemo::for_model(base_, p, energy)), cache_limit_(cache_bytes) {}
 
 Eigen::VectorXd ExactModel::initial_state(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0) const {
     Eigen::VectorXd x(2 * base_.n);
@@ -65,14 +67,8 @@ Eigen::VectorXd ExactModel::initial_state(const Eigen::VectorXd& q0, const Eigen
     return x;
 }
 
-const StateData& ExactModel::state(const std::vector<bool>& active) {
-    auto it = cache_.find(active);
-    if (it != cache_.end()) {
-        it->second.last_use = ++uses_;
-        return *it->second.data;
-    }
-    const auto t0 = std::chrono::steady_clock::now();
-    auto sd = std::make_unique<StateData>();
+std::shared_ptr<const StateData> ExactModel::decompose(const std::vector<bool>& active) const {
+    auto sd = std::make_shared<StateData>();
     // A new contact state of a fine mesh is seconds of linear algebra: the stop flag is watched
     // between its stages (and between column blocks of the largest product).
     check_run();
@@ -143,7 +139,24 @@ const StateData& ExactModel::state(const std::vector<bool>& active) {
             }
         }
     }
+    return sd;
+}
+
+ExactModel::Cached& ExactModel::cached(const std::vector<bool>& active) {
+    auto it = cache_.find(active);
+    if (it != cache_.end()) {
+        it->second.last_use = ++uses_;
+        return it->second;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const StateMemoKey key = state_memo_key(*p_, active);
+    const bool closed = std::find(active.begin(), active.end(), true) != active.end();
+    std::shared_ptr<const StateData> sd;
+    if (!(closed && GiveUpOnClosedStatesForTest::active())) sd = memo_->find(key);
+    const bool decomposed = sd == nullptr;
+    if (decomposed) sd = decompose(active);
     const std::size_t bytes = state_bytes(*sd);
+    if (decomposed) memo_->keep(key, sd, bytes, cache_limit_);
     // Bounded memory: a long chatter over many supports meets new states for ever. The state in
     // use by the caller's previous piece may go too: that piece is replaced before it is read again.
     while (!cache_.empty() && cache_bytes_ + bytes > cache_limit_) {
@@ -153,17 +166,19 @@ const StateData& ExactModel::state(const std::vector<bool>& active) {
         cache_.erase(lru);
     }
     cache_bytes_ += bytes;
+    // A state taken from the memo counts as decomposed: the count says how many states this run
+    // needed, the same whichever runs came before on the thread.
     ++decompositions_;
-    auto [pos, inserted] = cache_.emplace(active, Cached{std::move(sd), bytes, ++uses_});
+    auto [pos, inserted] = cache_.emplace(active, Cached{std::move(sd), bytes, ++uses_, {}});
     (void)inserted;
     decomposition_s_ += seconds_since(t0);
-    return *pos->second.data;
+    return pos->second;
 }
 
 const PieceSolution& ExactModel::piece(const std::vector<bool>& active, const Eigen::VectorXd& x0, double t0,
                                        double t1) {
-    const StateData& s = state(active);
-    piece_ = std::make_unique<PieceSolution>(*p_, base_, s, active, x0, t0, t1, energy_);
+    Cached& c = cached(active);
+    piece_ = std::make_unique<PieceSolution>(*p_, base_, *c.data, active, x0, t0, t1, energy_, &c.forcing);
     return *piece_;
 }
 
@@ -171,9 +186,9 @@ const PieceSolution& ExactModel::piece(const std::vector<bool>& active, const Ei
 
 PieceSolution::PieceSolution(const PiecewiseLinearProblem& p, const BaseModes& b, const StateData& s,
                              const std::vector<bool>& active, const Eigen::VectorXd& x0, double t0, double t1,
-                             bool energy)
+                             bool energy, ForcingMemo* memo)
     : p_(&p), b_(&b), s_(&s), active_(active) {
-    particular_solution(x0, t0, t1, energy);
+    particular_solution(x0, t0, t1, energy, memo);
     const std::size_t nc = p.contacts.size();
     for (std::size_t c = 0; c < nc; ++c) {
         const ContactElement& ce = p.contacts[c];
@@ -230,27 +245,30 @@ PieceSolution::PieceSolution(const PiecewiseLinearProblem& p, const BaseModes& b
     }
 }
 
-// Forcing in x coordinates: constant part (closed contacts' surfaces and constant loads), ramps, and
-// the exponentials of harmonic loads; per mode k of the state c' = lambda c + G exp(s tau) (tau^p)
-// has a particular solution in closed form. The set of forcing terms is closed under conjugation
-// (the forcing is real), which is what lets the representatives stand for their conjugates.
-void PieceSolution::particular_solution(const Eigen::VectorXd& x0, double t0, double t1, bool energy) {
-    const PiecewiseLinearProblem& p = *p_;
-    const BaseModes& b = *b_;
+namespace {
+
+bool same_forcing(const std::vector<ForcingTerm>& a, const std::vector<ForcingTerm>& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        if (a[i].s != b[i].s || a[i].power != b[i].power || a[i].C.size() != b[i].C.size() || a[i].C != b[i].C) return false;
+    }
+    return true;
+}
+
+// Forcing in x coordinates on [t0, t1]: constant part (closed contacts' surfaces and constant loads),
+// ramps, and the exponentials of harmonic loads. The set of terms is closed under conjugation (the
+// forcing is real), which is what lets the representatives stand for their conjugates.
+std::vector<ForcingTerm> forcing_terms(const PiecewiseLinearProblem& p, const BaseModes& b, const std::vector<bool>& active,
+                                       double t0, double t1) {
     const int n = b.n;
     Eigen::VectorXd f_const = Eigen::VectorXd::Zero(2 * n);
     Eigen::VectorXd f_ramp = Eigen::VectorXd::Zero(2 * n);
     for (std::size_t c = 0; c < p.contacts.size(); ++c) {
-        if (!active_[c]) continue;
+        if (!active[c]) continue;
         const ContactElement& ce = p.contacts[c];
         f_const.tail(n) += contact_row(b, ce) * (ce.stiffness * ce.surface);
     }
-    struct Raw {
-        Eigen::VectorXcd F;
-        cd s;
-        int power;
-    };
-    std::vector<Raw> raw;
+    std::vector<ForcingTerm> raw;
     const double tm = 0.5 * (t0 + t1);
     for (std::size_t l = 0; l < p.loads.size(); ++l) {
         const LoadTerm& ld = p.loads[l];
@@ -282,47 +300,75 @@ void PieceSolution::particular_solution(const Eigen::VectorXd& x0, double t0, do
     }
     if (f_const.squaredNorm() > 0.0) raw.push_back({f_const.cast<cd>(), cd(0.0), 0});
     if (f_ramp.squaredNorm() > 0.0) raw.push_back({f_ramp.cast<cd>(), cd(0.0), 1});
+    return raw;
+}
 
-    // c1 = G / (s - lambda) (power 0), or c1 tau + c0 with c0 = -c1 / (s - lambda) (power 1).
-    auto solve = [&](const Eigen::VectorXcd& lam, auto&& left, std::vector<Term>& terms) {
-        const double lscale = lam.cwiseAbs().maxCoeff();
-        Eigen::VectorXcd p0 = Eigen::VectorXcd::Zero(lam.size());
-        for (const Raw& r : raw) {
-            const Eigen::VectorXcd G = left(r.F);
-            Eigen::VectorXcd c1(lam.size());
-            for (Eigen::Index k = 0; k < lam.size(); ++k) {
-                const cd gap = r.s - lam[k];
-                if (std::abs(gap) <= 1e-13 * lscale) {
-                    throw std::runtime_error("transient: a load excites an undamped mode exactly at resonance");
-                }
-                c1[k] = G[k] / gap;
+// Per mode k of a state, c' = lambda c + G exp(s tau) (tau^p) has a particular solution in closed
+// form: c1 = G / (s - lambda) (power 0), or c1 tau + c0 with c0 = -c1 / (s - lambda) (power 1).
+// Appends the terms and returns their sum at tau = 0.
+template <class Left>
+Eigen::VectorXcd particular_terms(const std::vector<ForcingTerm>& raw, const Eigen::VectorXcd& lam, Left&& left,
+                                  std::vector<ForcingTerm>& terms) {
+    const double lscale = lam.cwiseAbs().maxCoeff();
+    Eigen::VectorXcd p0 = Eigen::VectorXcd::Zero(lam.size());
+    for (const ForcingTerm& r : raw) {
+        const Eigen::VectorXcd G = left(r.C);
+        Eigen::VectorXcd c1(lam.size());
+        for (Eigen::Index k = 0; k < lam.size(); ++k) {
+            const cd gap = r.s - lam[k];
+            if (std::abs(gap) <= 1e-13 * lscale) {
+                throw std::runtime_error("transient: a load excites an undamped mode exactly at resonance");
             }
-            if (r.power == 0) {
-                terms.push_back({c1, r.s, 0});
-                p0 += c1;
-            } else {
-                const Eigen::VectorXcd c0 = -c1.cwiseQuotient((Eigen::VectorXcd::Constant(lam.size(), r.s) - lam));
-                terms.push_back({c1, r.s, 1});
-                terms.push_back({c0, r.s, 0});
-                p0 += c0;
-            }
+            c1[k] = G[k] / gap;
         }
-        return p0;
-    };
+        if (r.power == 0) {
+            terms.push_back({c1, r.s, 0});
+            p0 += c1;
+        } else {
+            const Eigen::VectorXcd c0 = -c1.cwiseQuotient((Eigen::VectorXcd::Constant(lam.size(), r.s) - lam));
+            terms.push_back({c1, r.s, 1});
+            terms.push_back({c0, r.s, 0});
+            p0 += c0;
+        }
+    }
+    return p0;
+}
+
+}  // namespace
+
+// The forcing's particular solution, the homogeneous amplitudes from x0, and (constant forcing) the
+// energy of the motion about the equilibrium; the state's memo spares the first when the forcing is
+// the one of its last piece.
+void PieceSolution::particular_solution(const Eigen::VectorXd& x0, double t0, double t1, bool energy, ForcingMemo* memo) {
+    const BaseModes& b = *b_;
+    std::vector<ForcingTerm> raw = forcing_terms(*p_, b, active_, t0, t1);
     const StateModes& md = s_->modes;
-    const Eigen::VectorXcd p0 = solve(md.lambda, [&](const Eigen::VectorXcd& F) { return md.coordinates(F); }, terms_);
-    a_ = md.coordinates(x0) - p0;
+    const auto left = [&](const Eigen::VectorXcd& F) { return md.coordinates(F); };
+    ForcingMemo local;
+    ForcingMemo& fm = memo ? *memo : local;
+    if (!(fm.valid && same_forcing(fm.forcing, raw))) {
+        fm.valid = false;
+        fm.terms.clear();
+        fm.p0 = particular_terms(raw, md.lambda, left, fm.terms);
+        fm.forcing = raw;
+        fm.equilibrium.resize(0);
+        fm.valid = true;
+    }
+    terms_ = fm.terms;
+    a_ = md.coordinates(x0) - fm.p0;
     bool constant_forcing = true;
-    for (const Raw& r : raw) constant_forcing = constant_forcing && r.s == cd(0.0) && r.power == 0;
+    for (const ForcingTerm& r : raw) constant_forcing = constant_forcing && r.s == cd(0.0) && r.power == 0;
     if (constant_forcing) {
         // x0 minus the equilibrium (the particular solution is that constant); in [eta; eta'].
-        const Eigen::VectorXd xh = x0 - md.state(p0);
+        if (fm.equilibrium.size() == 0) fm.equilibrium = md.state(fm.p0);
+        const Eigen::VectorXd xh = x0 - fm.equilibrium;
         const int nb = b.n;
         motion_energy_ = 0.5 * xh.tail(nb).squaredNorm() + 0.5 * xh.head(nb).cwiseProduct(b.omega).squaredNorm();
     }
     if (energy) {
         const FullModes& full = s_->full;
-        const Eigen::VectorXcd pf = solve(full.lambda, [&](const Eigen::VectorXcd& F) { return Eigen::VectorXcd(full.L * F); }, terms_full_);
+        const Eigen::VectorXcd pf = particular_terms(raw, full.lambda, [&](const Eigen::VectorXcd& F) { return Eigen::VectorXcd(full.L * F); },
+                                                     terms_full_);
         a_full_ = full.L * x0.cast<cd>() - pf;
     }
 }

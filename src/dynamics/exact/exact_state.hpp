@@ -6,6 +6,7 @@
 #include <memory>
 #include <vector>
 
+#include "dynamics/exact/state_memo.hpp"
 #include "dynamics/signal/exp_signal.hpp"
 #include "dynamics/exact/state_modes.hpp"
 #include "dynamics/piecewise_linear_problem.hpp"
@@ -35,11 +36,31 @@ struct StateData {
     std::vector<std::vector<double>> contact_tail;
 };
 
+// A term G exp(s tau) tau^power of a forcing or of a particular solution (G in state coordinates or
+// per mode).
+struct ForcingTerm {
+    Eigen::VectorXcd C;
+    cd s;
+    int power;
+};
+
+// The forcing of a state's last piece and what follows from it alone: its particular terms per mode
+// and, for a constant forcing, the equilibrium in x coordinates. The pieces of a state whose forcing
+// is unchanged (contact surfaces, constant loads) take them instead of solving again.
+struct ForcingMemo {
+    std::vector<ForcingTerm> forcing;  // x coordinates
+    std::vector<ForcingTerm> terms;    // per representative mode
+    Eigen::VectorXcd p0;               // the particular solution at tau = 0
+    Eigen::VectorXd equilibrium;       // x at p0 (empty until a constant forcing asks for it)
+    bool valid = false;
+};
+
 // The solution from x0 at t0 in one state with the loads of [t0, t1]: c(tau) = a exp(lambda tau) + P(tau).
 class PieceSolution {
 public:
+    // memo: the state's forcing memo (null: none).
     PieceSolution(const PiecewiseLinearProblem& p, const BaseModes& b, const StateData& s, const std::vector<bool>& active,
-                  const Eigen::VectorXd& x0, double t0, double t1, bool energy);
+                  const Eigen::VectorXd& x0, double t0, double t1, bool energy, ForcingMemo* memo = nullptr);
     // Penetration d (open contact) or -F (closed one): its upward zero crossing is the next event.
     [[nodiscard]] const ExpSignal& event_function(int c) const { return event_[static_cast<std::size_t>(c)]; }
     // An open contact still inside its support (d > 0 after a damped separation) waits for F to turn
@@ -52,6 +73,9 @@ public:
     [[nodiscard]] const ExpSignal& watched_displacement() const { return watched_v_; }
     [[nodiscard]] const ExpSignal& contact_displacement(int c) const { return v_[static_cast<std::size_t>(c)]; }
     [[nodiscard]] Eigen::VectorXd state_at(double tau) const;
+    // The representatives' exponentials at tau, and the state from them (the same as state_at(tau)).
+    [[nodiscard]] Eigen::VectorXcd exponentials(double tau) const;
+    [[nodiscard]] Eigen::VectorXd state_at(double tau, const Eigen::VectorXcd& e) const;
     // With a constant forcing (no load ramps or harmonics in the piece), the mechanical energy of the
     // motion about the piece's own equilibrium at its start [J]: what is left to move; -1 otherwise.
     [[nodiscard]] double motion_energy() const { return motion_energy_; }
@@ -63,17 +87,11 @@ public:
                 const EnergyLedger& start) const;
 
 private:
-    struct Term {
-        Eigen::VectorXcd C;  // amplitude vector in state coordinates
-        cd s;
-        int power;
-    };
+    using Term = ForcingTerm;
     ExpSignal channel(const Eigen::RowVectorXcd& row, double scale, double offset) const;
-    [[nodiscard]] Eigen::VectorXcd exponentials(double tau) const;  // representatives
     // All 2n modes' exponentials from the representatives' (the conjugates are conjugate).
     [[nodiscard]] Eigen::VectorXcd full_exponentials(const Eigen::VectorXcd& e) const;
     [[nodiscard]] Eigen::VectorXcd coords_at(double tau, const Eigen::VectorXcd& e) const;
-    [[nodiscard]] Eigen::VectorXd state_at(double tau, const Eigen::VectorXcd& e) const;
     // With e the representatives' exponentials at tau:
     [[nodiscard]] EnergyLedger energy_at(double tau, const EnergyLedger& start, const Eigen::VectorXcd& e) const;
     void accumulate_dissipation(double tau, const Eigen::VectorXcd& e, EnergyLedger& ledger) const;
@@ -82,7 +100,7 @@ private:
     [[nodiscard]] double damper_integral(std::size_t c, double tau, const Eigen::VectorXcd& ef) const;
     void prepare_energy() const;  // the piece's constant parts of the dissipation integrals
 
-    void particular_solution(const Eigen::VectorXd& x0, double t0, double t1, bool energy);
+    void particular_solution(const Eigen::VectorXd& x0, double t0, double t1, bool energy, ForcingMemo* memo);
 
     const PiecewiseLinearProblem* p_;
     const BaseModes* b_;
@@ -130,22 +148,26 @@ public:
     [[nodiscard]] Eigen::VectorXd initial_state(const Eigen::VectorXd& q0, const Eigen::VectorXd& v0) const;
     // Builds the piece (decomposing its state on first use); valid until the next call.
     const PieceSolution& piece(const std::vector<bool>& active, const Eigen::VectorXd& x0, double t0, double t1);
-    // Contact states decomposed so far (a state evicted and decomposed again counts twice).
+    // Contact states decomposed so far (a state evicted and decomposed again counts twice; one taken
+    // from this thread's memo of earlier runs counts too).
     [[nodiscard]] int decompositions() const { return decompositions_; }
 
     // Wall time spent decomposing states and deriving their per-state data [s].
     [[nodiscard]] double decomposition_seconds() const { return decomposition_s_; }
 
 private:
-    const StateData& state(const std::vector<bool>& active);
+    [[nodiscard]] std::shared_ptr<const StateData> decompose(const std::vector<bool>& active) const;
     const PiecewiseLinearProblem* p_;
     bool energy_;
     BaseModes base_;
+    StateMemo* memo_;  // this thread's states of earlier runs of the same model
     struct Cached {
-        std::unique_ptr<StateData> data;
+        std::shared_ptr<const StateData> data;
         std::size_t bytes = 0;
         long last_use = 0;
+        ForcingMemo forcing;
     };
+    Cached& cached(const std::vector<bool>& active);
     std::map<std::vector<bool>, Cached> cache_;
     std::size_t cache_limit_;
     std::size_t cache_bytes_ = 0;

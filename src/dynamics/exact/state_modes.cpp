@@ -368,6 +368,7 @@ std::atomic<bool> give_up_on_closed_states{false};
 
 GiveUpOnClosedStatesForTest::GiveUpOnClosedStatesForTest() { give_up_on_closed_states = true; }
 GiveUpOnClosedStatesForTest::~GiveUpOnClosedStatesForTest() { give_up_on_closed_states = false; }
+bool GiveUpOnClosedStatesForTest::active() { return give_up_on_closed_states; }
 
 StateModes decompose_state(const BaseModes& b, const PiecewiseLinearProblem& p, const std::vector<bool>& active) {
     StateModes s;

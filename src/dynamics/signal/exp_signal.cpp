@@ -29,9 +29,11 @@ std::pair<double, double> ExpSignal::value_and_slope(double tau) const {
 }
 
 double ExpSignal::value(double tau, const Eigen::VectorXcd& e) const {
-    double v = A.cwiseProduct(e).sum().real();
-    for (const ExpTerm& t : terms) v += term_derivative(t, tau, 0).real();
-    return v;
+    // Summed in derivative()'s order: the same value to the last bit.
+    cd sum = 0.0;
+    for (Eigen::Index k = 0; k < A.size(); ++k) sum += A[k] * e[k];
+    for (const ExpTerm& t : terms) sum += term_derivative(t, tau, 0);
+    return sum.real();
 }
 
 double ExpSignal::derivative(double tau, int d) const {
@@ -53,7 +55,7 @@ double ExpSignal::bound(double tau, double h, int d) const {
         // max of exp(Re l t) over [tau, tau + h]: at tau for a decaying mode.
         const double x = l.real() * (l.real() <= 0.0 ? tau : tau + h);
         // Below exp(-707) the term is under 1e-307 of its amplitude: bounded by that, no libm slow path.
-        const double growth = x < -707.0 ? 1e-307 : std::exp(x);
+        const double growth = x == 0.0 ? 1.0 : x < -707.0 ? 1e-307 : std::exp(x);
         const double mag2 = std::norm(l);
         double m = 1.0;
         if (d == 1) m = std::sqrt(mag2);

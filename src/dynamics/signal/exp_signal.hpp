@@ -30,7 +30,8 @@ struct ExpSignal {
     // d-th derivative (0..3) at tau [s].
     [[nodiscard]] double derivative(double tau, int d) const;
     [[nodiscard]] double value(double tau) const { return derivative(tau, 0); }
-    // The value given e_k = exp(lambda_k tau) already computed (one set serves every channel of a piece).
+    // The value given e_k = fast_exp(lambda_k, tau) already computed (one set serves every channel of
+    // a piece): the same as value(tau) to the last bit.
     [[nodiscard]] double value(double tau, const Eigen::VectorXcd& e) const;
     // f and f' together (one exponential per mode).
     [[nodiscard]] std::pair<double, double> value_and_slope(double tau) const;
@@ -43,6 +44,8 @@ struct ExpSignal {
 // exp(z tau) as exp(Re) (cos, sin): no complex-library call, and 0 without libm's underflow path once
 // |exp(z tau)| < 1e-307 (a heavily damped mode long after its start: below roundoff of any sum).
 inline cd fast_exp(cd z, double tau) {
+    // At a piece's start every exponential is 1 (what the libm calls below return there too).
+    if (tau == 0.0) return cd(1.0, 0.0);
     const double x = z.real() * tau;
     if (x < -707.0) return cd(0.0, 0.0);
     const double e = std::exp(x);

@@ -1,6 +1,8 @@
 #include "dynamics/signal/signal_scan.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -28,7 +30,17 @@ double quadratic_reach(double c0, double c1, double c2) {
 
 double magnitude(cd z) { return std::sqrt(std::norm(z)); }  // no hypot: nothing here nears overflow
 
-// The spare buffer of this thread: a scan takes it and gives it back when done.
+// The exponent std::frexp gives x, read from the bits of a normal x (no library call).
+int frexp_exponent(double x) {
+    if (!std::isnormal(x)) {
+        int e = 0;
+        std::frexp(x, &e);
+        return e;
+    }
+    return static_cast<int>((std::bit_cast<std::uint64_t>(x) >> 52) & 0x7ff) - 1022;
+}
+
+// The spare buffers of this thread: a scan takes them and gives them back when done.
 struct SpareStore {
     std::unique_ptr<double[]> data;
     std::size_t capacity = 0;
@@ -42,6 +54,12 @@ SignalScan::~SignalScan() {
         spare.data = std::move(store_);
         spare.capacity = capacity_;
     }
+    if (modes_.capacity() > spare_modes().capacity()) spare_modes() = std::move(modes_);
+}
+
+std::vector<SignalScan::Mode>& SignalScan::spare_modes() {
+    thread_local std::vector<Mode> modes;
+    return modes;
 }
 
 SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
@@ -52,13 +70,15 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
     const Eigen::VectorXcd& lam = *f.lambda;
     // Decompositions come sorted; signals built by hand may not be.
     bool sorted = true;
-    for (int k = 1; k < m_; ++k) sorted = sorted && std::norm(lam[k - 1]) <= std::norm(lam[k]);
+    for (int k = 1; k < m_ && sorted; ++k) sorted = std::norm(lam[k - 1]) <= std::norm(lam[k]);
     std::vector<int> order;
     if (!sorted) {
         order.resize(static_cast<std::size_t>(m_));
         std::iota(order.begin(), order.end(), 0);
         std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return std::norm(lam[a]) < std::norm(lam[b]); });
     }
+    // The thread's spare array: every field of every mode is written below.
+    modes_ = std::move(spare_modes());
     modes_.resize(static_cast<std::size_t>(m_));
     for (int j = 0; j < m_; ++j) {
         const int k = sorted ? j : order[static_cast<std::size_t>(j)];
@@ -92,9 +112,7 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
         } else if (md.amp <= skip_) {
             md.dead = 0.0;
         } else if (md.re < 0.0) {
-            int e = 0;
-            std::frexp(md.amp / skip_, &e);
-            md.dead = e * std::numbers::ln2 / -md.re;
+            md.dead = frexp_exponent(md.amp / skip_) * std::numbers::ln2 / -md.re;
         } else {
             md.dead = std::numeric_limits<double>::infinity();
         }
@@ -126,8 +144,9 @@ ScanPoint SignalScan::evaluate(double t) {
         }
         double vre = 0.0, lre = 0.0, unc = 0.0;
         // |v_k| exactly (or, below exp(-707), an upper bound) before deciding whether to evaluate it.
+        // At t = 0 every factor is 1 (what exp, cos and sin return there).
         const double x = md.re * t;
-        const double e = x < -707.0 ? 1e-307 : std::exp(x);
+        const double e = t == 0.0 ? 1.0 : x < -707.0 ? 1e-307 : std::exp(x);
         const double mk = md.amp * e;
         if (mk <= skip_) {
             unc = mk;  // Re v and Re(lambda v) lie within +-|v| and +-|lambda||v|
@@ -136,7 +155,7 @@ ScanPoint SignalScan::evaluate(double t) {
             lre = md.re * vre;
         } else {
             const double ph = md.im * t;
-            const cd v = md.A * cd(e * std::cos(ph), e * std::sin(ph));
+            const cd v = t == 0.0 ? md.A : md.A * cd(e * std::cos(ph), e * std::sin(ph));
             vre = v.real();
             lre = md.re * v.real() - md.im * v.imag();
         }

@@ -72,6 +72,7 @@ private:
         double dead;                     // from this time on |v_k| <= skip_ (no evaluation at all)
     };
     std::vector<Mode> modes_;            // ascending |lambda|
+    static std::vector<Mode>& spare_modes();
     std::vector<ExpTerm> terms_;         // particular part (times sign)
     double terms_b2_ = 0.0;              // bound of |particular''| over [0, t_end]
     double gamma_ = 0.0;                 // largest Re lambda > 0 (roundoff of undamped modes), else 0
