@@ -2,6 +2,7 @@
 // Modal analysis of a case: bending and axial modes of the unsupported and the supported beam.
 
 #include <Eigen/Dense>
+#include <string>
 #include <vector>
 
 #include "fem/system.hpp"
@@ -33,6 +34,7 @@ ModalResult analyse_modes(const System& s, int count);
 // The unsupported beam, the supported beam (supports as pins or as springs), and the ratios
 // omega_i / omega_in of supported over unsupported bending frequencies.
 struct ModalStudy {
+    std::string case_name;  // the case's name (its `name` key, else its file's stem)
     SupportModel support_model = SupportModel::pin;
     ModalResult unsupported;
     ModalResult supported;
