@@ -117,4 +117,6 @@ def paper(
     examples: _PathLike | None = None,
     threads: int = 0,
     gnuplot: str = "gnuplot",
+    progress: str | None = None,
+    progress_interval: float = 10.0,
 ) -> dict[str, Any]: ...
