@@ -9,6 +9,8 @@
 
 #include "validation/report.hpp"
 #include "commands.hpp"
+#include "json_output.hpp"
+#include "markdown_json.hpp"
 #include "progress.hpp"
 #include "io/case_reader.hpp"
 #include "model/input_error.hpp"
@@ -24,6 +26,7 @@ CommandBody add_validate_command(CLI::App& app) {
         bool quick = false;
         bool paper_parameters = false;
         bool quiet = false;
+        bool json = false;
         int threads = 0;
         std::string example = "examples/paper/free_impact_tip.toml";
         ProgressSettings progress;
@@ -33,6 +36,9 @@ CommandBody add_validate_command(CLI::App& app) {
     CLI::App* sub = app.add_subcommand(
         "validate", "Validation document (docs/validation.md): the model against closed forms and independent methods");
     sub->add_option("--out,-o", opt->out, "Write the Markdown document to FILE (atomically) instead of stdout");
+    sub->add_flag("--json", opt->json,
+                  "Print the document's sections and tables as JSON on stdout instead of the Markdown (with --out the "
+                  "Markdown file is still written)");
     sub->add_flag("--quick", opt->quick, "Skip the slow parts (exact vs CVODE on the example, the m = 200 mesh)");
     sub->add_flag("--paper-parameters", opt->paper_parameters,
                   "Write docs/paper-parameters.md instead: the parameters the paper does not give, and the Kc scan");
@@ -80,12 +86,21 @@ CommandBody add_validate_command(CLI::App& app) {
         sections.finish();
         // Last chance to stop: from here the document is complete and goes out whole.
         check_run();
-        if (opt->out.empty()) {
-            std::fputs(text.c_str(), stdout);
-        } else {
+        if (!opt->out.empty()) {
             const std::filesystem::path dir = out_path.parent_path().empty() ? "." : out_path.parent_path();
             const CommitSection commit;
             write_output_files(dir.string(), {{out_path.filename().string(), text}});
+        }
+        if (opt->json) {
+            nlohmann::json j = {{"document", opt->paper_parameters ? "paper-parameters" : "validation"},
+                                {"quick", opt->quick},
+                                {"case", opt->example},
+                                {"switch_case", opt->switch_example}};
+            j.update(markdown_tables_json(text));
+            print_json(j);
+        } else if (opt->out.empty()) {
+            std::fputs(text.c_str(), stdout);
+        } else {
             std::printf("Written to %s\n", opt->out.c_str());
         }
         char done[64];

@@ -48,6 +48,7 @@ TEST(CliModes, JsonHasTheStableSchema) {
     const auto r = run_vibroimpact({"modes", test::source_path("examples/paper/cantilever.toml"), "--json"});
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["case_name"], "paper-cantilever");
     EXPECT_EQ(j["dofs"].get<int>(), 150);
     const auto& b = j["unsupported"]["bending"];
     ASSERT_EQ(b.size(), 5u);

@@ -137,6 +137,11 @@ TEST_F(CliPlot, ModesFolderGivesShapesWithNodalPoints) {
     const std::string nodes = read_text(out + "/modes_unsupported_nodes.csv");
     EXPECT_NE(nodes.find("0.7834"), std::string::npos) << nodes;
     EXPECT_LE(column_max(out + "/modes_unsupported.csv", "v_1_over_peak"), 1.0 + 1e-9);
+    // Titled with the case's name, which modes.json records.
+    for (const char* figure : {"modes_unsupported", "modes_supported"}) {
+        EXPECT_NE(read_text(out + "/" + figure + ".svg").find("paper-cantilever"), std::string::npos) << figure;
+        EXPECT_NE(read_text(out + "/" + figure + ".gp").find(" - paper-cantilever"), std::string::npos) << figure;
+    }
 }
 
 TEST_F(CliPlot, OneAxisSweepGivesEachQuantityAgainstTheAxis) {

@@ -57,8 +57,8 @@ run "--print test" 0 --print test
 for p in cmake libceres-dev gnuplot-nox openmpi-bin pybind11-dev libgtest-dev chromium; do
   has "$out" "$p" || fail "--print test does not list $p"
 done
-for p in python3-nbclient python3-ipykernel jupyter-nbconvert python3-pandas; do
-  has "$out" "$p" || fail "--print test does not list $p (the notebooks' test, Table.to_pandas)"
+for p in python3-nbclient python3-ipykernel jupyter-nbconvert python3-pandas python3-meshio; do
+  has "$out" "$p" || fail "--print test does not list $p (the notebooks' test, Table.to_pandas, the VTU read back)"
 done
 [ -z "$calls" ] || fail "--print called: $calls"
 

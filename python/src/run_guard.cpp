@@ -14,7 +14,7 @@
 
 namespace vi::python {
 
-void run_released(const std::function<void()>& work) {
+void run_released(const std::function<void()>& work, const std::function<void()>& while_waiting) {
     std::promise<void> done;
     std::future<void> finished = done.get_future();
     std::optional<py::error_already_set> interrupt;
@@ -32,6 +32,7 @@ void run_released(const std::function<void()>& work) {
         // stopped run ends within milliseconds, so Ctrl-C takes effect in well under a second.
         while (finished.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready) {
             const py::gil_scoped_acquire acquire;
+            if (while_waiting) while_waiting();
             if (PyErr_CheckSignals() != 0) {
                 interrupt.emplace();  // takes the pending exception (KeyboardInterrupt) off the thread
                 request_stop(SIGINT);
@@ -40,6 +41,7 @@ void run_released(const std::function<void()>& work) {
         }
         worker.join();
     }
+    if (while_waiting) while_waiting();
     if (interrupt) {
         clear_stop();  // the stop was this run's: the next run starts clear
         throw *interrupt;

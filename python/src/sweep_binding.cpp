@@ -4,10 +4,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <optional>
 #include <set>
 #include <string>
 #include <variant>
 #include <vector>
+
+#include <pybind11/stl.h>
 
 #include "bindings.hpp"
 #include "io/number_text.hpp"
@@ -60,7 +63,8 @@ SweepAnalysis analysis_of(const std::string& name) {
 }
 
 py::dict sweep(const Case& base, const py::object& values, const std::string& analysis, int modes,
-               const std::string& support_model, int threads, double point_timeout) {
+               const std::string& support_model, int threads, double point_timeout,
+               const std::optional<std::string>& progress_mode, double progress_interval) {
     const SweepGrid grid = parse_sweep_grid(settings_of(values), base);
     SweepSettings settings;
     settings.analysis = analysis_of(analysis);
@@ -86,19 +90,27 @@ py::dict sweep(const Case& base, const py::object& values, const std::string& an
     for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = i;
     SweepRunInfo info;
     const auto t0 = std::chrono::steady_clock::now();
-    run_released([&] {
-        run_sweep_points(
-            base, grid, indices, settings, workers,
-            [&](const SweepPointResult& r) {
-                rows[r.index] = sweep_csv_row(r, columns.size());
-                for (std::size_t c = 0; c < r.cells.size() && c < columns.size(); ++c) {
-                    if (std::holds_alternative<std::int64_t>(r.cells[c])) integer_columns.insert(columns[c].name);
-                }
-                ++info.points_done;
-                if (!r.ok()) info.failures.emplace_back(r.index, r.status);
-            },
-            &stop_flag());
-    });
+    const PythonProgress out_progress(progress_mode, progress_interval);
+    Progress progress("sweep", "points", grid.size(), 0, out_progress.style(), out_progress.interval_s(), false,
+                      out_progress.sink());
+    run_released(
+        [&] {
+            const FinishProgress finish{progress};
+            const ProgressTicker ticker(progress);
+            run_sweep_points(
+                base, grid, indices, settings, workers,
+                [&](const SweepPointResult& r) {
+                    rows[r.index] = sweep_csv_row(r, columns.size());
+                    progress.advance();
+                    for (std::size_t c = 0; c < r.cells.size() && c < columns.size(); ++c) {
+                        if (std::holds_alternative<std::int64_t>(r.cells[c])) integer_columns.insert(columns[c].name);
+                    }
+                    ++info.points_done;
+                    if (!r.ok()) info.failures.emplace_back(r.index, r.status);
+                },
+                &stop_flag());
+        },
+        [&out_progress] { out_progress.flush(); });
     info.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     std::string csv = sweep_csv_header(grid, columns) + "\n";
@@ -122,6 +134,7 @@ py::dict sweep(const Case& base, const py::object& values, const std::string& an
 void bind_sweep(py::module_& m) {
     m.def("sweep", &sweep, py::arg("case"), py::arg("values"), py::arg("analysis") = "simulate", py::arg("modes") = 3,
           py::arg("support_model") = "pin", py::arg("threads") = 0, py::arg("point_timeout") = 60.0,
+          py::arg("progress") = py::none(), py::arg("progress_interval") = 10.0,
           "A sweep (`vibroimpact sweep --set PATH=SPEC ...`): values is {path: spec} (first path slowest) where "
           "spec is a --set SPEC string ('0.6:1:5', 'log:1e-7:1e-5:9', '1,2,3'), a number or a list of numbers. "
           "Returns {'table': {column: array} as sweep.csv, 'summary': dict as sweep.json}");

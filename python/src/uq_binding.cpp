@@ -1,6 +1,7 @@
 // uq: `vibroimpact uq` in-process; its summary is the uq.json the command writes and its table the
 // samples.csv, built from the same CSV rows.
 
+#include <optional>
 #include <set>
 #include <string>
 #include <variant>
@@ -41,7 +42,8 @@ SamplingMethod method_of(const std::string& m) {
 
 py::dict uq(const Case& base, const py::object& vary, const std::string& analysis, std::size_t samples,
             const std::string& method, std::uint64_t seed, const std::vector<std::string>& specs, bool sensitivity,
-            int modes, int threads, double point_timeout, std::size_t bootstrap) {
+            int modes, int threads, double point_timeout, std::size_t bootstrap,
+            const std::optional<std::string>& progress_mode, double progress_interval) {
     if (samples < 2) throw InputError("samples: a spread needs at least 2 samples");
     if (sensitivity && samples < kMinSobolBaseSamples) {
         throw InputError("samples: sensitivity needs at least " + std::to_string(kMinSobolBaseSamples) + " base samples");
@@ -74,17 +76,25 @@ py::dict uq(const Case& base, const py::object& vary, const std::string& analysi
     std::vector<std::string> rows(design.runs());
     std::vector<std::size_t> indices(design.runs());
     for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = i;
-    run_released([&] {
-        run_sweep_points(
-            base, design.grid, indices, settings, resolve_thread_count(threads),
-            [&](const SweepPointResult& r) {
-                rows[r.index] = sweep_csv_row(r, columns.size());
-                for (std::size_t c = 0; c < r.cells.size() && c < columns.size(); ++c) {
-                    if (std::holds_alternative<std::int64_t>(r.cells[c])) integer_columns.insert(columns[c].name);
-                }
-            },
-            &stop_flag());
-    });
+    const PythonProgress out_progress(progress_mode, progress_interval);
+    Progress progress("uq", "runs", design.runs(), 0, out_progress.style(), out_progress.interval_s(), false,
+                      out_progress.sink());
+    run_released(
+        [&] {
+            const FinishProgress finish{progress};
+            const ProgressTicker ticker(progress);
+            run_sweep_points(
+                base, design.grid, indices, settings, resolve_thread_count(threads),
+                [&](const SweepPointResult& r) {
+                    rows[r.index] = sweep_csv_row(r, columns.size());
+                    progress.advance();
+                    for (std::size_t c = 0; c < r.cells.size() && c < columns.size(); ++c) {
+                        if (std::holds_alternative<std::int64_t>(r.cells[c])) integer_columns.insert(columns[c].name);
+                    }
+                },
+                &stop_flag());
+        },
+        [&out_progress] { out_progress.flush(); });
     std::string csv = sweep_csv_header(design.grid, columns) + "\n";
     for (const std::string& row : rows) csv += row + "\n";
     nlohmann::json j = uq_summary_json(design, uq_table_from_csv(csv, inputs.size()), s);
@@ -102,7 +112,7 @@ void bind_uq(py::module_& m) {
     m.def("uq", &uq, py::arg("case"), py::arg("vary"), py::arg("analysis") = "simulate", py::arg("samples") = 256,
           py::arg("method") = "mc", py::arg("seed") = 1, py::arg("specs") = std::vector<std::string>{},
           py::arg("sensitivity") = false, py::arg("modes") = 3, py::arg("threads") = 0, py::arg("point_timeout") = 60.0,
-          py::arg("bootstrap") = 1000,
+          py::arg("bootstrap") = 1000, py::arg("progress") = py::none(), py::arg("progress_interval") = 10.0,
           "A spread study (`vibroimpact uq`): vary is {path: 'normal:MEAN:SD'} (or uniform, lognormal, "
           "truncnormal; units as in case files) or a list of 'PATH=DIST'; specs are 'COLUMN<=VALUE' texts. "
           "Returns {'table': {column: array} as samples.csv, 'summary': dict as uq.json}");

@@ -2,6 +2,7 @@
 evaluations.csv, claims.json and the figures' CSV files)."""
 
 import json
+import re
 
 import numpy as np
 import pytest
@@ -69,9 +70,16 @@ def test_optimize_equals_the_command(small_case, vi_exe, tmp_path):
         vi.optimize(small_case, ["supports[0].position=0.6:1"])
 
 
-def test_paper_gives_the_claims_and_figure_data_of_the_command(vi_exe, tmp_path):
+def test_paper_gives_the_claims_and_figure_data_of_the_command(vi_exe, tmp_path, capsys):
     options = dict(positions=3, modal_positions=4, prestress_points=2, scan_horizon="100 us", threads=2)
-    result = vi.paper(out=tmp_path / "py", **options)
+    result = vi.paper(out=tmp_path / "py", progress="lines", progress_interval=0, **options)
+    # Its progress as the command's: the jobs counted to their total, and a line as each part ends.
+    err = capsys.readouterr().err.splitlines()
+    counts = [re.fullmatch(r"paper: (\d+)/(\d+) jobs, .*, elapsed [\d:]+", line) for line in err]
+    done = [(int(m.group(1)), int(m.group(2))) for m in counts if m]
+    assert done and done[-1][0] == done[-1][1] and [d for d, _ in done] == sorted(d for d, _ in done), err
+    assert any(line.startswith("paper: [") for line in err), err
+    assert all(m or line.startswith("paper: [") for m, line in zip(counts, err)), err
     run_cli(vi_exe, "paper", "--positions", "3", "--modal-positions", "4", "--prestress-points", "2", "--scan-horizon",
             "100 us", "--threads", "2", "--out", tmp_path / "cli", "--progress", "none")
     cli_claims = json.loads((tmp_path / "cli" / "claims.json").read_text())

@@ -57,6 +57,8 @@ def sweep(
     support_model: str = "pin",
     threads: int = 0,
     point_timeout: float = 60.0,
+    progress: str | None = None,
+    progress_interval: float = 10.0,
 ) -> dict[str, Any]: ...
 def uq(
     case: _CaseSource,
@@ -71,6 +73,8 @@ def uq(
     threads: int = 0,
     point_timeout: float = 60.0,
     bootstrap: int = 1000,
+    progress: str | None = None,
+    progress_interval: float = 10.0,
 ) -> dict[str, Any]: ...
 def fit(
     case: _CaseSource,
@@ -86,6 +90,8 @@ def fit(
     starts: int = 1,
     max_iterations: int = 50,
     threads: int = 0,
+    progress: str | None = None,
+    progress_interval: float = 10.0,
 ) -> dict[str, Any]: ...
 def optimize(
     case: _CaseSource,
@@ -99,6 +105,8 @@ def optimize(
     global_evals: int = 0,
     threads: int = 0,
     point_timeout: float = 60.0,
+    progress: str | None = None,
+    progress_interval: float = 10.0,
 ) -> dict[str, Any]: ...
 def paper(
     out: _PathLike | None = None,
@@ -109,4 +117,6 @@ def paper(
     examples: _PathLike | None = None,
     threads: int = 0,
     gnuplot: str = "gnuplot",
+    progress: str | None = None,
+    progress_interval: float = 10.0,
 ) -> dict[str, Any]: ...

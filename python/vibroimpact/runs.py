@@ -80,7 +80,8 @@ def pullin(case, steps=200):
     return tables(_vibroimpact.pullin(as_case(case), steps))
 
 
-def sweep(case, values, analysis="simulate", modes=3, support_model="pin", threads=0, point_timeout=60.0):
+def sweep(case, values, analysis="simulate", modes=3, support_model="pin", threads=0, point_timeout=60.0, progress=None,
+          progress_interval=10.0):
     """A sweep over a grid of case values (``vibroimpact sweep``).
 
     Parameters
@@ -101,6 +102,13 @@ def sweep(case, values, analysis="simulate", modes=3, support_model="pin", threa
         Worker threads; 0 for every CPU this process may use.
     point_timeout : float, optional
         Wall-clock limit of one point [s]; 0 for none.
+    progress : {"auto", "bar", "lines", "none"}, optional
+        Progress on ``sys.stderr`` as the command's ``--progress``: a bar redrawn in place, one line
+        every ``progress_interval`` seconds (done of total, rate, time left) or nothing; ``"auto"``
+        is a bar when ``sys.stderr`` is a terminal and lines otherwise (a notebook, a log). None:
+        ``$VIBROIMPACT_PROGRESS``, else ``"auto"``.
+    progress_interval : float, optional
+        Seconds between two progress lines [s]; 0 for a line at every step.
 
     Returns
     -------
@@ -109,11 +117,12 @@ def sweep(case, values, analysis="simulate", modes=3, support_model="pin", threa
         ``supports[0].position_over_l``; ``status`` is ``"ok"`` or why a point failed);
         ``"summary"``: sweep.json.
     """
-    return tables(_vibroimpact.sweep(as_case(case), values, analysis, modes, support_model, threads, point_timeout))
+    return tables(_vibroimpact.sweep(as_case(case), values, analysis, modes, support_model, threads, point_timeout,
+                                     progress, progress_interval))
 
 
 def uq(case, vary, analysis="simulate", samples=256, method="mc", seed=1, specs=(), sensitivity=False, modes=3, threads=0,
-       point_timeout=60.0, bootstrap=1000):
+       point_timeout=60.0, bootstrap=1000, progress=None, progress_interval=10.0):
     """A spread study: outputs under random inputs, yield and Sobol indices (``vibroimpact uq``).
 
     Parameters
@@ -139,6 +148,8 @@ def uq(case, vary, analysis="simulate", samples=256, method="mc", seed=1, specs=
         As :func:`sweep`.
     bootstrap : int, optional
         Bootstrap resamples of the intervals, at least 100.
+    progress, progress_interval
+        As :func:`sweep`.
 
     Returns
     -------
@@ -146,7 +157,7 @@ def uq(case, vary, analysis="simulate", samples=256, method="mc", seed=1, specs=
         ``"table"``: Table as samples.csv; ``"summary"``: uq.json.
     """
     return tables(_vibroimpact.uq(as_case(case), vary, analysis, samples, method, seed, list(specs), sensitivity, modes,
-                                  threads, point_timeout, bootstrap))
+                                  threads, point_timeout, bootstrap, progress, progress_interval))
 
 
 def _settings(values, what):
@@ -179,7 +190,8 @@ def _path_or_empty(path):
 
 
 def fit(case, parameters, data=None, features=None, column=None, time_shift=False, time_shift_range=None,
-        scale=False, scale_range=None, two_stage=False, starts=1, max_iterations=50, threads=0):
+        scale=False, scale_range=None, two_stage=False, starts=1, max_iterations=50, threads=0, progress=None,
+        progress_interval=10.0):
     """Case values estimated from a measured trajectory or measured features (``vibroimpact fit``).
 
     Parameters
@@ -213,6 +225,9 @@ def fit(case, parameters, data=None, features=None, column=None, time_shift=Fals
         Levenberg-Marquardt iterations per start.
     threads : int, optional
         Threads for the starts; 0 for every CPU this process may use.
+    progress, progress_interval
+        As :func:`sweep`; what is counted is iterations of the budget
+        (``starts`` x ``max_iterations``, twice with ``two_stage``).
 
     Returns
     -------
@@ -224,11 +239,12 @@ def fit(case, parameters, data=None, features=None, column=None, time_shift=Fals
     """
     return tables(_vibroimpact.fit(as_case(case), _settings(parameters, "parameters"), _path_or_empty(data),
                                    _path_or_empty(features), column or "", time_shift, time_shift_range or "", scale,
-                                   scale_range or "", two_stage, starts, max_iterations, threads))
+                                   scale_range or "", two_stage, starts, max_iterations, threads, progress,
+                                   progress_interval))
 
 
 def optimize(case, vary, minimize=None, maximize=None, constraints=(), analysis="simulate", modes=3, max_evals=100,
-             global_evals=0, threads=0, point_timeout=60.0):
+             global_evals=0, threads=0, point_timeout=60.0, progress=None, progress_interval=10.0):
     """The design that minimises (or maximises) a reported quantity in a box of case values
     (``vibroimpact optimize``).
 
@@ -255,6 +271,9 @@ def optimize(case, vary, minimize=None, maximize=None, constraints=(), analysis=
         Worker threads; the result does not depend on them.
     point_timeout : float, optional
         Wall-clock limit of one design [s]; 0 for none.
+    progress, progress_interval
+        As :func:`sweep`; what is counted is designs of ``max_evals``, with
+        the best objective so far.
 
     Returns
     -------
@@ -265,11 +284,11 @@ def optimize(case, vary, minimize=None, maximize=None, constraints=(), analysis=
     """
     return tables(_vibroimpact.optimize(as_case(case), _settings(vary, "vary"), minimize or "", maximize or "",
                                         list(constraints), analysis, modes, max_evals, global_evals, threads,
-                                        point_timeout))
+                                        point_timeout, progress, progress_interval))
 
 
 def paper(out=None, positions=50, modal_positions=100, prestress_points=26, scan_horizon="500 us", examples=None,
-          threads=0, gnuplot="gnuplot"):
+          threads=0, gnuplot="gnuplot", progress=None, progress_interval=10.0):
     """The paper's numerical study, Figs. 2-11, with its claims checked (``vibroimpact paper``).
 
     Parameters
@@ -292,6 +311,9 @@ def paper(out=None, positions=50, modal_positions=100, prestress_points=26, scan
         Worker threads; 0 for every CPU this process may use.
     gnuplot : str, optional
         The gnuplot executable, for ``out``.
+    progress, progress_interval
+        As :func:`sweep`; what is counted is the study's jobs, and a line is written as each part
+        of the study ends (``paper: [ 12.3 s] Fig. 3 transient: done ...``).
 
     Returns
     -------
@@ -301,4 +323,4 @@ def paper(out=None, positions=50, modal_positions=100, prestress_points=26, scan
         ``{"fig4": Table}``); ``"timing"``: wall time [s], threads, transients.
     """
     return tables(_vibroimpact.paper(_path_or_empty(out), positions, modal_positions, prestress_points, scan_horizon,
-                                     _path_or_empty(examples), threads, gnuplot))
+                                     _path_or_empty(examples), threads, gnuplot, progress, progress_interval))

@@ -41,6 +41,7 @@ ModalResult analyse_modes(const System& s, int count) {
 ModalStudy modal_study(const Case& c, int count, SupportModel support_model) {
     if (support_model == SupportModel::none) throw std::invalid_argument("modal_study: supported model must be pin or spring");
     ModalStudy study;
+    study.case_name = c.name;
     study.support_model = support_model;
     study.unsupported = analyse_modes(build_system(c, SupportModel::none), count);
     study.released = released_curl(c, study.unsupported.system);

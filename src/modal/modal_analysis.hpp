@@ -3,6 +3,7 @@
 
 #include <Eigen/Dense>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "fem/system.hpp"
@@ -35,6 +36,7 @@ ModalResult analyse_modes(const System& s, int count);
 // The unsupported beam, the supported beam (supports as pins or as springs), and the ratios
 // omega_i / omega_in of supported over unsupported bending frequencies.
 struct ModalStudy {
+    std::string case_name;  // the case's name (its `name` key, else its file's stem)
     SupportModel support_model = SupportModel::pin;
     ModalResult unsupported;
     ModalResult supported;

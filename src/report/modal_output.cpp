@@ -85,6 +85,7 @@ void bending_table(std::string& out, const std::vector<Mode>& modes, const std::
 
 nlohmann::json modal_study_json(const ModalStudy& study) {
     nlohmann::json j;
+    j["case_name"] = study.case_name;
     j["dofs"] = study.unsupported.dofs;
     j["unsupported"] = {{"dofs", study.unsupported.dofs},
                         {"bending", modes_json(study.unsupported.bending, true)},

@@ -12,7 +12,7 @@
 
 namespace vi {
 
-// {"dofs", "unsupported": {"bending", "axial"}, "supported": {"bending", "axial", "ratios"}, ...}
+// {"case_name", "dofs", "unsupported": {"bending", "axial"}, "supported": {"bending", "axial", "ratios"}, ...}
 nlohmann::json modal_study_json(const ModalStudy& study);
 
 // Plain-text tables of frequencies, ratios, nodal points and peaks for a terminal.

@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
-"""The field output read back by an independent reader: `simulate --field` writes field.pvd and
+"""The field output read back by independent readers: `simulate --field` writes field.pvd and
 field/*.vtu (VTK XML); this script parses them with xml.etree (not the program's own code) and
 checks that the deflection at the watched node equals the history's watched column at the same
-times, for the exact solver (the paper's cantilever) and CVODE (the cantilever switch). Then the
-bound on the field (solver.field_step), --field without --out, and `plot`'s animated GIF, whose
-frames are counted by walking the GIF's blocks.
+times, for the exact solver (the paper's cantilever) and CVODE (the cantilever switch); every .vtu
+is also opened with meshio's VTU reader (Debian's python3-meshio, a reader of the format written
+by others), which must give the same points, line cells and deflections. Then the bound on the
+field (solver.field_step), --field without --out, and `plot`'s animated GIF, whose frames are
+counted by walking the GIF's blocks.
 
     check_field.py VIBROIMPACT SOURCE_DIR
 """
@@ -17,6 +19,10 @@ import xml.etree.ElementTree as ET
 
 exe, src = sys.argv[1], sys.argv[2]
 failures = []
+try:
+    import meshio
+except ImportError:
+    meshio = None
 
 
 def check(ok, what):
@@ -53,6 +59,12 @@ def read_series(folder):
         assert len(conn) == 2 * (n - 1) and int(piece.get("NumberOfCells")) == n - 1, "not a chain of line cells"
         t_vtu = float(vtu.find("UnstructuredGrid/FieldData/DataArray").text)
         frames.append((float(ds.get("timestep")), t_vtu, points[0::3], v))
+        if meshio is not None:
+            mesh = meshio.read(os.path.join(folder, ds.get("file")))
+            assert mesh.points.reshape(-1).tolist() == points, "meshio reads other points"
+            assert [c.type for c in mesh.cells] == ["line"], "meshio reads other cells than lines"
+            assert mesh.cells[0].data.reshape(-1).tolist() == conn, "meshio reads another connectivity"
+            assert mesh.point_data["deflection_m"].reshape(-1).tolist() == v, "meshio reads other deflections"
     return frames
 
 
@@ -90,6 +102,8 @@ def compare(case, watched, extra, expect_frames, label):
         return out
 
 
+check(meshio is not None, f"meshio is importable by {sys.executable} (the Debian package python3-meshio; "
+                          "scripts/install-deps test installs it)")
 paper = os.path.join(src, "examples/paper/free_impact_tip.toml")
 switch = os.path.join(src, "examples/switch/cantilever_switch.toml")
 # The paper's case: horizon 150 us sampled at the default horizon / 2000; field_step 1.5 us is every

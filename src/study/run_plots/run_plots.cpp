@@ -16,13 +16,13 @@ bool has(const fs::path& dir, const char* file) {
     return fs::is_regular_file(dir / file, ec);
 }
 
-// The case's name as the folder's JSON records it (summary.json's resolved.name, sweep.json's
-// case_name); empty when it does not (modes.json holds none).
+// The case's name as the folder's JSON records it (summary.json's resolved.name, sweep.json's and
+// modes.json's case_name); empty when it does not (no such file, or one written before it held a name).
 std::string case_name_of(const std::string& dir, RunKind kind) {
-    if (kind == RunKind::modes) return "";
-    const nlohmann::json j = read_run_json(dir + (kind == RunKind::sweep ? "/sweep.json" : "/summary.json"));
+    const char* file = kind == RunKind::sweep ? "/sweep.json" : kind == RunKind::modes ? "/modes.json" : "/summary.json";
+    const nlohmann::json j = read_run_json(dir + file);
     const nlohmann::json* name = nullptr;
-    if (kind == RunKind::sweep && j.is_object() && j.contains("case_name")) name = &j["case_name"];
+    if (kind != RunKind::transient && j.is_object() && j.contains("case_name")) name = &j["case_name"];
     if (kind == RunKind::transient && j.is_object() && j.contains("resolved") && j["resolved"].is_object() &&
         j["resolved"].contains("name")) {
         name = &j["resolved"]["name"];
