@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <string>
+#include <vector>
 
 #include "sweep/grid.hpp"
 #include "sweep/runner.hpp"
@@ -33,6 +34,33 @@ std::size_t point_count() {
     return n > 0 ? static_cast<std::size_t>(n) : 1000;
 }
 
+// One timed pass over every point of a grid: points failed, wall seconds, process CPU seconds.
+struct SweepTiming {
+    std::size_t failed = 0;
+    double seconds = 0.0;
+    double cpu = 0.0;
+};
+
+SweepTiming time_sweep(benchmark::State& state, const vi::Case& base, const vi::SweepGrid& grid,
+                       const vi::SweepSettings& settings, std::size_t column_count, int threads) {
+    std::vector<std::size_t> all(grid.size());
+    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+    SweepTiming t;
+    for (auto _ : state) {
+        t.failed = 0;
+        const double cpu0 = process_cpu_s();
+        const auto t0 = std::chrono::steady_clock::now();
+        vi::run_sweep_points(base, grid, all, settings, threads, [&](const vi::SweepPointResult& r) {
+            // The row text is part of what a sweep does for every point.
+            benchmark::DoNotOptimize(vi::sweep_csv_row(r, column_count));
+            if (!r.ok()) ++t.failed;
+        });
+        t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        t.cpu = process_cpu_s() - cpu0;
+    }
+    return t;
+}
+
 void BM_SupportPositionSweep(benchmark::State& state) {
     const vi::Case base = vi::read_case_file(std::string(VI_SOURCE_DIR) + "/examples/paper/free_impact_tip.toml");
     const std::size_t n = point_count();
@@ -40,25 +68,8 @@ void BM_SupportPositionSweep(benchmark::State& state) {
         vi::parse_sweep_grid({"supports[0].position=0.3:1:" + std::to_string(n), "beam.elements=50"}, base);
     const vi::SweepSettings settings;
     const auto columns = vi::sweep_result_columns(settings.analysis, settings.modes);
-    std::vector<std::size_t> all(grid.size());
-    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
     const int threads = static_cast<int>(state.range(0));
-
-    std::size_t failed = 0;
-    double seconds = 0.0;
-    double cpu = 0.0;
-    for (auto _ : state) {
-        failed = 0;
-        const double cpu0 = process_cpu_s();
-        const auto t0 = std::chrono::steady_clock::now();
-        vi::run_sweep_points(base, grid, all, settings, threads, [&](const vi::SweepPointResult& r) {
-            // The row text is part of what a sweep does for every point.
-            benchmark::DoNotOptimize(vi::sweep_csv_row(r, columns.size()));
-            if (!r.ok()) ++failed;
-        });
-        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        cpu = process_cpu_s() - cpu0;
-    }
+    const auto [failed, seconds, cpu] = time_sweep(state, base, grid, settings, columns.size(), threads);
     const double rate = static_cast<double>(grid.size()) / seconds;
     state.counters["points"] = static_cast<double>(grid.size());
     state.counters["failed_points"] = static_cast<double>(failed);
@@ -89,22 +100,8 @@ void BM_PositionStiffnessGrid(benchmark::State& state) {
     vi::SweepSettings settings;
     settings.supports = static_cast<int>(base.supports.size());
     const auto columns = vi::sweep_result_columns(settings.analysis, settings.modes, settings.supports);
-    std::vector<std::size_t> all(grid.size());
-    for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
     const int threads = static_cast<int>(state.range(0));
-    std::size_t failed = 0;
-    double seconds = 0.0, cpu = 0.0;
-    for (auto _ : state) {
-        failed = 0;
-        const double cpu0 = process_cpu_s();
-        const auto t0 = std::chrono::steady_clock::now();
-        vi::run_sweep_points(base, grid, all, settings, threads, [&](const vi::SweepPointResult& r) {
-            benchmark::DoNotOptimize(vi::sweep_csv_row(r, columns.size()));
-            if (!r.ok()) ++failed;
-        });
-        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        cpu = process_cpu_s() - cpu0;
-    }
+    const auto [failed, seconds, cpu] = time_sweep(state, base, grid, settings, columns.size(), threads);
     const double rate = static_cast<double>(grid.size()) / seconds;
     state.counters["points"] = static_cast<double>(grid.size());
     state.counters["failed_points"] = static_cast<double>(failed);

@@ -28,6 +28,7 @@
 #include "statics/static_solution.hpp"
 #include "support/test_files.hpp"
 #include "sweep/case_paths.hpp"
+#include "support/input_error_of.hpp"
 
 namespace vi {
 namespace sections_test {
@@ -229,12 +230,7 @@ TEST(BeamSections, ElectrodeForceUsesTheWidthUnderIt) {
 }
 
 std::string error_of(const std::string& extra) {
-    try {
-        base_with(extra);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return test::input_error_of([&] { base_with(extra); });
 }
 
 // Sections with a gap or an overlap, a layer naming no material, and a layered curl that closes a

@@ -28,6 +28,7 @@
 #include "problem/beam_model.hpp"
 #include "support/run_command.hpp"
 #include "support/test_files.hpp"
+#include "support/input_error_of.hpp"
 
 namespace vi {
 namespace perforated_test {
@@ -263,12 +264,7 @@ TEST(PerforatedSections, WrittenCaseReadsBack) {
 }
 
 std::string error_of(const std::string& holes, const std::string& width = "") {
-    try {
-        base_with("[[beam.sections]]\nfrom = 0\nto = 1\n" + width + "holes = " + holes + "\n");
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return test::input_error_of([&] { base_with("[[beam.sections]]\nfrom = 0\nto = 1\n" + width + "holes = " + holes + "\n"); });
 }
 
 // Holes as large as their pitch, wider than the section, of no size or pitch, of an unknown shape or

@@ -14,6 +14,7 @@
 #include "fem/system.hpp"
 #include "io/case_reader.hpp"
 #include "model/input_error.hpp"
+#include "support/input_error_of.hpp"
 
 namespace vi {
 namespace sections_buckling_test {
@@ -69,12 +70,7 @@ TEST(SectionsBuckling, SteppedBeamBetweenItsSections) {
 }
 
 std::string error_of(const std::string& ends, const std::string& extra) {
-    try {
-        held(ends, extra);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return test::input_error_of([&] { held(ends, extra); });
 }
 
 // The held force is linear in the layer stress: N(sigma) = sigma N(1 Pa). At 1.02 times the buckling

@@ -28,6 +28,7 @@
 #include "report/transient_output.hpp"
 #include "statics/layer_hold.hpp"
 #include "study/stiction/stiction.hpp"
+#include "support/input_error_of.hpp"
 
 namespace vi {
 namespace sections_estimates_test {
@@ -189,12 +190,7 @@ TEST(SectionsEstimates, DetachedLengthTakesTheSection) {
 }
 
 std::string error_of(const std::string& extra) {
-    try {
-        with(extra);
-    } catch (const InputError& e) {
-        return e.what();
-    }
-    return "";
+    return test::input_error_of([&] { with(extra); });
 }
 
 // Meijs-Fokkema's range (0.3 <= t/g): the plain 2 um beam at a 10 um gap is outside, a 4 um section
