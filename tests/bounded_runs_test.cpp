@@ -135,6 +135,17 @@ TEST(BoundedRuns, MeshesBeyondWhatACommandTakesAreRefusedOnBeamElements) {
         expect_refused({"pullin", mesh(m), "--dynamic", "--out", out}, mesh(m) + ":19: beam.elements", {"at most 400"}, out,
                        "pullin --dynamic");
     }
+    // The bridge example stretches: its trace takes at most 200 elements (26 s of CPU at 400).
+    std::string bridge = test::read_text(test::source_path("examples/switch/bridge_switch.toml"));
+    bridge.replace(bridge.find("elements = 40 "), 14, "elements = 400 ");
+    test::write_text(dir + "/bridge400.toml", bridge);
+    for (const char* dynamic : {"", "--dynamic"}) {
+        std::vector<std::string> args{"pullin", dir + "/bridge400.toml", "--out", out};
+        if (*dynamic) args.emplace_back(dynamic);
+        expect_refused(args, dir + "/bridge400.toml:24: beam.elements",
+                       {"400 elements are more than the pull-in trace takes with stretching = true (at most 200"}, out,
+                       "pullin of the stretching bridge at m = 400");
+    }
     for (const int m : {400, 1000}) {
         expect_refused({"air-q", mesh(m), "--out", out}, mesh(m) + ":19: beam.elements",
                        {"more than air-q takes (at most 100", "use fewer"}, out, "air-q");
@@ -221,7 +232,7 @@ double number_after(const std::string& text, const std::string& label) {
 // The switch example without damping on the full model: CVODE follows the mesh's undamped top mode
 // (4.85 GHz) at a steady pace once the voltage step has set it ringing, about 4 million steps over
 // the 50 us horizon. The run does not spend the whole default budget of solver.max_steps to learn
-// that: it ends at half of it from the pace of its last window of steps (exit 1, nothing written), with the steps
+// that: it ends at a tenth of it from the pace of its last window of steps (exit 1, nothing written), with the steps
 // the horizon needs, the limit and the keys that help; so does switch-report, whose transient is the
 // same. The reduced model of 16 modes, also undamped, answers.
 // The step budget these pace tests run at: the default in Release; a tenth in the short run of the

@@ -339,6 +339,13 @@ PullinModel pullin_model(const Case& c) {
                          ", docs/electrostatics.md §4): beyond, K's roundoff moves V_PI more than the mesh does and "
                          "each Newton step costs the square of the DOFs an electrode faces; use fewer");
     }
+    if (c.beam.stretching && c.beam.elements > kMaxPullinStretchingElements) {
+        throw InputError("beam.elements: " + std::to_string(c.beam.elements) +
+                         " elements are more than the pull-in trace takes with stretching = true (at most " +
+                         std::to_string(kMaxPullinStretchingElements) +
+                         ", docs/electrostatics.md §4): the stretching couples every slope, so each Newton step "
+                         "solves a dense system; use fewer");
+    }
     const BeamModel b = build_beam_model(c);
     Model m;
     m.K = b.K;

@@ -23,6 +23,9 @@ namespace vi {
 // block) and Newton's steps with the roundoff (317 at m = 200, 952 at 400, 2517 at 800: 0.09, 0.55,
 // 5 s; m = 1000 gave no answer in 120 s).
 inline constexpr int kMaxPullinElements = 400;
+// With mid-plane stretching the tangent is dense (the axial force couples every slope): a bridge's
+// trace took 3.9 s at 200 elements and 26 s at 400.
+inline constexpr int kMaxPullinStretchingElements = 200;
 
 struct PullinOptions {
     int steps = 200;          // continuation steps over the electrode's air gap
