@@ -40,11 +40,12 @@ using test::kStopBound;
 
 // Grid index of the slow point (the last: under MPI, rank 1 takes it after its fast points).
 constexpr std::size_t kSlow = 5;
-// The slow point's horizon [s]. Under the sanitizers (VI_SHORT_TESTS) a fifth of it, some 4000
-// impacts, still runs for seconds after the fast points end; each test here runs the slow point
-// twice (the reference and the resume), which made this file's tests the longest of that run.
+// The slow point's horizon [s]. Under the sanitizers (VI_SHORT_TESTS) half of it, some 10000
+// impacts, still runs for more than the 2 s the progress line waits before naming it; each test here
+// runs the slow point twice (the reference and the resume), which made this file's tests the longest
+// of that run.
 #if VI_SHORT_TESTS
-const std::string kSlowHorizon = "0.02";
+const std::string kSlowHorizon = "0.05";
 #else
 const std::string kSlowHorizon = "0.1";
 #endif
