@@ -1,5 +1,7 @@
 #include "dynamics/signal/signal_scan.hpp"
 
+#include "dynamics/signal/exp_sincos.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <cstdint>
@@ -117,6 +119,49 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
             md.dead = std::numeric_limits<double>::infinity();
         }
     }
+    dead_.resize(static_cast<std::size_t>(m_));
+    mags_.resize(static_cast<std::size_t>(m_));
+    for (int k = 0; k < m_; ++k) {
+        dead_[static_cast<std::size_t>(k)] = modes_[static_cast<std::size_t>(k)].dead;
+        mags_[static_cast<std::size_t>(k)] = modes_[static_cast<std::size_t>(k)].mag;
+    }
+}
+
+void SignalScan::update_live(double t) const {
+    if (t >= live_from_ && t < live_until_) return;
+    // Mode k is live while t < dead_k: the set changes only at the death times around t.
+    live_.clear();
+    live_from_ = -std::numeric_limits<double>::infinity();
+    live_until_ = std::numeric_limits<double>::infinity();
+    dead_count_ = 0;
+    dead_abs1_ = 0.0;
+    for (int k = 0; k < m_; ++k) {
+        const double dk = dead_[static_cast<std::size_t>(k)];
+        if (t >= dk) {
+            ++dead_count_;
+            dead_abs1_ += skip_ * mags_[static_cast<std::size_t>(k)];
+            live_from_ = std::max(live_from_, dk);
+        } else {
+            live_.push_back(k);
+            live_until_ = std::min(live_until_, dk);
+        }
+    }
+}
+
+const double* SignalScan::exponentials(double t) const {
+    const std::size_t n = live_.size();
+    // The thread's scratch: each evaluation reads it before any other scan of the thread writes it.
+    thread_local std::vector<double> scratch;
+    if (scratch.size() < 5 * n) scratch.resize(5 * n);
+    double* x = scratch.data();
+    double* y = x + n;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Mode& md = modes_[static_cast<std::size_t>(live_[i])];
+        x[i] = md.re * t;
+        y[i] = md.im * t;
+    }
+    exp_sincos(x, y, y + n, y + 2 * n, y + 3 * n, static_cast<int>(n));
+    return y + n;
 }
 
 ScanPoint SignalScan::evaluate(double t) {
@@ -130,23 +175,22 @@ ScanPoint SignalScan::evaluate(double t) {
         store_ = std::move(bigger);
         capacity_ = cap;
     }
+    update_live(t);
+    const std::size_t n = live_.size();
+    // At t = 0 every factor is 1.
+    const double* ex = t != 0.0 ? exponentials(t) : nullptr;
+    const double* co = ex ? ex + n : nullptr;
+    const double* si = ex ? ex + 2 * n : nullptr;
     p.offset = used_;
     double* rec = store_.get() + p.offset;
     rec[kF0] = rec[kF1] = rec[kMag] = rec[kB2] = 0.0;
-    double value = 0.0, slope = 0.0, abs1 = 0.0;
-    int live = 0, dead = 0;
-    for (const Mode& md : modes_) {
-        if (t >= md.dead) {
-            // Below skip_ for good: bounded by it, always among the fast modes, never evaluated.
-            ++dead;
-            abs1 += skip_ * md.mag;
-            continue;
-        }
+    // The dead modes: below skip_ for good, bounded by it, always among the fast ones, never evaluated.
+    double value = 0.0, slope = 0.0, abs1 = dead_abs1_;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Mode& md = modes_[static_cast<std::size_t>(live_[i])];
         double vre = 0.0, lre = 0.0, unc = 0.0;
         // |v_k| exactly (or, below exp(-707), an upper bound) before deciding whether to evaluate it.
-        // At t = 0 every factor is 1 (what exp, cos and sin return there).
-        const double x = md.re * t;
-        const double e = t == 0.0 ? 1.0 : x < -707.0 ? 1e-307 : std::exp(x);
+        const double e = ex ? ex[i] : 1.0;
         const double mk = md.amp * e;
         if (mk <= skip_) {
             unc = mk;  // Re v and Re(lambda v) lie within +-|v| and +-|lambda||v|
@@ -154,8 +198,7 @@ ScanPoint SignalScan::evaluate(double t) {
             vre = md.A.real() * e;
             lre = md.re * vre;
         } else {
-            const double ph = md.im * t;
-            const cd v = t == 0.0 ? md.A : md.A * cd(e * std::cos(ph), e * std::sin(ph));
+            const cd v = ex ? md.A * cd(e * co[i], e * si[i]) : md.A;
             vre = v.real();
             lre = md.re * v.real() - md.im * v.imag();
         }
@@ -169,12 +212,12 @@ ScanPoint SignalScan::evaluate(double t) {
         next[kMag] = rec[kMag] + mk;
         next[kB2] = rec[kB2] + mk * md.mag2;
         rec = next;
-        ++live;
     }
     rec[kLambda] = std::numeric_limits<double>::infinity();
+    const int live = static_cast<int>(n);
     used_ += static_cast<std::size_t>(kRecord * (live + 1));
     p.live = live;
-    p.dead_mag = dead * skip_;
+    p.dead_mag = dead_count_ * skip_;
     p.abs0 = rec[kMag] + p.dead_mag;
     for (const ExpTerm& term : terms_) {
         const cd v0 = term_derivative(term, t, 0), v1 = term_derivative(term, t, 1);
@@ -190,18 +233,21 @@ ScanPoint SignalScan::evaluate(double t) {
 }
 
 double SignalScan::value(double t) const {
+    update_live(t);
+    const std::size_t n = live_.size();
+    const double* ex = t != 0.0 ? exponentials(t) : nullptr;
+    const double* co = ex ? ex + n : nullptr;
+    const double* si = ex ? ex + 2 * n : nullptr;
     double v = 0.0;
-    for (const Mode& md : modes_) {
-        const double x = md.re * t;
-        if (t >= md.dead || x < -707.0) continue;
-        const double e = std::exp(x);
-        if (md.amp * e <= skip_) continue;
+    for (std::size_t i = 0; i < n; ++i) {
+        const Mode& md = modes_[static_cast<std::size_t>(live_[i])];
+        const double e = ex ? ex[i] : 1.0;
+        if (md.re * t < -707.0 || md.amp * e <= skip_) continue;
         if (md.im == 0.0) {
             v += md.A.real() * e;
             continue;
         }
-        const double ph = md.im * t;
-        v += (md.A * cd(e * std::cos(ph), e * std::sin(ph))).real();
+        v += (ex ? md.A * cd(e * co[i], e * si[i]) : md.A).real();
     }
     for (const ExpTerm& term : terms_) v += term_derivative(term, t, 0).real();
     return v;

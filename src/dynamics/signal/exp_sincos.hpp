@@ -1,0 +1,13 @@
+#pragma once
+// exp(x) and (cos, sin)(y) over arrays, in plain arithmetic the compiler can vectorise: the modal
+// exponentials of the signal scans (every live mode at each evaluation point).
+
+namespace vi {
+
+// For k < n: e[k] = exp(x[k]), c[k] = cos(y[k]), s[k] = sin(y[k]). Each to within 4 ulps of the
+// exact value (relative for exp; for cos and sin relative to 1, the size of the pair), which the
+// scans' rounding bounds allow per term (signal_scan.hpp). x below -707 gives 1e-307 (the scans'
+// floor for an exponential); x above 700 or |y| above 1e5 is handed to the C library.
+void exp_sincos(const double* x, const double* y, double* e, double* c, double* s, int n);
+
+}  // namespace vi
