@@ -128,24 +128,25 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
 }
 
 void SignalScan::update_live(double t) const {
-    if (t >= live_from_ && t < live_until_) return;
-    // Mode k is live while t < dead_k: the set changes only at the death times around t.
-    live_.clear();
-    live_from_ = -std::numeric_limits<double>::infinity();
-    live_until_ = std::numeric_limits<double>::infinity();
-    dead_count_ = 0;
-    dead_abs1_ = 0.0;
+    if (t == live_t_) return;
+    // Mode k is live while t < dead_k. Without branches: which modes are dead varies from one
+    // point to the next in ways a branch predictor cannot follow.
+    live_t_ = t;
+    const double* dead = dead_.data();
+    const double* mag = mags_.data();
+    live_.resize(static_cast<std::size_t>(m_));
+    int* out = live_.data();
+    int n = 0;
+    double dead_mag = 0.0;
     for (int k = 0; k < m_; ++k) {
-        const double dk = dead_[static_cast<std::size_t>(k)];
-        if (t >= dk) {
-            ++dead_count_;
-            dead_abs1_ += skip_ * mags_[static_cast<std::size_t>(k)];
-            live_from_ = std::max(live_from_, dk);
-        } else {
-            live_.push_back(k);
-            live_until_ = std::min(live_until_, dk);
-        }
+        const int alive = t < dead[k];
+        out[n] = k;
+        n += alive;
+        dead_mag += alive ? 0.0 : mag[k];
     }
+    live_.resize(static_cast<std::size_t>(n));
+    dead_count_ = m_ - n;
+    dead_abs1_ = skip_ * dead_mag;
 }
 
 const double* SignalScan::exponentials(double t) const {
