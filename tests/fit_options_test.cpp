@@ -81,14 +81,17 @@ TEST(FitOptions, TimeShiftAndScaleAreRecoveredAsNuisanceParameters) {
     EXPECT_NEAR(r.rms, 2e-9, 2e-10);
 }
 
-// A record 3 us late (75 samples): from the case's values (Kc = 1300 N/m, t0 = 0) the fit stops in
-// a local minimum (Kc near 7000 N/m, a cost some 2000 times the global one: measured); the third
-// start of a Halton sample of the bounds (316 N/m, +1.3 us) reaches the global one.
+// A record 3 us late (75 samples): from Kc = 1200 N/m, t0 = 0 the fit stops in a local minimum (Kc
+// near 7000 N/m, a cost some 2000 times the global one: measured); the third start of a Halton
+// sample of the bounds (316 N/m, +1.3 us) reaches the global one. Which minimum one start reaches
+// depends on the last bits of the simulations (measured: from 1100, 1200, 1240, 1250, 1280 and 5000
+// N/m the fit stops between 4200 and 6900 N/m, from 1150, 1220, 1300 and 3000 N/m at the truth; the
+// case's own 1300 N/m stopped locally before the signal scans' exponentials changed their rounding).
 TEST(FitOptions, SeveralStartsFindTheGlobalMinimumWhereOneStartStopsInALocalOne) {
     const Case truth = truth_case();
     const MeasuredTrajectory data = shifted(truth, 75, 1.0, 2e-9, 9u);
     Case start = truth;
-    start.supports[0].stiffness = 1300.0;
+    start.supports[0].stiffness = 1200.0;
     std::vector<FitParameter> params = {parse_fit_parameter("supports[0].stiffness=100:10000", start),
                                         time_shift_parameter(data.t.back() - data.t.front())};
     FitOptions several;
