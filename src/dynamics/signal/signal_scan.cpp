@@ -82,19 +82,27 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
     // The thread's spare array: every field of every mode is written below.
     modes_ = std::move(spare_modes());
     modes_.resize(static_cast<std::size_t>(m_));
+    // Real and imaginary parts read as doubles (std::complex is laid out as double[2]): a complex
+    // copied through the stack in halves and read back whole stalls the store forwarding, which cost
+    // half of this constructor.
+    const double* lp = reinterpret_cast<const double*>(lam.data());
+    const double* ap = reinterpret_cast<const double*>(f.A.data());
+    double gamma = 0.0, size = 0.0;  // in registers: the members would be stored and read back per mode
     for (int j = 0; j < m_; ++j) {
-        const int k = sorted ? j : order[static_cast<std::size_t>(j)];
-        const cd l = lam[k];
+        const std::size_t k = static_cast<std::size_t>(sorted ? j : order[static_cast<std::size_t>(j)]);
+        const double lr = lp[2 * k], li = lp[2 * k + 1], ar = ap[2 * k], ai = ap[2 * k + 1];
         Mode& md = modes_[static_cast<std::size_t>(j)];
-        md.A = sign * f.A[k];
-        md.re = l.real();
-        md.im = l.imag();
-        md.mag2 = std::norm(l);
+        md.A = cd(sign * ar, sign * ai);
+        md.re = lr;
+        md.im = li;
+        md.mag2 = lr * lr + li * li;  // std::norm's own formula
         md.mag = std::sqrt(md.mag2);
-        md.amp = magnitude(f.A[k]);
-        gamma_ = std::max(gamma_, md.re);
-        size_ += md.amp;
+        md.amp = std::sqrt(ar * ar + ai * ai);
+        gamma = std::max(gamma, md.re);
+        size += md.amp;
     }
+    gamma_ = gamma;
+    size_ = size;
     for (const ExpTerm& t : f.terms) {
         terms_.push_back({sign * t.coef, t.s, t.power});
         size_ += magnitude(t.coef);
@@ -128,23 +136,29 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
 }
 
 void SignalScan::update_live(double t) const {
-    if (t == live_t_) return;
-    // Mode k is live while t < dead_k. Without branches: which modes are dead varies from one
-    // point to the next in ways a branch predictor cannot follow.
-    live_t_ = t;
+    if (t >= live_from_ && t < live_until_) return;
+    // Mode k is live while t < dead_k: the set holds between the death times around t. Without
+    // branches: which modes are dead varies from one point to the next in ways a branch predictor
+    // cannot follow.
+    constexpr double kInf = std::numeric_limits<double>::infinity();
     const double* dead = dead_.data();
     const double* mag = mags_.data();
     live_.resize(static_cast<std::size_t>(m_));
     int* out = live_.data();
     int n = 0;
-    double dead_mag = 0.0;
+    double dead_mag = 0.0, from = -kInf, until = kInf;
     for (int k = 0; k < m_; ++k) {
-        const int alive = t < dead[k];
+        const double dk = dead[k];
+        const bool alive = t < dk;
         out[n] = k;
-        n += alive;
+        n += alive ? 1 : 0;
         dead_mag += alive ? 0.0 : mag[k];
+        from = std::max(from, alive ? -kInf : dk);
+        until = std::min(until, alive ? dk : kInf);
     }
     live_.resize(static_cast<std::size_t>(n));
+    live_from_ = from;
+    live_until_ = until;
     dead_count_ = m_ - n;
     dead_abs1_ = skip_ * dead_mag;
 }

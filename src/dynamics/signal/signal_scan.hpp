@@ -64,7 +64,8 @@ private:
         return store_.get() + p.offset + static_cast<std::size_t>(kRecord * J);
     }
     int slow_count(const ScanPoint& p, double h) const;
-    // The modes not dead at t (live_, in mode order) and what the dead ones add to the bounds.
+    // The modes not dead at t (live_, in mode order) and what the dead ones add to the bounds;
+    // kept while t stays between the same death times.
     void update_live(double t) const;
     // exp(Re lambda t), then cos and sin of Im lambda t, of the live modes (after update_live(t)):
     // three arrays of live_.size() values, in the thread's scratch until the next call.
@@ -90,7 +91,7 @@ private:
     std::size_t capacity_ = 0, used_ = 0;
     std::vector<double> dead_, mags_;  // each mode's death time and |lambda|, contiguous
     mutable std::vector<int> live_;
-    mutable double live_t_ = std::numeric_limits<double>::quiet_NaN();  // live_ is for this t
+    mutable double live_from_ = 0.0, live_until_ = -1.0;  // live_ holds for t in [from, until)
     mutable int dead_count_ = 0;
     mutable double dead_abs1_ = 0.0;  // sum over the dead modes of skip_ |lambda_k|
 };
