@@ -88,6 +88,12 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
     const double* lp = reinterpret_cast<const double*>(lam.data());
     const double* ap = reinterpret_cast<const double*>(f.A.data());
     double gamma = 0.0, size = 0.0;  // in registers: the members would be stored and read back per mode
+    // |lambda|^2 and |A|^2 into the contiguous arrays first, their square roots in one vectorised
+    // pass (sqrt is correctly rounded either way), then into the modes.
+    dead_.resize(static_cast<std::size_t>(m_));
+    mags_.resize(static_cast<std::size_t>(m_));
+    double* mag = mags_.data();
+    double* amp = dead_.data();
     for (int j = 0; j < m_; ++j) {
         const std::size_t k = static_cast<std::size_t>(sorted ? j : order[static_cast<std::size_t>(j)]);
         const double lr = lp[2 * k], li = lp[2 * k + 1], ar = ap[2 * k], ai = ap[2 * k + 1];
@@ -96,10 +102,19 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
         md.re = lr;
         md.im = li;
         md.mag2 = lr * lr + li * li;  // std::norm's own formula
-        md.mag = std::sqrt(md.mag2);
-        md.amp = std::sqrt(ar * ar + ai * ai);
-        gamma = std::max(gamma, md.re);
-        size += md.amp;
+        mag[j] = md.mag2;
+        amp[j] = ar * ar + ai * ai;
+        gamma = std::max(gamma, lr);
+    }
+    for (int j = 0; j < m_; ++j) {
+        mag[j] = std::sqrt(mag[j]);
+        amp[j] = std::sqrt(amp[j]);
+    }
+    for (int j = 0; j < m_; ++j) {
+        Mode& md = modes_[static_cast<std::size_t>(j)];
+        md.mag = mag[j];
+        md.amp = amp[j];
+        size += amp[j];
     }
     gamma_ = gamma;
     size_ = size;
@@ -127,12 +142,7 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
             md.dead = std::numeric_limits<double>::infinity();
         }
     }
-    dead_.resize(static_cast<std::size_t>(m_));
-    mags_.resize(static_cast<std::size_t>(m_));
-    for (int k = 0; k < m_; ++k) {
-        dead_[static_cast<std::size_t>(k)] = modes_[static_cast<std::size_t>(k)].dead;
-        mags_[static_cast<std::size_t>(k)] = modes_[static_cast<std::size_t>(k)].mag;
-    }
+    for (int k = 0; k < m_; ++k) dead_[static_cast<std::size_t>(k)] = modes_[static_cast<std::size_t>(k)].dead;
 }
 
 void SignalScan::update_live(double t) const {
