@@ -438,16 +438,18 @@ const Eigen::VectorXcd& PieceSolution::sample_exponentials(double tau, double t_
             for (Eigen::Index k = 0; k < m; ++k) sample_live_.push_back(static_cast<int>(k));
         } else {
             if (sample_weight_.size() != m) {
-                sample_weight_ = watched_v_.A.cwiseAbs().cwiseMax(watched_vel_.A.cwiseAbs());
+                // Squared magnitudes (no hypot): only compared with a threshold far below roundoff.
+                sample_weight_ = watched_v_.A.cwiseAbs2().cwiseMax(watched_vel_.A.cwiseAbs2());
                 for (std::size_t c = 0; c < v_.size(); ++c) {
-                    sample_weight_ = sample_weight_.cwiseMax(v_[c].A.cwiseAbs())
-                                         .cwiseMax(vel_[c].A.cwiseAbs())
-                                         .cwiseMax(force_[c].A.cwiseAbs());
+                    sample_weight_ = sample_weight_.cwiseMax(v_[c].A.cwiseAbs2())
+                                         .cwiseMax(vel_[c].A.cwiseAbs2())
+                                         .cwiseMax(force_[c].A.cwiseAbs2());
                 }
+                const double floor = 1e-18 * sample_weight_.cwiseSqrt().sum();
+                sample_floor2_ = floor * floor;
             }
-            const double floor = 1e-18 * sample_weight_.sum();
             for (Eigen::Index k = 0; k < m; ++k) {
-                if (sample_weight_[k] * std::abs(sample_e_[k]) > floor) sample_live_.push_back(static_cast<int>(k));
+                if (sample_weight_[k] * std::norm(sample_e_[k]) > sample_floor2_) sample_live_.push_back(static_cast<int>(k));
             }
         }
     }
@@ -455,12 +457,34 @@ const Eigen::VectorXcd& PieceSolution::sample_exponentials(double tau, double t_
     return sample_e_;
 }
 
-double PieceSolution::sampled_value(const ExpSignal& f, double tau) const {
-    cd sum = 0.0;
-    for (int k : sample_live_) sum += f.A[k] * sample_e_[k];
-    double v = sum.real();
-    for (const ExpTerm& t : f.terms) v += term_derivative(t, tau, 0).real();
-    return v;
+void PieceSolution::sampled_values(const std::vector<const ExpSignal*>& fs, double tau, std::vector<double>& out) const {
+    const std::size_t nf = fs.size();
+    const std::size_t m = static_cast<std::size_t>(sample_e_.size());
+    if (sample_pack_.size() != 2 * nf * m) {
+        // The channels' amplitudes per mode side by side (real parts, then imaginary), once per piece.
+        sample_pack_.resize(2 * nf * m);
+        for (std::size_t k = 0; k < m; ++k) {
+            for (std::size_t j = 0; j < nf; ++j) {
+                const cd a = fs[j]->A[static_cast<Eigen::Index>(k)];
+                sample_pack_[2 * nf * k + j] = a.real();
+                sample_pack_[2 * nf * k + nf + j] = a.imag();
+            }
+        }
+    }
+    // All channels in one pass over the live modes, real parts only: Re sum A_k e_k summed in the
+    // same order as the complex sum, the same value to the last bit.
+    out.assign(nf, 0.0);
+    double* acc = out.data();
+    const double* ep = reinterpret_cast<const double*>(sample_e_.data());
+    for (int k : sample_live_) {
+        const double er = ep[2 * k], ei = ep[2 * k + 1];
+        const double* ar = sample_pack_.data() + 2 * nf * static_cast<std::size_t>(k);
+        const double* ai = ar + nf;
+        for (std::size_t j = 0; j < nf; ++j) acc[j] += ar[j] * er - ai[j] * ei;
+    }
+    for (std::size_t j = 0; j < nf; ++j) {
+        for (const ExpTerm& t : fs[j]->terms) out[j] += term_derivative(t, tau, 0).real();
+    }
 }
 
 void PieceSolution::sample(double tau, double t_abs, const std::vector<bool>& active, TimeHistory& h, bool energy,
@@ -473,13 +497,22 @@ void PieceSolution::sample(double tau, double t_abs, const std::vector<bool>& ac
     }
     // One set of exponentials serves every channel, the state and the energy terms.
     const Eigen::VectorXcd& e = sample_exponentials(tau, t_abs, energy);
-    h.t.push_back(t_abs);
-    h.watched_v.push_back(sampled_value(watched_v_, tau));
-    h.watched_velocity.push_back(sampled_value(watched_vel_, tau));
+    thread_local std::vector<const ExpSignal*> channels;
+    thread_local std::vector<double> values;
+    channels.assign({&watched_v_, &watched_vel_});
     for (std::size_t c = 0; c < nc; ++c) {
-        h.contact_v[c].push_back(sampled_value(v_[c], tau));
-        h.contact_velocity[c].push_back(sampled_value(vel_[c], tau));
-        h.contact_force[c].push_back(active[c] ? sampled_value(force_[c], tau) : 0.0);
+        channels.push_back(&v_[c]);
+        channels.push_back(&vel_[c]);
+        channels.push_back(&force_[c]);
+    }
+    sampled_values(channels, tau, values);
+    h.t.push_back(t_abs);
+    h.watched_v.push_back(values[0]);
+    h.watched_velocity.push_back(values[1]);
+    for (std::size_t c = 0; c < nc; ++c) {
+        h.contact_v[c].push_back(values[2 + 3 * c]);
+        h.contact_velocity[c].push_back(values[3 + 3 * c]);
+        h.contact_force[c].push_back(active[c] ? values[4 + 3 * c] : 0.0);
     }
     if (energy) h.energy.push_back(energy_at(tau, start, e));
 }

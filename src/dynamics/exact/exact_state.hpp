@@ -122,13 +122,18 @@ private:
     static constexpr int kSampleAnchor = 64;
     // Without the energy ledger, only the modes still alive in some sampled channel are carried: at
     // each anchor, those whose largest channel amplitude times |exp(lambda tau)| is above 1e-18 of
-    // the channels' summed amplitudes (a heavily damped mode soon after a switch is not).
+    // the channels' summed amplitudes (a heavily damped mode soon after a switch is not), compared
+    // in squares.
     [[nodiscard]] const Eigen::VectorXcd& sample_exponentials(double tau, double t_abs, bool all_modes) const;
-    [[nodiscard]] double sampled_value(const ExpSignal& f, double tau) const;
+    // The channels fs at the sample tau (after sample_exponentials), into out; the same channels at
+    // every sample of the piece.
+    void sampled_values(const std::vector<const ExpSignal*>& fs, double tau, std::vector<double>& out) const;
     mutable double sample_tau_ = -1.0, sample_dt_ = -1.0;
     mutable int sample_run_ = 0;
     mutable Eigen::VectorXcd sample_e_, sample_step_;
-    mutable Eigen::VectorXd sample_weight_;  // per mode: the largest |A_k| of the sampled channels
+    mutable Eigen::VectorXd sample_weight_;  // per mode: the largest |A_k|^2 of the sampled channels
+    mutable double sample_floor2_ = 0.0;     // (1e-18 of the sum of the largest |A_k|)^2
+    mutable std::vector<double> sample_pack_;  // per mode: the sampled channels' Re A_k, then Im A_k
     mutable std::vector<int> sample_live_;
     mutable bool energy_ready_ = false;
     mutable cd a_wc_a_;                        // a^T (W .* cauchy) a
