@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -27,6 +28,7 @@
 #include "model/input_error.hpp"
 #include "problem/beam_model.hpp"
 #include "statics/layer_hold.hpp"
+#include "sweep/case_paths.hpp"
 #include "support/rest_force.hpp"
 #include "support/run_command.hpp"
 #include "support/test_files.hpp"
@@ -264,6 +266,35 @@ TEST(PerforatedSections, LayerHoldTouchesTheSolidFractionOfTheLayer) {
     EXPECT_NEAR(hold.contact_from, ld, 1e-9 * ld);
     const double critical = 1.5 * mu * E * t * t * t * h * h / (solid * std::pow(l, 4));
     EXPECT_NEAR(hold.critical_work_of_adhesion, critical, 1e-9 * critical);
+}
+
+// The holes' size and pitch are paths (sweep, fit, optimisation): a value set through the path
+// gives the model of the case file that writes it; a section without holes, a misspelt part and a
+// size at or past the pitch are refused with the path and the reason.
+TEST(PerforatedSections, HoleSizeAndPitchArePaths) {
+    const Case base = base_with(holed("{ size = \"5 um\", pitch = \"10 um\" }"));
+    Case swept = base;
+    set_case_text(swept, "beam.sections[0].holes.size", "6 um");
+    set_case_text(swept, "beam.sections[0].holes.pitch", "12.5 um");
+    EXPECT_EQ(get_case_value(swept, resolve_case_path("beam.sections[0].holes.size", swept)), 6e-6);
+    EXPECT_EQ(lowest_frequency(swept), lowest_frequency(base_with(holed("{ size = \"6 um\", pitch = \"12.5 um\" }"))));
+    EXPECT_NE(lowest_frequency(swept), lowest_frequency(base));
+    EXPECT_EQ(case_path_column(resolve_case_path("beam.sections[0].holes.pitch", swept)), "beam.sections[0].holes.pitch_m");
+    const std::vector<std::string> forms = case_path_forms();
+    EXPECT_NE(std::find(forms.begin(), forms.end(), "beam.sections[i].holes.size"), forms.end());
+
+    const Case solid = base_with("[[beam.sections]]\nfrom = 0\nto = 1\n");
+    EXPECT_EQ(test::input_error_of([&] { resolve_case_path("beam.sections[0].holes.size", solid); }),
+              "beam.sections[0].holes.size: the section has no holes (give them in the case file to vary their size or "
+              "pitch)");
+    EXPECT_EQ(test::input_error_of([&] { resolve_case_path("beam.sections[0].holes.sise", base); }),
+              "unknown key 'holes.sise' in beam.sections[i] (did you mean 'holes.size'?)");
+    Case bad = base;
+    EXPECT_EQ(test::input_error_of([&] { apply_case_settings(bad, "--set", {"beam.sections[0].holes.size=10um"}); }),
+              "--set: beam.sections[0].holes.size: must be below the pitch (10 um): the holes would leave no material "
+              "between them");
+    EXPECT_EQ(test::input_error_of([&] { set_case_text(bad, "beam.sections[0].holes.pitch", "-1 um"); }),
+              "beam.sections[0].holes.pitch: must be positive");
 }
 
 // Holes are written back and read the same (TOML and JSON).
