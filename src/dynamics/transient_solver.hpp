@@ -20,11 +20,24 @@
 
 #include <functional>
 #include <string_view>
+#include <vector>
 
 #include "dynamics/transient_problem.hpp"
 #include "dynamics/transient_result.hpp"
 
 namespace vi {
+
+// What a run's stop test sees at the start of each piece of the exact solver (after a contact
+// switch or a load breakpoint).
+struct RunSoFar {
+    double t = 0.0;                                  // [s]
+    const std::vector<ContactEpisode>& episodes;     // so far, in onset order (an open one's t_off is not yet set)
+    const Extremes& extremes;                        // so far
+    bool all_open = false;                           // no contact closed, none still compressed after opening
+    // Energy of the motion about the equilibrium of the forcing now acting, 1/2 v^T M v +
+    // 1/2 (q - q_e)^T K (q - q_e) with the contacts' stiffness left out [J]; negative when the forcing varies.
+    double motion_energy = -1.0;
+};
 
 struct TransientOptions {
     // The time history at the output step. The exact solver skips sampling without it; CVODE samples
@@ -42,6 +55,10 @@ struct TransientOptions {
     // empty: none. For a long command's progress report: it must be cheap and must not throw but
     // what check_run throws.
     std::function<void(double)> progress;
+    // Exact solver only: returns true to end the run at the time it is shown (then t_end, the
+    // history and the final ledger end there); empty: the run goes to the horizon. It must be cheap
+    // and must not throw. CVODE ignores it and runs to the horizon.
+    std::function<bool(const RunSoFar&)> stop_when;
 };
 
 class TransientSolver {

@@ -154,6 +154,7 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
     run.built = build_transient_problem(c);
     TransientOptions to = transient_options(c.solver, o);
     to.field_every = o.field && o.history ? field_every(c.solver, run.built.problem.size()) : 0;
+    if (o.stop_when) to.stop_when = o.stop_when(c, run.built);
     run.result = solve_transient(c, run.built.problem, to);
     const bool at_rest = released_at_rest(run.built);
     require_first_impact(c, run, at_rest);

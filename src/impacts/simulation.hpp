@@ -33,6 +33,9 @@ struct SimulationOptions {
     bool field = false;
     // Called with the time the solver has reached [s] as it goes (TransientOptions::progress); empty: none.
     std::function<void(double)> progress;
+    // Makes the run's stop test (TransientOptions::stop_when) once the problem is built, e.g.
+    // settled_stop (impacts/settled_stop.hpp); empty, or returning an empty test: to the horizon.
+    std::function<std::function<bool(const RunSoFar&)>(const Case&, const BuiltProblem&)> stop_when;
 };
 
 // Bounds of the field output: frames (one file each) and values held in memory (8 bytes each).

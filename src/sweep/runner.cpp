@@ -6,6 +6,7 @@
 #include <mutex>
 #include <optional>
 
+#include "model/allocator_reuse.hpp"
 #include "model/parallel_for.hpp"
 #include "model/input_error.hpp"
 #include "model/case_checks.hpp"
@@ -138,6 +139,7 @@ std::size_t run_sweep_points(const Case& base, const SweepGrid& grid, const std:
         throw std::logic_error(std::string("sweep: the ") + sweep_analysis_name(settings.analysis) +
                                " analysis needs the studies' code (with_study_analyses)");
     }
+    keep_freed_memory_for_reuse();
     std::mutex done_mutex;
     std::atomic<std::size_t> reported{0};
     parallel_for(

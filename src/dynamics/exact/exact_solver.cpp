@@ -166,6 +166,8 @@ private:
     bool advance();
     [[nodiscard]] double piece_end() const;
     [[nodiscard]] bool resting(const PieceSolution& s, double piece_end);
+    // TransientOptions::stop_when asked to end the run here (t_end becomes t_).
+    [[nodiscard]] bool stop_asked(const PieceSolution& s);
     void finish_at_rest(const PieceSolution& s, double span);
     void locate_events(const PieceSolution& s, double span, const std::vector<double>& from);
     void resolve_repeated_switch(const PieceSolution& s, double span, std::vector<double>& from);
@@ -291,6 +293,15 @@ bool ExactRun::resting(const PieceSolution& s, double end) {
     if (motion < 0.0) return false;
     largest_motion_ = std::max(largest_motion_, motion);
     return firm && end == p_.t_end && motion <= kRestEnergy * largest_motion_;
+}
+
+bool ExactRun::stop_asked(const PieceSolution& s) {
+    if (!o_.stop_when) return false;
+    bool open = true;
+    for (int c = 0; c < nc_ && open; ++c) open = !active_[static_cast<std::size_t>(c)] && !s.waits_for_release(c);
+    if (!o_.stop_when(RunSoFar{t_, res_.episodes, res_.extremes, open, s.motion_energy()})) return false;
+    res_.t_end = t_;
+    return true;
 }
 
 void ExactRun::finish_at_rest(const PieceSolution& s, double span) {
@@ -433,6 +444,7 @@ bool ExactRun::advance() {
     piece_ = &s;
     res_.stats.propagation_s += seconds_since(t_piece) - (model_.decomposition_seconds() - dec_before);
     const double span = end - t_;
+    if (stop_asked(s)) return false;
     if (resting(s, end)) {
         finish_at_rest(s, span);
         return false;
@@ -470,11 +482,11 @@ void ExactRun::finish() {
         const int e = open_[static_cast<std::size_t>(c)];
         if (e < 0) continue;
         ContactEpisode& ep = res_.episodes[static_cast<std::size_t>(e)];
-        ep.t_off = p_.t_end;
+        ep.t_off = res_.t_end;
         ep.closed_at_end = true;
     }
     if (o_.energy) {
-        const PieceSolution& last = model_.piece(active_, x_, p_.t_end, p_.t_end);
+        const PieceSolution& last = model_.piece(active_, x_, res_.t_end, res_.t_end);
         res_.final_energy = last.energy_at(0.0, ledger_);
     }
     res_.stats.unproven_steps = unproven_.count;

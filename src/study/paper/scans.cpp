@@ -5,6 +5,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "impacts/settled_stop.hpp"
 #include "impacts/simulation.hpp"
 #include "fem/system.hpp"
 #include "io/text_file.hpp"
@@ -34,6 +35,9 @@ TransientPoint run_transient_point(const Case& c, double x) {
         SimulationOptions o;
         o.history = false;
         o.energy = false;
+        // The scans report T_p, the first cycle, the first three impacts and the extremes: the run
+        // ends once these are settled instead of bouncing on to the horizon.
+        o.stop_when = [](const Case& k, const BuiltProblem& b) { return settled_stop(k, b, 3); };
         const SimulationRun run = run_simulation(c, o);
         const ImpactSummary& s = run.summary;
         const double l = c.beam.length;

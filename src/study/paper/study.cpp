@@ -12,6 +12,7 @@
 #include <mutex>
 #include <stdexcept>
 
+#include "model/allocator_reuse.hpp"
 #include "model/parallel_for.hpp"
 #include "model/run_control.hpp"
 #include "study/paper/scans.hpp"
@@ -229,6 +230,7 @@ std::vector<double> scan_positions(int count, double lo) {
 
 PaperStudy run_paper_study(const PaperStudyOptions& options) {
     check_options(options);
+    keep_freed_memory_for_reuse();
     const auto t_start = Clock::now();
     PaperStudy st;
     st.options = options;

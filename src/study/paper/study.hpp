@@ -57,8 +57,8 @@ struct TransientPoint {
     std::optional<double> tau_p, tau, tau1, tau2;  // omega_1 T_p, omega_1 T, ... (first cycle)
     std::string tp_reason;           // as ImpactSummary::Tp_reason
     std::vector<ImpactBrief> impacts;  // the first three impacts (fewer if fewer happened)
-    int episodes = 0;
-    int impact_count = 0;
+    int episodes = 0;                // contact episodes and impacts up to the end of the run, which stops
+    int impact_count = 0;            // once the values above are settled (impacts/settled_stop.hpp)
     double seconds = 0.0;            // wall time of this run
     [[nodiscard]] bool ok() const { return error.empty(); }
 };
