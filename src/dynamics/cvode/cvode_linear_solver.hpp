@@ -10,6 +10,7 @@
 #include <sundials/sundials_matrix.h>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 #include <memory>
 #include <vector>
 
@@ -21,6 +22,8 @@ namespace vi::cvode_detail {
 // |D_e| x |D_e|; empty or zero: no tangent).
 struct ElementTangents {
     std::vector<Eigen::MatrixXd> dfdq, dfdv;
+    // On a nodal basis instead: their sums on the FE DOFs (n x n).
+    Eigen::SparseMatrix<double> Fq, Fv;
 };
 
 // The matrix a J + b I. J is filled by the Jacobian callback (a = 1, b = 0 then); CVODE forms

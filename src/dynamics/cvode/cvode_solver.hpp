@@ -36,6 +36,12 @@ struct CvodeOptions {
     // oscillator, its switches are found by the exact solver's certified search, and CVODE steps only
     // while something acts. Off: CVODE steps through the flights too (the cross-check).
     bool free_flight = true;
+    // The coordinates of a full model's state (reduced_modes = 0): `automatic` takes the FE DOFs
+    // from 100 DOFs up unless a flight in closed form may come (docs/model.md §13); `modal` and
+    // `nodal` force one (the cross-check of the other). A reduced model is always modal; `nodal`
+    // falls back to modal where K is singular.
+    enum class State { automatic, modal, nodal };
+    State state = State::automatic;
 };
 
 // Integrates p from 0 to p.t_end (TransientSolver's rules; max_steps counts CVODE's internal steps,
