@@ -4,7 +4,9 @@
 // the Rayleigh D of each basis vector) and each element's small tangent blocks on its DOFs. Solving
 // (b I + a J) x = r eliminates the displacements, leaving (Delta + P^T W P) x_v = ..., a diagonal
 // Delta plus a low-rank term from the elements, solved by Sherman-Morrison-Woodbury in O(r s^2) for
-// s element DOFs (or densely when s is large). Internal to the CVODE solver.
+// s element DOFs (or densely when s is large). On a nodal basis (the state in the FE DOFs) the
+// tangents are summed on the FE DOFs and the banded Newton matrix is factorised there
+// (physical_newton.hpp). Internal to the CVODE solver.
 
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>

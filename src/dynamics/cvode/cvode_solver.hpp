@@ -2,7 +2,9 @@
 // solve_cvode: the transient solver for any force element (the nonlinear path), on SUNDIALS CVODE
 // (BDF) in modal coordinates: the beam's linear part is diagonal, the elements act through the
 // basis rows of their DOFs, and the Newton matrix is solved by a structured direct solver
-// (dynamics/cvode/cvode_linear_solver.hpp) in O(r s^2) for r basis vectors and s element DOFs. Switching
+// (dynamics/cvode/cvode_linear_solver.hpp) in O(r s^2) for r basis vectors and s element DOFs. A
+// full model whose elements act on much of the beam integrates in the FE DOFs instead (O(n) a step;
+// CvodeOptions::state). Switching
 // elements (contacts) are handled by CVODE's root finding with a restart at every switch. Also the
 // independent cross-check of the exact event-driven solver.
 
