@@ -4,7 +4,9 @@
 // that must converge with m (closing time, bounces, stable contact) and the peak RSS so far (the
 // rows run coarsest first, so it is each row's own peak or an earlier one's).
 // A figure, never a pass or fail:
-//   vi_bench_cvode_mesh [--reduced N] [--full-only] [--max M] [--rtol R] [--repeat K]
+//   vi_bench_cvode_mesh [--reduced N] [--full-only] [--min M] [--max M] [--rtol R] [--repeat K] [--state auto|modal|nodal]
+// --state picks the full model's coordinates (CvodeOptions::state; the column `state` says which
+// ran: modal or the FE DOFs).
 // The runs go through the solver directly, without the case limits, so that a mesh above them can
 // be timed too.
 
@@ -48,9 +50,10 @@ struct Row {
     int bounces = 0, grouped = 0;
     long steps = 0;
     int basis = 0;
+    bool nodal = false;
 };
 
-Row run(const vi::Case& base, int elements, int reduced, double rtol, int repeat) {
+Row run(const vi::Case& base, int elements, int reduced, double rtol, int repeat, vi::CvodeOptions::State state) {
     vi::Case c = base;
     c.beam.elements = elements;
     c.solver.reduced_modes = reduced;
@@ -66,8 +69,9 @@ Row run(const vi::Case& base, int elements, int reduced, double rtol, int repeat
         const auto t0 = Clock::now();
         const double c0 = cpu_seconds();
         const vi::BuiltProblem built = vi::build_transient_problem(c);
-        const vi::TransientResult r =
-            vi::CvodeSolver(vi::cvode_options(c.solver)).solve(built.problem, vi::transient_options(c.solver, o));
+        vi::CvodeOptions co = vi::cvode_options(c.solver);
+        co.state = state;
+        const vi::TransientResult r = vi::CvodeSolver(co).solve(built.problem, vi::transient_options(c.solver, o));
         row.wall = std::min(row.wall, std::chrono::duration<double>(Clock::now() - t0).count());
         row.cpu = std::min(row.cpu, cpu_seconds() - c0);
         std::vector<vi::LedgerContact> contacts;
@@ -79,40 +83,51 @@ Row run(const vi::Case& base, int elements, int reduced, double rtol, int repeat
         row.grouped = s.grouped_bounces;
         row.steps = static_cast<long>(r.stats.steps);
         row.basis = static_cast<int>(r.stats.basis_vectors);
+        row.nodal = r.stats.nodal_state;
     }
     row.rss = peak_rss_mib();
     return row;
 }
 
 void header(const char* label) {
-    std::printf("%s\n%8s %9s %9s %8s %9s %14s %14s %8s %8s %8s %6s\n", label, "elements", "wall_s", "cpu_s", "growth",
-                "rss_MiB", "closing_us", "stable_us", "bounces", "grouped", "steps", "basis");
+    std::printf("%s\n%8s %9s %9s %8s %9s %14s %14s %8s %8s %8s %6s %6s\n", label, "elements", "wall_s", "cpu_s",
+                "growth", "rss_MiB", "closing_us", "stable_us", "bounces", "grouped", "steps", "basis", "state");
 }
 
 // The last row of `rows`, with its growth over the one before.
 void print_last(const std::vector<Row>& rows) {
     const Row& r = rows.back();
     const double growth = rows.size() > 1 ? r.cpu / rows[rows.size() - 2].cpu : NAN;
-    std::printf("%8d %9.3f %9.3f %8.2f %9.1f %14.9f %14.9f %8d %8d %8ld %6d\n", r.elements, r.wall, r.cpu, growth, r.rss,
-                r.closing * 1e6, r.stable * 1e6, r.bounces, r.grouped, r.steps, r.basis);
+    std::printf("%8d %9.3f %9.3f %8.2f %9.1f %14.9f %14.9f %8d %8d %8ld %6d %6s\n", r.elements, r.wall, r.cpu, growth,
+                r.rss, r.closing * 1e6, r.stable * 1e6, r.bounces, r.grouped, r.steps, r.basis, r.nodal ? "fe" : "modal");
     std::fflush(stdout);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    int reduced = 10, most = 400, repeat = 1;
+    int reduced = 10, least = 50, most = 400, repeat = 1;
     bool reduced_runs = true;
     double rtol = 0.0;
+    vi::CvodeOptions::State state = vi::CvodeOptions::State::automatic;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--reduced" && i + 1 < argc) reduced = std::atoi(argv[++i]);
         else if (a == "--full-only") reduced_runs = false;
         else if (a == "--max" && i + 1 < argc) most = std::atoi(argv[++i]);
+        else if (a == "--min" && i + 1 < argc) least = std::max(1, std::atoi(argv[++i]));
         else if (a == "--rtol" && i + 1 < argc) rtol = std::atof(argv[++i]);
         else if (a == "--repeat" && i + 1 < argc) repeat = std::max(1, std::atoi(argv[++i]));
-        else {
-            std::fprintf(stderr, "usage: vi_bench_cvode_mesh [--reduced N] [--full-only] [--max M] [--rtol R] [--repeat K]\n");
+        else if (a == "--state" && i + 1 < argc && std::string(argv[i + 1]) == "modal") {
+            state = vi::CvodeOptions::State::modal;
+            ++i;
+        } else if (a == "--state" && i + 1 < argc && std::string(argv[i + 1]) == "nodal") {
+            state = vi::CvodeOptions::State::nodal;
+            ++i;
+        } else if (a == "--state" && i + 1 < argc && std::string(argv[i + 1]) == "auto") {
+            ++i;
+        } else {
+            std::fprintf(stderr, "usage: vi_bench_cvode_mesh [--reduced N] [--full-only] [--min M] [--max M] [--rtol R] [--repeat K] [--state auto|modal|nodal]\n");
             return 2;
         }
     }
@@ -121,14 +136,14 @@ int main(int argc, char** argv) {
     std::printf("cantilever_switch.toml, 50 us, rtol %.0e; growth = cpu time over the previous row's\n", tol);
     std::vector<Row> full, red;
     header("full model");
-    for (int m = 50; m <= most; m *= 2) {
-        full.push_back(run(c, m, 0, tol, repeat));
+    for (int m = least; m <= most; m *= 2) {
+        full.push_back(run(c, m, 0, tol, repeat, state));
         print_last(full);
     }
     if (reduced_runs) {
         header(("reduced model, " + std::to_string(reduced) + " modes").c_str());
-        for (int m = 50; m <= most; m *= 2) {
-            red.push_back(run(c, m, reduced, tol, repeat));
+        for (int m = least; m <= most; m *= 2) {
+            red.push_back(run(c, m, reduced, tol, repeat, state));
             print_last(red);
         }
     }

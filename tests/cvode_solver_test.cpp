@@ -228,6 +228,38 @@ TEST(CvodeSolver, DampedBeamLedgerBalancesAndEpisodesAreSane) {
     for (double f : r.history.contact_force[0]) EXPECT_GE(f, -1e-12);
 }
 
+// The same two ledgers with the state in the FE DOFs (CvodeOptions::State::nodal): kinetic and
+// strain energy as quadratic forms of M and K, the Rayleigh integrand v^T C v.
+TEST(CvodeSolver, LedgersBalanceWithTheStateInTheFeDofs) {
+    CvodeOptions o;
+    o.state = CvodeOptions::State::nodal;
+    o.rtol = 1e-11;
+    const TransientResult undamped = solve_cvode(bouncing_cantilever(2, 0.0, 0.0, 0.0), {}, o);
+    ASSERT_TRUE(undamped.stats.nodal_state);
+    EXPECT_GT(undamped.episodes.size(), 20u);
+    const double e0 = total(undamped.initial_energy);
+    double worst = 0.0;
+    for (const EnergyLedger& e : undamped.history.energy) worst = std::max(worst, std::abs(total(e) - e0) / e0);
+    EXPECT_LT(worst, 1e-7);
+    EXPECT_EQ(undamped.final_energy.rayleigh_dissipated, 0.0);
+    expect_sane_episodes(undamped);
+
+    const double w1 = 7.15e5;  // about the first circular frequency of the cantilever [rad/s]
+    o.rtol = 1e-10;
+    const TransientResult damped = solve_cvode(bouncing_cantilever(10, 0.02 * w1, 0.002 / w1, 5e-6), {}, o);
+    ASSERT_TRUE(damped.stats.nodal_state);
+    EXPECT_GT(damped.episodes.size(), 20u);
+    const double d0 = total(damped.initial_energy);
+    worst = 0.0;
+    for (const EnergyLedger& e : damped.history.energy) {
+        worst = std::max(worst, std::abs(d0 - total(e) - e.rayleigh_dissipated - e.contact_dissipated) / d0);
+    }
+    EXPECT_GT(damped.final_energy.rayleigh_dissipated, 0.0);
+    EXPECT_GT(damped.final_energy.contact_dissipated, 0.0);
+    EXPECT_LT(worst, 1e-7);
+    expect_sane_episodes(damped);
+}
+
 TEST(CvodeSolver, RejectsInconsistentProblems) {
     TransientProblem p = falling_mass(0.0);
     p.watched_dof = 3;

@@ -89,6 +89,8 @@ struct SolverStats {
     int basis_vectors = 0;
     int basis_modes = 0;
     double initial_projection_error = 0.0;
+    // CVODE: the full model's state was in the FE DOFs, not modal coordinates (docs/model.md §13).
+    bool nodal_state = false;
     // CVODE: flights carried in closed form (CvodeOptions::free_flight) instead of stepped.
     int free_flights = 0;
     std::string method;            // "exact" or "cvode"

@@ -131,19 +131,6 @@ std::vector<CaseProblem> check_transient_run(const Case& c, bool history, double
                            ", docs/case-files.md, Limits): its cost grows like n^3 with n = " +
                            std::to_string(static_cast<long>(e.bending_dofs)) + " bending DOFs"});
     }
-    const bool field = !c.electrodes.empty() || (c.air && c.air->film && !c.films.empty());
-    if (c.solver.method != SolverSettings::Method::exact && field && c.solver.reduced_modes == 0 &&
-        c.beam.elements > kMaxFullModelFieldElements && c.beam.elements <= most) {
-        out.push_back({"beam.elements",
-                       std::to_string(c.beam.elements) + " elements are more than a transient on the full model takes with " +
-                           (c.electrodes.empty() ? "a squeeze film" : "an electrode") + " (at most " +
-                           std::to_string(kMaxFullModelFieldElements) +
-                           ", docs/case-files.md, Limits): with its distributed force every step carries the state "
-                           "through the dense modal basis of all " +
-                           std::to_string(static_cast<long>(e.bending_dofs)) +
-                           " bending DOFs, a cost that grows as their square; set solver.reduced_modes (e.g. 16) or use "
-                           "fewer elements"});
-    }
     const auto corners = [&](const std::string& key, const TimeFunction& g, bool exact) {
         if (g.kind != TimeFunction::Kind::table || c.solver.horizon <= 0.0) return;
         const std::size_t n = exact ? g.breakpoints(0.0, c.solver.horizon).size() : g.stops(0.0, c.solver.horizon).size();

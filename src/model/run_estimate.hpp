@@ -20,16 +20,10 @@ inline constexpr int kMaxElements = 2000;
 inline constexpr int kMaxExactElements = 400;
 // Most elements of a transient with CVODE (modal coordinates: a dense eigen solve of all n modes,
 // then O(n) per step): the paper's transient at rtol 1e-10 takes 2.6 s at m = 100, 4.7 s at 200 and
-// 8.5 s (38 MB) at 400, where roundoff in K already moves T by 7e-7.
+// 8.5 s (38 MB) at 400, where roundoff in K already moves T by 7e-7. A full model with an electrode
+// or a film integrates in the FE DOFs, O(n) per step: the switch example at m = 400 in 2.4 s of CPU
+// and 17 MiB (bench/cvode_mesh_bench.cpp; docs/electrostatics.md, "Fine meshes").
 inline constexpr int kMaxCvodeElements = 400;
-// Most elements of a CVODE transient on the full model (solver.reduced_modes = 0) with a
-// distributed force (an electrode or a squeeze film): its tangent couples every DOF it faces. The
-// Newton matrix is factorised in the FE DOFs, where it is sparse, but every step still carries its
-// state between the n modal coordinates and the DOFs (products by the dense n x n basis, O(n^2)):
-// the switch example takes 0.34 s of CPU at m = 50, 0.88 s at 100, 3.2 s at 200 and 12.7 s at 400
-// (bench/cvode_mesh_bench.cpp; docs/electrostatics.md §9); on a reduced model of 10 modes 0.38 s at
-// m = 200. Kept at 100: a film with adhesion at m = 200 ran past 100 s of CPU (the physics fuzz).
-inline constexpr int kMaxFullModelFieldElements = 100;
 // Most elements at which `pullin --dynamic` confirms its bracket on the full model with an electrode
 // (above: on its finest reduced model): its bisection runs the model tens of times.
 inline constexpr int kMaxFullModelBisectionElements = 100;

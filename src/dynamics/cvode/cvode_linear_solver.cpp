@@ -149,6 +149,18 @@ void project(Factors& f, const std::shared_ptr<const ElementTangents>& t) {
     f.projected = t;
 }
 
+// On a nodal basis: the elements' summed tangents, already on the FE DOFs, for the FE-DOF
+// factorisation (none: a zero tangent).
+void project_nodal(Factors& f, const std::shared_ptr<const ElementTangents>& t) {
+    const Eigen::Index n = f.system->problem().size();
+    if (t) {
+        f.physical->set_tangents(t->Fq, t->Fv);
+    } else {
+        f.physical->set_tangents(Eigen::SparseMatrix<double>(n, n), Eigen::SparseMatrix<double>(n, n));
+    }
+    f.projected = t;
+}
+
 int solver_setup(SUNLinearSolver S, SUNMatrix A) {
     try {
         Factors& f = factors(S);
@@ -156,6 +168,11 @@ int solver_setup(SUNLinearSolver S, SUNMatrix A) {
         const ModalSystem& sys = *f.system;
         f.a = j.a;
         f.b = j.b;
+        if (sys.nodal()) {
+            if (!j.tangents || j.tangents != f.projected) project_nodal(f, j.tangents);
+            f.last_flag = f.physical->factor(f.a, f.b) ? 0 : 1;  // singular: recoverable, CVODE retries smaller
+            return static_cast<int>(f.last_flag);
+        }
         const Eigen::VectorXd& w = sys.basis().omega;
         const Eigen::ArrayXd delta = f.b * f.b + f.a * f.a * w.array().square() - f.a * f.b * sys.rayleigh().array();
         if (!(delta.abs() > 0.0).all()) return f.last_flag = 1, 1;  // recoverable: CVODE retries smaller
@@ -181,7 +198,27 @@ int solver_setup(SUNLinearSolver S, SUNMatrix A) {
     }
 }
 
-// Rows of (b I + a J) x = rhs: b x_eta + a x_v = r_eta; b x_v + a (-w^2 x_eta + P^T Fq P x_eta -
+// x_v of the modal form, below.
+void solve_modal(Factors& f, const Eigen::Map<const Eigen::VectorXd>& r_eta, const Eigen::Map<const Eigen::VectorXd>& r_v,
+                 Eigen::VectorXd& xv) {
+    const Eigen::VectorXd& w = f.system->basis().omega;
+    Eigen::VectorXd t = f.b * r_v + f.a * w.cwiseAbs2().cwiseProduct(r_eta);
+    if (f.P.rows() == 0) {
+        xv = f.inv_delta.cwiseProduct(t);
+    } else if (f.use_physical) {
+        f.physical->solve(r_eta, r_v, xv);
+    } else if (f.use_dense) {
+        t.noalias() -= f.a * (f.PFqP * r_eta);
+        xv = f.dense.solve(t);
+    } else {
+        t.noalias() -= f.a * (f.P.transpose() * (f.Fq * (f.P * r_eta)));
+        const Eigen::VectorXd z = f.inv_delta.cwiseProduct(t);
+        const Eigen::VectorXd u = f.capacitance.solve(f.W * (f.P * z));
+        xv = z - f.inv_delta.cwiseProduct(f.P.transpose() * u);
+    }
+}
+
+// Rows of (b I + a J) x = rhs (on a nodal basis the same with eta = q and PhysicalNewton's system): b x_eta + a x_v = r_eta; b x_v + a (-w^2 x_eta + P^T Fq P x_eta -
 // D x_v + P^T Fv P x_v) = r_v; the quadratures b x_e = r_e (their Jacobian rows are left out: they
 // feed nothing back, so Newton's iteration still converges on them). With x_eta = (r_eta - a x_v) / b:
 // (Delta + P^T W P) x_v = b r_v + a w^2 r_eta - a P^T Fq P r_eta.
@@ -194,23 +231,11 @@ int solver_solve(SUNLinearSolver S, SUNMatrix, N_Vector x, N_Vector rhs, realtyp
         const double* in = N_VGetArrayPointer(rhs);
         double* out = N_VGetArrayPointer(x);
         const Eigen::Map<const Eigen::VectorXd> r_eta(in, r), r_v(in + r, r);
-        const Eigen::VectorXd& w = sys.basis().omega;
-        Eigen::VectorXd t = f.b * r_v + f.a * w.cwiseAbs2().cwiseProduct(r_eta);
         Eigen::VectorXd xv;
-        if (f.P.rows() > 0) {
-            if (f.use_physical) {
-                f.physical->solve(r_eta, r_v, xv);
-            } else if (f.use_dense) {
-                t.noalias() -= f.a * (f.PFqP * r_eta);
-                xv = f.dense.solve(t);
-            } else {
-                t.noalias() -= f.a * (f.P.transpose() * (f.Fq * (f.P * r_eta)));
-                const Eigen::VectorXd z = f.inv_delta.cwiseProduct(t);
-                const Eigen::VectorXd u = f.capacitance.solve(f.W * (f.P * z));
-                xv = z - f.inv_delta.cwiseProduct(f.P.transpose() * u);
-            }
+        if (sys.nodal()) {
+            f.physical->solve_nodal(r_eta, r_v, xv);
         } else {
-            xv = f.inv_delta.cwiseProduct(t);
+            solve_modal(f, r_eta, r_v, xv);
         }
         Eigen::Map<Eigen::VectorXd>(out, r) = (r_eta - f.a * xv) / f.b;
         Eigen::Map<Eigen::VectorXd>(out + r, r) = xv;
@@ -265,7 +290,8 @@ SUNLinearSolver structured_solver(const ModalSystem& system, SUNContext ctx) {
     // at m = 50, r = 100: 0.30 s either way), and the dense form solves the modal system exactly
     // where the other leans on phi^T M phi = I.
     constexpr int kPhysicalFrom = 150;
-    if (system.basis().full && system.basis_size() == system.problem().size() && system.basis_size() >= kPhysicalFrom) {
+    const bool full = system.basis().full && system.basis_size() == system.problem().size();
+    if (system.nodal() || (full && system.basis_size() >= kPhysicalFrom)) {
         try {
             f->physical = std::make_unique<PhysicalNewton>(system);
         } catch (...) {

@@ -4,12 +4,15 @@
 // the Rayleigh D of each basis vector) and each element's small tangent blocks on its DOFs. Solving
 // (b I + a J) x = r eliminates the displacements, leaving (Delta + P^T W P) x_v = ..., a diagonal
 // Delta plus a low-rank term from the elements, solved by Sherman-Morrison-Woodbury in O(r s^2) for
-// s element DOFs (or densely when s is large). Internal to the CVODE solver.
+// s element DOFs (or densely when s is large). On a nodal basis (the state in the FE DOFs) the
+// tangents are summed on the FE DOFs and the banded Newton matrix is factorised there
+// (physical_newton.hpp). Internal to the CVODE solver.
 
 #include <sundials/sundials_linearsolver.h>
 #include <sundials/sundials_matrix.h>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 #include <memory>
 #include <vector>
 
@@ -21,6 +24,8 @@ namespace vi::cvode_detail {
 // |D_e| x |D_e|; empty or zero: no tangent).
 struct ElementTangents {
     std::vector<Eigen::MatrixXd> dfdq, dfdv;
+    // On a nodal basis instead: their sums on the FE DOFs (n x n).
+    Eigen::SparseMatrix<double> Fq, Fv;
 };
 
 // The matrix a J + b I. J is filled by the Jacobian callback (a = 1, b = 0 then); CVODE forms

@@ -3,6 +3,8 @@
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 
+#include <Eigen/SparseCholesky>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -30,13 +32,52 @@ namespace {
 using cvode_detail::ModalSystem;
 using Clock = std::chrono::steady_clock;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
+// DOFs from which a full model's state is in the FE DOFs (nodal_state below).
+constexpr int kNodalFrom = 100;
 
 
 // True when a and b are the same instant up to a few ulps.
 bool same_time(double a, double b) { return std::abs(a - b) <= 8.0 * kEps * std::max({std::abs(a), std::abs(b), 1e-300}); }
 
+// Whether some element can be in a free mode (ForceElement::free_mode), so that a flight in closed
+// form, which needs the modal basis, may come.
+bool may_fly(const TransientProblem& p) {
+    for (const ForceElementPtr& e : p.forces) {
+        bool free = false;
+        for (int m = 0; m < e->modes() && !free; ++m) free = e->free_mode(m).has_value();
+        if (!free) return false;
+    }
+    return true;
+}
+
+// How many DOFs the elements act on together (a pad and its film share theirs).
+int element_dofs(const TransientProblem& p) {
+    std::vector<int> all;
+    for (const ForceElementPtr& e : p.forces) all.insert(all.end(), e->dofs().begin(), e->dofs().end());
+    std::sort(all.begin(), all.end());
+    return static_cast<int>(std::unique(all.begin(), all.end()) - all.begin());
+}
+
+// Whether the full model integrates its state in the FE DOFs (a nodal basis) rather than in modal
+// coordinates: from kNodalFrom DOFs up when the elements act on more than a quarter of them (an
+// electrode, a film), where a right-hand side's products by the dense modal rows of those DOFs
+// (O(n^2)) outweigh the sparse products and LDL^T solve with M (O(n)); point contacts read a few
+// rows, and the modal state is the cheaper there. Not where a flight in closed form may come (it
+// needs the modes) or K is singular (a body held by its contacts alone).
+bool nodal_state(const TransientProblem& p, const CvodeOptions& o) {
+    if (o.state == CvodeOptions::State::modal) return false;
+    if (o.state == CvodeOptions::State::automatic &&
+        (p.size() < kNodalFrom || 4 * element_dofs(p) <= p.size() || (o.free_flight && may_fly(p)))) {
+        return false;
+    }
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> k(p.K);
+    return k.info() == Eigen::Success && (k.vectorD().array() > 0.0).all();
+}
+
 ModalBasis make_basis(const TransientProblem& p, const CvodeOptions& o) {
-    if (o.reduced_modes <= 0 || o.reduced_modes >= p.size()) return full_basis(p.K, p.M);
+    if (o.reduced_modes <= 0 || o.reduced_modes >= p.size()) {
+        return nodal_state(p, o) ? nodal_basis(p.size()) : full_basis(p.K, p.M);
+    }
     std::vector<Eigen::VectorXd> loads;
     for (const ForceElementPtr& e : p.forces) {
         if (!o.static_corrections) break;
@@ -104,7 +145,12 @@ int jac_fn(realtype t, N_Vector y, N_Vector, SUNMatrix J, void* ud, N_Vector, N_
     return guarded([&] {
         cvode_detail::StructuredJacobian& j = cvode_detail::structured_content(J);
         auto tangents = std::make_shared<cvode_detail::ElementTangents>();
-        static_cast<const ModalSystem*>(ud)->tangents(t, N_VGetArrayPointer(y), tangents->dfdq, tangents->dfdv);
+        const ModalSystem& sys = *static_cast<const ModalSystem*>(ud);
+        if (sys.nodal()) {
+            sys.fe_tangents(t, N_VGetArrayPointer(y), tangents->Fq, tangents->Fv);
+        } else {
+            sys.tangents(t, N_VGetArrayPointer(y), tangents->dfdq, tangents->dfdv);
+        }
         j.tangents = std::move(tangents);
         j.a = 1.0;
         j.b = 0.0;
@@ -157,6 +203,7 @@ private:
     [[nodiscard]] std::string step_limit_message(double t) const;
     // Whether the basis's highest vector is undamped (at most 1e-3 of critical damping).
     [[nodiscard]] bool top_undamped() const;
+    [[nodiscard]] double top_frequency() const;  // the basis's highest frequency [rad/s]
     // Ends the run early when its pace of steps, sustained over the last windows, cannot reach the
     // horizon within solver.max_steps (see the definition).
     void check_pace(double t, long steps);
@@ -264,7 +311,8 @@ void Driver::record(double t, const double* y) {
     TimeHistory& h = r_.history;
     const long index = static_cast<long>(h.t.size());
     if (is_field_sample(index, o_.field_every, static_cast<long>(samples_))) {
-        const Eigen::VectorXd q = sys_.basis().phi * Eigen::Map<const Eigen::VectorXd>(y, sys_.basis().phi.cols());
+        const Eigen::Map<const Eigen::VectorXd> state(y, sys_.basis_size());
+        const Eigen::VectorXd q = sys_.nodal() ? Eigen::VectorXd(state) : Eigen::VectorXd(sys_.basis().phi * state);
         h.field_sample.push_back(static_cast<std::size_t>(index));
         h.field_q.emplace_back(q.data(), q.data() + q.size());
     }
@@ -605,15 +653,20 @@ std::string Driver::step_limit_message(double t) const {
     return m + "; raise solver.max_steps, shorten solver.horizon, or loosen solver.rtol)";
 }
 
-bool Driver::top_undamped() const {
+double Driver::top_frequency() const {
+    if (sys_.nodal()) return sys_.nodal()->top_frequency();
     const ModalBasis& b = sys_.basis();
-    const Eigen::Index top = b.omega.size() - 1;
-    return top >= 0 && b.omega[top] > 0.0 && sys_.rayleigh()[top] <= 2e-3 * b.omega[top];
+    return b.omega.size() > 0 ? b.omega[b.omega.size() - 1] : 0.0;
+}
+
+bool Driver::top_undamped() const {
+    const double w = top_frequency();
+    return w > 0.0 && p_.alpha + p_.beta * w * w <= 2e-3 * w;
 }
 
 std::string Driver::undamped_top_advice() const {
     const ModalBasis& b = sys_.basis();
-    const std::string hz = significant(b.omega[b.omega.size() - 1] / (2.0 * std::numbers::pi), 3) + " Hz";
+    const std::string hz = significant(top_frequency() / (2.0 * std::numbers::pi), 3) + " Hz";
     if (b.full) {
         return "the full model without damping keeps its highest mode (" + hz +
                ") ringing and CVODE follows it; set solver.reduced_modes (e.g. 16) or add [damping], or raise "
@@ -720,6 +773,7 @@ void Driver::finish() {
     r_.stats.method = "cvode";
     r_.stats.basis_vectors = sys_.basis_size();
     r_.stats.basis_modes = sys_.basis().modes;
+    r_.stats.nodal_state = sys_.nodal() != nullptr;
     r_.stats.initial_projection_error = sys_.initial_projection_error();
     r_.stats.steps = static_cast<int>(std::min<long>(steps_done_, std::numeric_limits<int>::max()));
     // For CVODE, "decompositions" counts the factorisations of the Newton matrix (linear solver setups).

@@ -2,7 +2,9 @@
 // solve_cvode: the transient solver for any force element (the nonlinear path), on SUNDIALS CVODE
 // (BDF) in modal coordinates: the beam's linear part is diagonal, the elements act through the
 // basis rows of their DOFs, and the Newton matrix is solved by a structured direct solver
-// (dynamics/cvode/cvode_linear_solver.hpp) in O(r s^2) for r basis vectors and s element DOFs. Switching
+// (dynamics/cvode/cvode_linear_solver.hpp) in O(r s^2) for r basis vectors and s element DOFs. A
+// full model whose elements act on much of the beam integrates in the FE DOFs instead (O(n) a step;
+// CvodeOptions::state). Switching
 // elements (contacts) are handled by CVODE's root finding with a restart at every switch. Also the
 // independent cross-check of the exact event-driven solver.
 
@@ -36,6 +38,12 @@ struct CvodeOptions {
     // oscillator, its switches are found by the exact solver's certified search, and CVODE steps only
     // while something acts. Off: CVODE steps through the flights too (the cross-check).
     bool free_flight = true;
+    // The coordinates of a full model's state (reduced_modes = 0): `automatic` takes the FE DOFs
+    // from 100 DOFs up unless a flight in closed form may come (docs/model.md §13); `modal` and
+    // `nodal` force one (the cross-check of the other). A reduced model is always modal; `nodal`
+    // falls back to modal where K is singular.
+    enum class State { automatic, modal, nodal };
+    State state = State::automatic;
 };
 
 // Integrates p from 0 to p.t_end (TransientSolver's rules; max_steps counts CVODE's internal steps,

@@ -1,6 +1,7 @@
 #include "dynamics/cvode/cvode_system.hpp"
 
 #include "dynamics/cvode/dual_product.hpp"
+#include "modal/eigen_solver.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -25,26 +26,30 @@ Eigen::MatrixXd rows_of(const Eigen::MatrixXd& phi, const std::vector<int>& dofs
 
 ModalSystem::ModalSystem(const TransientProblem& p, ModalBasis basis)
     : p_(p), basis_(std::move(basis)), r_(basis_.size()), contacts_(contact_indices(p.forces)), t_limit_(p.t_end) {
-    w2_ = basis_.omega.cwiseAbs2();
-    d_ = (p.alpha + p.beta * w2_.array()).matrix();
-    for (const ForceElementPtr& e : p.forces) rows_.push_back(rows_of(basis_.phi, e->dofs()));
+    if (basis_.nodal) {
+        nodal_ = std::make_unique<NodalLinearPart>(p.M, p.K, p.alpha, p.beta);
+    } else {
+        w2_ = basis_.omega.cwiseAbs2();
+        d_ = (p.alpha + p.beta * w2_.array()).matrix();
+        for (const ForceElementPtr& e : p.forces) rows_.push_back(rows_of(basis_.phi, e->dofs()));
+    }
     for (const ForceElementPtr& e : p.forces) films_ = films_ || e->dissipation_kind() == DissipationKind::film;
     std::vector<int> all;
     for (const ForceElementPtr& e : p.forces) all.insert(all.end(), e->dofs().begin(), e->dofs().end());
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
-    union_rows_ = rows_of(basis_.phi, all);
+    if (!nodal_) union_rows_ = rows_of(basis_.phi, all);
     union_dofs_ = all;
     for (const ForceElementPtr& e : p.forces) {
         std::vector<int> at;
         for (int d : e->dofs()) at.push_back(static_cast<int>(std::lower_bound(all.begin(), all.end(), d) - all.begin()));
         local_.push_back(std::move(at));
     }
-    uf_.resize(union_rows_.rows());
+    uf_.resize(static_cast<Eigen::Index>(all.size()));
     std::size_t largest = 0;
     for (const ForceElementPtr& e : p.forces) largest = std::max(largest, e->dofs().size());
     for (std::size_t k = 0; k < largest; ++k) identity_.push_back(static_cast<int>(k));
-    watched_row_ = basis_.phi.row(p.watched_dof);
+    if (!nodal_) watched_row_ = basis_.phi.row(p.watched_dof);
     int root = 0;
     for (const ForceElementPtr& e : p.forces) {
         switch_root_.push_back(e->modes() > 1 ? root++ : -1);
@@ -73,7 +78,18 @@ double ModalSystem::element_time(double t) const {
 void ModalSystem::gather_union(const double* y, const double* acc) const {
     // One pass over the union's rows for both (on a full basis of a fine mesh these products are
     // most of a step's work).
-    uqv_.resize(union_rows_.rows(), 2);
+    const Eigen::Index u = static_cast<Eigen::Index>(union_dofs_.size());
+    uqv_.resize(u, 2);
+    if (nodal_) {
+        if (acc) ua_.resize(u);
+        for (Eigen::Index k = 0; k < u; ++k) {
+            const int d = union_dofs_[static_cast<std::size_t>(k)];
+            uqv_(k, 0) = y[d];
+            uqv_(k, 1) = y[r_ + d];
+            if (acc) ua_[k] = acc[d];
+        }
+        return;
+    }
     dual_product(union_rows_, y, y + r_, uqv_.col(0), uqv_.col(1));
     if (acc) ua_.noalias() = union_rows_ * ConstVec(acc, r_);
 }
@@ -84,6 +100,7 @@ const ElementState& ModalSystem::union_state(int e, double t, bool acc) const {
 }
 
 const ElementState& ModalSystem::own_state(int e, double t, const double* y) const {
+    if (nodal_) return assembler_.gather(element(e), element(e).dofs(), y, y + r_, nullptr, t);
     const Eigen::MatrixXd& P = rows_[static_cast<std::size_t>(e)];
     own_q_.resize(P.rows());
     own_v_.resize(P.rows());
@@ -91,6 +108,15 @@ const ElementState& ModalSystem::own_state(int e, double t, const double* y) con
     own_v_.noalias() = P * ConstVec(y + r_, r_);
     const std::span<const int> at(identity_.data(), static_cast<std::size_t>(P.rows()));
     return assembler_.gather(element(e), at, own_q_.data(), own_v_.data(), nullptr, t);
+}
+
+void ModalSystem::apply_union_forces(Eigen::Map<Eigen::VectorXd>& acc) const {
+    if (!nodal_) {
+        acc.noalias() += union_rows_.transpose() * uf_;
+        return;
+    }
+    for (std::size_t k = 0; k < union_dofs_.size(); ++k) acc[union_dofs_[k]] += uf_[static_cast<Eigen::Index>(k)];
+    nodal_->solve_mass(acc.data());
 }
 
 double ModalSystem::add_element_forces(double te, const double* y, Eigen::Map<Eigen::VectorXd>& acc,
@@ -110,7 +136,7 @@ double ModalSystem::add_element_forces(double te, const double* y, Eigen::Map<Ei
         assembler_.scatter_force(1.0, uf_.data());
         if (work) *work += element(e).input_power(s, mode);
     }
-    acc.noalias() += union_rows_.transpose() * uf_;
+    apply_union_forces(acc);
     return dissipated;
 }
 
@@ -118,11 +144,17 @@ void ModalSystem::rhs(double t, const double* y, double* ydot) const {
     const ConstVec eta(y, r_), vel(y + r_, r_);
     Eigen::Map<Eigen::VectorXd>(ydot, r_) = vel;
     Eigen::Map<Eigen::VectorXd> acc(ydot + r_, r_);
-    acc = -w2_.cwiseProduct(eta) - d_.cwiseProduct(vel);
+    double rayleigh = 0.0;
+    if (nodal_) {
+        rayleigh = nodal_->linear_force(y, y + r_, acc.data());
+    } else {
+        acc = -w2_.cwiseProduct(eta) - d_.cwiseProduct(vel);
+        rayleigh = vel.dot(d_.cwiseProduct(vel));
+    }
     const double te = element_time(t);
     double work = 0.0, film = 0.0;
     const double dissipated = add_element_forces(te, y, acc, &work, &film);
-    ydot[rayleigh_index()] = vel.dot(d_.cwiseProduct(vel));
+    ydot[rayleigh_index()] = rayleigh;
     ydot[dissipation_index()] = dissipated;
     ydot[work_index()] = work;
     if (films_) ydot[film_dissipation_index()] = film;
@@ -137,7 +169,11 @@ void ModalSystem::rhs(double t, const double* y, double* ydot) const {
 
 void ModalSystem::acceleration(double t, const double* y, Eigen::VectorXd& acc) const {
     acc.resize(r_);
-    acc = -w2_.cwiseProduct(ConstVec(y, r_)) - d_.cwiseProduct(ConstVec(y + r_, r_));
+    if (nodal_) {
+        static_cast<void>(nodal_->linear_force(y, y + r_, acc.data()));
+    } else {
+        acc = -w2_.cwiseProduct(ConstVec(y, r_)) - d_.cwiseProduct(ConstVec(y + r_, r_));
+    }
     Eigen::Map<Eigen::VectorXd> out(acc.data(), r_);
     static_cast<void>(add_element_forces(element_time(t), y, out, nullptr, nullptr));
 }
@@ -162,10 +198,12 @@ void ModalSystem::root_functions(double t, const double* y, double* g) const {
         acceleration(t, y, acc_);
         // a only at the DOFs of the elements whose watches read it (a contact's one DOF), not on
         // the whole union: on a full basis that product is O(|U| r).
-        ua_.resize(union_rows_.rows());
+        ua_.resize(static_cast<Eigen::Index>(union_dofs_.size()));
         for (int e = 0; e < elements(); ++e) {
             if (!needs_acceleration(e)) continue;
-            for (int u : local_[static_cast<std::size_t>(e)]) ua_[u] = union_rows_.row(u).dot(acc_);
+            for (int u : local_[static_cast<std::size_t>(e)]) {
+                ua_[u] = nodal_ ? acc_[union_dofs_[static_cast<std::size_t>(u)]] : union_rows_.row(u).dot(acc_);
+            }
         }
     } else {
         gather_union(y, nullptr);
@@ -204,6 +242,33 @@ void ModalSystem::tangents(double t, const double* y, std::vector<Eigen::MatrixX
     }
 }
 
+void ModalSystem::fe_tangents(double t, const double* y, Eigen::SparseMatrix<double>& Fq,
+                              Eigen::SparseMatrix<double>& Fv) const {
+    const double te = element_time(t);
+    gather_union(y, nullptr);
+    std::vector<Eigen::Triplet<double>> tq, tv;
+    for (int e = 0; e < elements(); ++e) {
+        const std::size_t ue = static_cast<std::size_t>(e);
+        static_cast<void>(union_state(e, te, false));
+        assembler_.tangent(modes_[ue]);
+        const std::vector<int>& dofs = element(e).dofs();
+        const std::size_t m = dofs.size();
+        const std::vector<double>& dq = assembler_.dfdq();
+        const std::vector<double>& dv = assembler_.dfdv();
+        for (std::size_t a = 0; a < m; ++a) {
+            for (std::size_t b = 0; b < m; ++b) {
+                const double xq = dq[a * m + b], xv = dv[a * m + b];
+                if (xq != 0.0) tq.emplace_back(dofs[a], dofs[b], xq);
+                if (xv != 0.0) tv.emplace_back(dofs[a], dofs[b], xv);
+            }
+        }
+    }
+    Fq.resize(p_.size(), p_.size());
+    Fv.resize(p_.size(), p_.size());
+    Fq.setFromTriplets(tq.begin(), tq.end());
+    Fv.setFromTriplets(tv.begin(), tv.end());
+}
+
 double ModalSystem::switching_function(int e, int mode, double t, const double* y) const {
     return element(e).switching_function(own_state(e, element_time(t), y), mode);
 }
@@ -228,7 +293,16 @@ double ModalSystem::dissipated_power(int e, int mode, double t, const double* y)
     return element(e).dissipated_power(own_state(e, element_time(t), y), mode);
 }
 
+double ModalSystem::watched(const double* y) const {
+    return nodal_ ? y[p_.watched_dof] : watched_row_.dot(ConstVec(y, r_));
+}
+
+double ModalSystem::watched_velocity(const double* y) const {
+    return nodal_ ? y[r_ + p_.watched_dof] : watched_row_.dot(ConstVec(y + r_, r_));
+}
+
 double ModalSystem::contact_displacement(int j, const double* y) const {
+    if (nodal_) return y[element(contacts_[static_cast<std::size_t>(j)]).dofs().front()];
     const Eigen::MatrixXd& P = rows_[static_cast<std::size_t>(contacts_[static_cast<std::size_t>(j)])];
     return P.row(0).dot(ConstVec(y, r_));
 }
@@ -254,8 +328,8 @@ std::vector<int> ModalSystem::initial_modes(const double* y) const {
 EnergyLedger ModalSystem::energy(double t, const double* y, double jump) const {
     const ConstVec eta(y, r_), vel(y + r_, r_);
     EnergyLedger e;
-    e.kinetic = 0.5 * vel.squaredNorm();
-    e.strain = 0.5 * eta.dot(w2_.cwiseProduct(eta));
+    e.kinetic = nodal_ ? nodal_->kinetic(y + r_) : 0.5 * vel.squaredNorm();
+    e.strain = nodal_ ? nodal_->strain(y) : 0.5 * eta.dot(w2_.cwiseProduct(eta));
     for (int k = 0; k < elements(); ++k) {
         const double stored = stored_energy(k, modes_[static_cast<std::size_t>(k)], t, y);
         switch (element(k).stored_energy_kind()) {
@@ -273,6 +347,11 @@ EnergyLedger ModalSystem::energy(double t, const double* y, double jump) const {
 
 Eigen::VectorXd ModalSystem::initial_state() const {
     Eigen::VectorXd y = Eigen::VectorXd::Zero(size());
+    if (nodal_) {
+        y.head(r_) = p_.q0;
+        y.segment(r_, r_) = p_.v0;
+        return y;
+    }
     y.head(r_) = basis_.phi.transpose() * (p_.M * p_.q0);
     y.segment(r_, r_) = basis_.phi.transpose() * (p_.M * p_.v0);
     return y;
@@ -290,73 +369,101 @@ double ModalSystem::initial_projection_error() const {
 //  - w1: the lowest basis frequency;
 //  - length L: the largest of max|q0|, max|v0| / w1, each contact's penetration at q = 0 (its gap
 //    or prestress) and the static deflection under each prescribed force (force_scale times the
-//    flexibility sum_k phi_dk^2 / w_k^2 at its DOFs);
+//    flexibility sum_k phi_dk^2 / w_k^2 at its DOFs, (K^-1)_dd on a nodal basis);
 //  - modal displacement: L / phi_ref, phi_ref the largest |phi| of the first five vectors at the
 //    watched point and the elements' DOFs (a unit of eta moves those points by about phi_ref), or
 //    |eta0_k| where larger;
 //  - modal velocity: w1 times that, or |eta0'_k| where larger (one scale for every vector: weighting
 //    the fast ones by their own w_k, an energy norm, saves a third of the steps at equal accuracy
 //    on the paper's transient, not enough to give up the simpler rule);
-//  - energies: the larger of the initial mechanical energy and 1/2 (w1 L / phi_ref)^2;
+//  - on a nodal basis, DOF i's displacement max(|q0_i|, L) and velocity max(|v0_i|, w1 max(|q0_i|, L)):
+//    the physical scales a modal vector's tolerance is mapped from below;
+//  - energies: the larger of the initial mechanical energy and 1/2 (w1 L / phi_ref)^2 (the five
+//    lowest modes give w1 and phi_ref on a nodal basis);
 //  - impulse of contact j: its force scale (|df/dq| L + |df/dv| w1 L, from its tangent in the
 //    contact mode) over w1.
-Eigen::VectorXd ModalSystem::absolute_tolerances(double atol_scale) const {
-    const Eigen::VectorXd y0 = initial_state();
-    // The lowest nonzero basis frequency; a body held only by its contacts has none, and then the
+ModalSystem::ToleranceScales ModalSystem::tolerance_scales() const {
+    ToleranceScales sc;
+    ModeSet low;  // on a nodal basis: the five lowest modes, a modal basis's first vectors
+    if (nodal_) low = lowest_modes(p_.K, p_.M, std::min(r_, 5));
+    const Eigen::VectorXd& omega = nodal_ ? low.omega : basis_.omega;
+    // The lowest nonzero frequency; a body held only by its contacts has none, and then the
     // contact's own frequency is the scale (its stiffness over the modal mass at its DOF).
-    double w1 = 0.0;
-    for (int k = 0; k < r_; ++k) {
-        if (basis_.omega[k] > 0.0) {
-            w1 = basis_.omega[k];
+    for (Eigen::Index k = 0; k < omega.size(); ++k) {
+        if (omega[k] > 0.0) {
+            sc.w1 = omega[k];
             break;
         }
     }
-    if (!(w1 > 0.0)) {
+    if (!(sc.w1 > 0.0)) {
         for (int e : contacts_) {
             const ForceElement& el = element(e);
             assembler_.gather_rest(el);
             assembler_.tangent(el.contact_mode());
             const double flex = rows_[static_cast<std::size_t>(e)].row(0).squaredNorm();
-            w1 = std::max(w1, std::sqrt(std::abs(assembler_.dfdq()[0]) * flex));
+            sc.w1 = std::max(sc.w1, std::sqrt(std::abs(assembler_.dfdq()[0]) * flex));
         }
-        if (!(w1 > 0.0)) w1 = 1.0;
+        if (!(sc.w1 > 0.0)) sc.w1 = 1.0;
     }
-    double L = std::max(p_.q0.cwiseAbs().maxCoeff(), p_.v0.cwiseAbs().maxCoeff() / w1);
-    double phi_ref = std::abs(watched_row_.head(std::min(r_, 5)).cwiseAbs().maxCoeff());
+    const Eigen::MatrixXd& phi = nodal_ ? low.shapes : basis_.phi;
+    const Eigen::Index first = std::min<Eigen::Index>(phi.cols(), 5);
+    const auto largest_row = [&](int dof) { return phi.row(dof).head(first).cwiseAbs().maxCoeff(); };
+    double L = std::max(p_.q0.cwiseAbs().maxCoeff(), p_.v0.cwiseAbs().maxCoeff() / sc.w1);
+    double phi_ref = largest_row(p_.watched_dof);
     for (int e = 0; e < elements(); ++e) {
         const ForceElement& el = element(e);
-        const Eigen::MatrixXd& P = rows_[static_cast<std::size_t>(e)];
-        phi_ref = std::max(phi_ref, P.leftCols(std::min(r_, 5)).cwiseAbs().maxCoeff());
+        for (int d : el.dofs()) phi_ref = std::max(phi_ref, largest_row(d));
         if (el.is_contact()) L = std::max(L, std::abs(el.contact_reading(assembler_.gather_rest(el)).penetration));
         if (el.force_scale() > 0.0) {
             double flex = 0.0;  // rigid-body vectors (w = 0) have no static deflection to add
-            for (Eigen::Index i = 0; i < P.rows(); ++i) {
+            for (std::size_t i = 0; i < el.dofs().size(); ++i) {
                 double sum = 0.0;
-                for (int k = 0; k < r_; ++k) {
-                    if (w2_[k] > 0.0) sum += P(i, k) * P(i, k) / w2_[k];
+                if (nodal_) {
+                    sum = nodal_->flexibility(el.dofs()[i]);
+                } else {
+                    const Eigen::MatrixXd& P = rows_[static_cast<std::size_t>(e)];
+                    for (int k = 0; k < r_; ++k) {
+                        const Eigen::Index ik = static_cast<Eigen::Index>(i);
+                        if (w2_[k] > 0.0) sum += P(ik, k) * P(ik, k) / w2_[k];
+                    }
                 }
                 flex = std::max(flex, sum);
             }
             L = std::max(L, el.force_scale() * flex);
         }
     }
-    if (!(L > 0.0)) L = 1e-9;  // nothing moves; any small scale will do
-    if (!(phi_ref > 0.0)) phi_ref = 1.0;
-    const double eta_L = L / phi_ref;
+    sc.L = L > 0.0 ? L : 1e-9;  // nothing moves; any small scale will do
+    sc.phi_ref = phi_ref > 0.0 ? phi_ref : 1.0;
+    return sc;
+}
+
+Eigen::VectorXd ModalSystem::absolute_tolerances(double atol_scale) const {
+    const Eigen::VectorXd y0 = initial_state();
+    const ToleranceScales sc = tolerance_scales();
+    const double w1 = sc.w1, L = sc.L;
+    const double eta_L = L / sc.phi_ref;
 
     Eigen::VectorXd scale(size());
     // Each vector's tolerance is the one its error would meet in the physical DOFs: the RMS over the
     // DOFs of phi_ik / s_i, s_i = max(|q0_i|, L) (rotations too: a fast vector bends the element
-    // ends, and it is their rotation that keeps its error small).
-    Eigen::VectorXd s_phys = p_.q0.cwiseAbs().cwiseMax(L);
+    // ends, and it is their rotation that keeps its error small). A nodal basis has the s_i
+    // themselves.
+    const Eigen::VectorXd s_phys = p_.q0.cwiseAbs().cwiseMax(L);
     const double n = static_cast<double>(p_.size());
-    for (int k = 0; k < r_; ++k) {
-        const double rms = std::sqrt(basis_.phi.col(k).cwiseQuotient(s_phys).squaredNorm() / n);
-        const double eta_k = rms > 0.0 ? 1.0 / rms : eta_L;
-        scale[k] = std::max(std::abs(y0[k]), eta_k);
-        scale[r_ + k] = std::max(std::abs(y0[r_ + k]), w1 * eta_k);
+    double e0 = 0.0;
+    if (nodal_) {
+        scale.head(r_) = s_phys;
+        scale.segment(r_, r_) = p_.v0.cwiseAbs().cwiseMax(w1 * s_phys);
+        e0 = nodal_->kinetic(y0.data() + r_) + nodal_->strain(y0.data());
+    } else {
+        for (int k = 0; k < r_; ++k) {
+            const double rms = std::sqrt(basis_.phi.col(k).cwiseQuotient(s_phys).squaredNorm() / n);
+            const double eta_k = rms > 0.0 ? 1.0 / rms : eta_L;
+            scale[k] = std::max(std::abs(y0[k]), eta_k);
+            scale[r_ + k] = std::max(std::abs(y0[r_ + k]), w1 * eta_k);
+        }
+        e0 = 0.5 * y0.segment(r_, r_).squaredNorm() + 0.5 * y0.head(r_).dot(w2_.cwiseProduct(y0.head(r_)));
     }
-    const double e0 = 0.5 * y0.segment(r_, r_).squaredNorm() + 0.5 * y0.head(r_).dot(w2_.cwiseProduct(y0.head(r_)));
     const double energy = std::max(e0, 0.5 * (w1 * eta_L) * (w1 * eta_L));
     scale[rayleigh_index()] = energy;
     scale[dissipation_index()] = energy;

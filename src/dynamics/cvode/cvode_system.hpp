@@ -1,12 +1,15 @@
 #pragma once
 // ModalSystem: the first-order form CVODE integrates, in the coordinates of a ModalBasis (right-hand
-// side, the pieces of the Jacobian, root functions, element readings, energy). Internal to the CVODE
-// solver (dynamics/cvode/cvode_solver.*).
+// side, the pieces of the Jacobian, root functions, element readings, energy), modal or the FE DOFs
+// themselves (a nodal basis). Internal to the CVODE solver (dynamics/cvode/cvode_solver.*).
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
+#include <memory>
 #include <vector>
 
 #include "dynamics/cvode/modal_basis.hpp"
+#include "dynamics/cvode/nodal_linear_part.hpp"
 #include "dynamics/transient_problem.hpp"
 #include "dynamics/transient_result.hpp"
 #include "forces/force_assembly.hpp"
@@ -26,6 +29,9 @@ namespace vi::cvode_detail {
 //                ledger term of their own)
 // eta'' = -w^2 eta - D eta' + sum_e P_e^T f_e(P_e eta, P_e eta', t), P_e the basis rows of element
 // e's DOFs. The quadratures feed nothing back.
+// On a nodal basis eta = q and eta' = v over the n FE DOFs (r = n), and
+// v' = M^-1 (-K q - C v + sum_e S_e^T f_e(S_e q, S_e v, t)), S_e picking element e's DOFs; the
+// Rayleigh integrand is v^T C v.
 //
 // Root functions: per hybrid element its switching function (direction +1); per element its watch
 // functions (their own directions); then the velocities of the watched point and of the first
@@ -40,10 +46,13 @@ public:
     [[nodiscard]] const ForceElement& element(int e) const { return *p_.forces[static_cast<std::size_t>(e)]; }
     [[nodiscard]] const std::vector<int>& contacts() const { return contacts_; }  // element index per contact
     [[nodiscard]] const ModalBasis& basis() const { return basis_; }
-    [[nodiscard]] const Eigen::VectorXd& rayleigh() const { return d_; }  // alpha + beta w^2 per vector
+    // The linear part in the FE DOFs on a nodal basis; null on a modal one.
+    [[nodiscard]] const NodalLinearPart* nodal() const { return nodal_.get(); }
+    // On a modal basis only (empty on a nodal one): alpha + beta w^2 per vector, element e's basis rows.
+    [[nodiscard]] const Eigen::VectorXd& rayleigh() const { return d_; }
     [[nodiscard]] const Eigen::MatrixXd& rows(int e) const { return rows_[static_cast<std::size_t>(e)]; }
     // The union of the elements' DOFs (elements overlap: a pad and its film share every DOF): its
-    // basis rows (|U| x r), and the position in it of each of element e's DOFs.
+    // basis rows (|U| x r; modal basis only), and the position in it of each of element e's DOFs.
     [[nodiscard]] const Eigen::MatrixXd& union_rows() const { return union_rows_; }
     [[nodiscard]] const std::vector<int>& union_positions(int e) const { return local_[static_cast<std::size_t>(e)]; }
     // The FE DOF of each row of union_rows().
@@ -75,6 +84,10 @@ public:
     // d f_e / d q_e and d f_e / d v_e of every element at y (row-major |D_e| x |D_e| each).
     void tangents(double t, const double* y, std::vector<Eigen::MatrixXd>& dfdq, std::vector<Eigen::MatrixXd>& dfdv) const;
 
+    // The same summed over the elements onto their FE DOFs, as n x n sparse matrices (nodal basis:
+    // the element blocks are dense in storage but banded in content, so only their nonzeros move).
+    void fe_tangents(double t, const double* y, Eigen::SparseMatrix<double>& Fq, Eigen::SparseMatrix<double>& Fv) const;
+
     // Element e at y in mode `mode`: switching function, contact reading, stored energy.
     [[nodiscard]] double switching_function(int e, int mode, double t, const double* y) const;
     [[nodiscard]] ContactReading reading(int e, double t, const double* y) const;
@@ -89,12 +102,10 @@ public:
     [[nodiscard]] std::vector<int> initial_modes(const double* y) const;
 
     // Displacement and velocity of the watched point and of a contact's point [m], [m/s].
-    [[nodiscard]] double watched(const double* y) const { return watched_row_.dot(Eigen::Map<const Eigen::VectorXd>(y, r_)); }
-    [[nodiscard]] double watched_velocity(const double* y) const {
-        return watched_row_.dot(Eigen::Map<const Eigen::VectorXd>(y + r_, r_));
-    }
+    [[nodiscard]] double watched(const double* y) const;
+    [[nodiscard]] double watched_velocity(const double* y) const;
     [[nodiscard]] double contact_displacement(int j, const double* y) const;
-    // The basis rows of the watched point's and of contact j's displacement (1 x r).
+    // The basis rows of the watched point's and of contact j's displacement (1 x r; modal basis only).
     [[nodiscard]] const Eigen::RowVectorXd& watched_row() const { return watched_row_; }
     [[nodiscard]] Eigen::RowVectorXd contact_row(int j) const {
         return rows_[static_cast<std::size_t>(contacts_[static_cast<std::size_t>(j)])].row(0);
@@ -105,7 +116,7 @@ public:
     // switches; cvode_solver.cpp).
     [[nodiscard]] EnergyLedger energy(double t, const double* y, double jump) const;
 
-    // y at t = 0: eta = phi^T M q0, eta' = phi^T M v0.
+    // y at t = 0: eta = phi^T M q0, eta' = phi^T M v0 (q0, v0 on a nodal basis).
     [[nodiscard]] Eigen::VectorXd initial_state() const;
     // How far the basis is from the initial displacement: |q0 - phi eta0| / |q0| (0 for a full basis).
     [[nodiscard]] double initial_projection_error() const;
@@ -133,9 +144,19 @@ private:
     [[nodiscard]] bool watches_need_acceleration() const;
     // Whether element e's watch functions read the accelerations in its current mode.
     [[nodiscard]] bool needs_acceleration(int e) const;
+    // absolute_tolerances' lowest frequency w1 [rad/s], length L [m] and largest basis row phi_ref
+    // at the watched point and the elements' DOFs over the five lowest vectors [1/sqrt(kg)].
+    struct ToleranceScales {
+        double w1 = 0.0, L = 0.0, phi_ref = 1.0;
+    };
+    [[nodiscard]] ToleranceScales tolerance_scales() const;
+    // Accelerations from the summed forces: the linear part's force in `acc` on a nodal basis
+    // (-K q - C v) gets uf_ spread on the union's DOFs and is solved with M; a modal one adds P^T uf_.
+    void apply_union_forces(Eigen::Map<Eigen::VectorXd>& acc) const;
 
     const TransientProblem& p_;
     ModalBasis basis_;
+    std::unique_ptr<NodalLinearPart> nodal_;
     int r_ = 0;
     Eigen::VectorXd w2_, d_;                 // omega^2, alpha + beta omega^2
     std::vector<Eigen::MatrixXd> rows_;      // per element: basis rows of its DOFs (|D_e| x r)

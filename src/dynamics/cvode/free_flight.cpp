@@ -30,6 +30,11 @@ bool clearly_positive(const ExpSignal& f, double tau) {
 }  // namespace
 
 FreeFlight::FreeFlight(const ModalSystem& system) : sys_(system) {
+    // A nodal state has no modes to fly in.
+    if (sys_.nodal()) {
+        usable_ = false;
+        return;
+    }
     const int r = sys_.basis_size();
     const Eigen::VectorXd& w = sys_.basis().omega;
     const Eigen::VectorXd& d = sys_.rayleigh();

@@ -20,7 +20,8 @@ class FreeFlight {
 public:
     explicit FreeFlight(const ModalSystem& system);
     // False when some basis vector is within 1e-6 of critical damping (its two exponents merge and
-    // the split into them loses digits): the solver then steps through every flight.
+    // the split into them loses digits), or on a nodal basis (no modes): the solver then steps
+    // through every flight.
     [[nodiscard]] bool usable() const { return usable_; }
     // The free modes of every element in `modes`, or nullopt when one of them acts there.
     [[nodiscard]] std::optional<std::vector<FreeMode>> free_modes(const std::vector<int>& modes) const;

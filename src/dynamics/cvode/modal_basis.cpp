@@ -48,6 +48,15 @@ ModalBasis full_basis(const Eigen::SparseMatrix<double>& K, const Eigen::SparseM
     return b;
 }
 
+ModalBasis nodal_basis(int n) {
+    ModalBasis b;
+    b.modes = n;
+    b.full = true;
+    b.nodal = true;
+    b.dofs = n;
+    return b;
+}
+
 ModalBasis reduced_basis(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M, int modes,
                          const std::vector<Eigen::VectorXd>& loads, const std::vector<Eigen::VectorXd>& extra) {
     const Eigen::Index n = K.rows();

@@ -9,14 +9,20 @@
 
 namespace vi {
 
-// q = phi eta, with phi^T M phi = I and phi^T K phi = diag(omega^2).
+// q = phi eta, with phi^T M phi = I and phi^T K phi = diag(omega^2); or, `nodal`, the FE DOFs
+// themselves (phi = I, not stored; eta = q, and M, K are not diagonal in it).
 struct ModalBasis {
-    Eigen::MatrixXd phi;        // n x r [1/sqrt(kg)]
-    Eigen::VectorXd omega;      // r circular frequencies, ascending [rad/s]
+    Eigen::MatrixXd phi;        // n x r [1/sqrt(kg)]; empty when nodal
+    Eigen::VectorXd omega;      // r circular frequencies, ascending [rad/s]; empty when nodal
     int modes = 0;              // how many columns are modes of the beam (the rest: static corrections)
     bool full = true;           // every mode of (K, M): the change of coordinates is exact
-    [[nodiscard]] int size() const { return static_cast<int>(omega.size()); }
+    bool nodal = false;         // the state is in the FE DOFs (docs/model.md §13)
+    int dofs = 0;               // n, when nodal
+    [[nodiscard]] int size() const { return nodal ? dofs : static_cast<int>(omega.size()); }
 };
+
+// The FE DOFs as the coordinates of a full model of n DOFs.
+ModalBasis nodal_basis(int n);
 
 // Every bending mode: the full FE model in modal coordinates (a dense eigen solve, O(n^3)).
 ModalBasis full_basis(const Eigen::SparseMatrix<double>& K, const Eigen::SparseMatrix<double>& M);

@@ -2,6 +2,7 @@
 
 #include "dynamics/cvode/dual_product.hpp"
 
+#include <utility>
 #include <vector>
 
 namespace vi::cvode_detail {
@@ -31,6 +32,12 @@ void PhysicalNewton::set_tangents(const Eigen::MatrixXd& Fq, const Eigen::Matrix
     const Eigen::Index n = M_.rows();
     Eq_ = spread(Fq, dofs, n);
     Ev_ = spread(Fv, dofs, n);
+    pattern_ = false;
+}
+
+void PhysicalNewton::set_tangents(Eigen::SparseMatrix<double> Eq, Eigen::SparseMatrix<double> Ev) {
+    Eq_ = std::move(Eq);
+    Ev_ = std::move(Ev);
     pattern_ = false;
 }
 
@@ -76,6 +83,18 @@ void PhysicalNewton::solve(const Eigen::Ref<const Eigen::VectorXd>& r_eta, const
     z_.array() *= scale_.array();
     g_.noalias() = M_ * z_;
     xv.noalias() = sys_.basis().phi.transpose() * g_;
+}
+
+// Row 2 of (b I + a J) x = r times M: b M x_v + a (Fq - K) x_q + a (Fv - C) x_v = M r_v; with
+// x_q = (r_q - a x_v) / b and times b it is A x_v = b M r_v + a (K - Fq) r_q.
+void PhysicalNewton::solve_nodal(const Eigen::Ref<const Eigen::VectorXd>& r_q, const Eigen::Ref<const Eigen::VectorXd>& r_v,
+                                 Eigen::VectorXd& xv) {
+    g_.noalias() = b_ * (M_ * r_v);
+    g_.noalias() += a_ * (K_ * r_q);
+    if (Eq_.nonZeros() > 0) g_.noalias() -= a_ * (Eq_ * r_q);
+    g_.array() *= scale_.array();
+    xv = lu_.solve(g_);
+    xv.array() *= scale_.array();
 }
 
 }  // namespace vi::cvode_detail
