@@ -103,7 +103,8 @@ SectionSpec solver_section() {
     KeySpec& method = s.add_key(choice_key("method", {"auto", "exact", "cvode"})).otherwise(std::string("auto"));
     method.means("`\"auto\"`: the exact solver when every force is piecewise linear, CVODE otherwise; `\"exact\"`: "
                  "event-driven piecewise-linear solution (an input error naming the force when one is not piecewise "
-                 "linear); `\"cvode\"`: SUNDIALS CVODE in modal coordinates with root finding (docs/model.md §13)");
+                 "linear); `\"cvode\"`: SUNDIALS CVODE in modal coordinates (a full model with an electrode or a "
+                 "film: in the FE DOFs) with root finding (docs/model.md §13)");
     bind_choice<Settings>(method, [](Settings& x) -> Method& { return x.method; },
                           std::vector<Method>{Method::automatic, Method::exact, Method::cvode});
     // In the Case 0 stands for "not given"; written in a file, these two must be positive.
