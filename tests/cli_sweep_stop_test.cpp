@@ -47,7 +47,7 @@ constexpr std::size_t kSlow = 5;
 #if VI_SHORT_TESTS
 const std::string kSlowHorizon = "0.05";
 #else
-const std::string kSlowHorizon = "0.1";
+const std::string kSlowHorizon = "0.2";  // 0.1 ran under 2 s at times once the exact solver sped up
 #endif
 const std::vector<std::string> kGrid = {"--set", "solver.horizon=4e-5,4.5e-5,5e-5,5.5e-5,6e-5," + kSlowHorizon};
 
