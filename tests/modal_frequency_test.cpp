@@ -108,6 +108,21 @@ TEST(ModalFrequency, FrequenciesAloneMatchTheModes) {
     }
 }
 
+// The dense solution without its eigenvectors runs the same reduction and the same tridiagonal
+// iteration on the eigenvalues: every frequency equal to the last bit, pinned or free.
+TEST(ModalFrequency, DenseFrequenciesAloneAreThoseOfTheModes) {
+    for (const SupportModel model : {SupportModel::none, SupportModel::pin}) {
+        const Case c = test::paper_cantilever(50, 0.73);
+        const System s = build_system(c, model);
+        const SparseMatrix K = submatrix(s.K, s.bending);
+        const SparseMatrix M = submatrix(s.M, s.bending);
+        const Eigen::VectorXd omega = all_frequencies_dense(K, M);
+        const ModeSet modes = all_modes_dense(K, M);
+        ASSERT_EQ(omega.size(), modes.omega.size());
+        for (Eigen::Index i = 0; i < omega.size(); ++i) EXPECT_EQ(omega[i], modes.omega[i]) << "mode " << i + 1;
+    }
+}
+
 // Past m ~ 100 the discretisation error (h^4) falls below roundoff, which grows like cond(K) ~ m^4:
 // at m = 400 both solvers sit about 1e-7..1e-6 from the closed form (docs/validation.md).
 TEST(ModalFrequency, LargeMeshUsesLanczosAndAgreesWithDense) {

@@ -122,6 +122,10 @@ ModeSet all_modes_dense(const SparseMatrix& K, const SparseMatrix& M) {
     return modes;
 }
 
+Eigen::VectorXd all_frequencies_dense(const SparseMatrix& K, const SparseMatrix& M) {
+    return solve_all_modes_dense(K, M, false).omega;
+}
+
 ModeSet lowest_modes_sparse(const SparseMatrix& K, const SparseMatrix& M, int count) {
     const int n = static_cast<int>(K.rows());
     const int nev = std::clamp(count, 1, std::max(1, n - 1));

@@ -28,6 +28,10 @@ Eigen::VectorXd lowest_frequencies(const SparseMatrix& K, const SparseMatrix& M,
 // Every mode of (K, M) by a dense solver, whatever the size.
 ModeSet all_modes_dense(const SparseMatrix& K, const SparseMatrix& M);
 
+// Every circular frequency of (K, M) [rad/s], ascending, by the same dense solver without the
+// shapes: the same numbers as all_modes_dense(K, M).omega at about half its cost.
+Eigen::VectorXd all_frequencies_dense(const SparseMatrix& K, const SparseMatrix& M);
+
 // Every mode wanted by count through Spectra, whatever the size (cross-check of the dense path).
 ModeSet lowest_modes_sparse(const SparseMatrix& K, const SparseMatrix& M, int count);
 

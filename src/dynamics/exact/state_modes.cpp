@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 #include "dynamics/exact/rank_one_modes.hpp"
 #include "modal/eigen_solver.hpp"
@@ -22,6 +23,9 @@ constexpr double kResidualLimit = 1e-6;
 // Residual of a one-contact decomposition taken as roundoff: above it the other way of forming the
 // left rows is tried too (decompose_state).
 constexpr double kRoundoffResidual = 1e-13;
+// Up to this size [bytes] a one-contact state's second set of left rows is formed beside the first
+// (more only on fine meshes, where it is formed in place and the first formed again if kept).
+constexpr std::size_t kSecondRowsBytes = std::size_t{8} << 20;
 
 // Contact rows: phi_c = Phi row of the contact DOF (the modal participation at the contact point).
 Eigen::VectorXd contact_row(const BaseModes& b, const ContactElement& c) { return b.phi.row(c.dof).transpose(); }
@@ -400,21 +404,38 @@ StateModes decompose_state(const BaseModes& b, const PiecewiseLinearProblem& p, 
         RankOneRoots roots;
         if (rank_one_roots(b, p.contacts[c], roots)) {
             s.method = "rank-one";
-            // Both forms fill the same arrays (no second copy of them): the direct rows are tried
-            // in place and the Loewner rows written back when they do not improve the check.
-            auto fill = [&](LeftRows left) {
-                return rank_one_modes(b, p.contacts[c], roots, left, s) ? check_residual(b, p, s)
-                                                                        : std::numeric_limits<double>::infinity();
+            auto fill = [&](LeftRows left, StateModes& into) {
+                return rank_one_modes(b, p.contacts[c], roots, left, into) ? check_residual(b, p, into)
+                                                                           : std::numeric_limits<double>::infinity();
             };
-            s.residual = fill(LeftRows::loewner);
+            s.residual = fill(LeftRows::loewner, s);
             if (!(s.residual <= kRoundoffResidual)) {
                 const double loewner = s.residual;
-                s.residual = fill(LeftRows::direct);
-                if (!(s.residual < loewner)) {
-                    // The same roots give the same rows and the same check.
-                    s.residual = std::isfinite(loewner) && rank_one_modes(b, p.contacts[c], roots, LeftRows::loewner, s)
-                                     ? loewner
-                                     : std::numeric_limits<double>::infinity();
+                const std::size_t bytes = sizeof(double) * static_cast<std::size_t>(6 * b.n) *
+                                          static_cast<std::size_t>(roots.cand.size());
+                if (bytes <= kSecondRowsBytes) {
+                    // The direct rows beside the Loewner ones, the better kept: no third fill.
+                    StateModes direct;
+                    direct.active = s.active;
+                    direct.damping = s.damping;
+                    const double r = fill(LeftRows::direct, direct);
+                    if (r < loewner) {
+                        std::swap(s.lambda, direct.lambda);
+                        std::swap(s.paired, direct.paired);
+                        std::swap(s.vl, direct.vl);
+                        s.residual = r;
+                    }
+                } else {
+                    // A fine mesh's arrays are the largest allocation of a transient: the direct rows
+                    // are tried in place and the Loewner rows written back when they do not improve
+                    // the check.
+                    s.residual = fill(LeftRows::direct, s);
+                    if (!(s.residual < loewner)) {
+                        // The same roots give the same rows and the same check.
+                        s.residual = std::isfinite(loewner) && rank_one_modes(b, p.contacts[c], roots, LeftRows::loewner, s)
+                                         ? loewner
+                                         : std::numeric_limits<double>::infinity();
+                    }
                 }
             }
             ok = s.residual < kResidualLimit;
