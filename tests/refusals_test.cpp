@@ -217,6 +217,8 @@ TEST(RunEstimate, MemoryOfTheExampleAndItsLimits) {
     EXPECT_EQ(check_transient_run(c, false, memory_budget_bytes())[0].key, "solver.output_step");
     EXPECT_GT(memory_budget_bytes(), 0.0);
     EXPECT_LE(memory_budget_bytes(), kMemoryCap);
+    // The reading kept for a second on the thread is the one the files give now.
+    EXPECT_EQ(memory_budget_bytes(), read_memory_budget_bytes());
     EXPECT_EQ(bytes_text(1.2e13), "12 TB");
     EXPECT_EQ(bytes_text(512), "512 bytes");
 }

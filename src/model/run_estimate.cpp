@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -110,6 +111,20 @@ RunEstimate estimate_run(const Case& c) {
 }
 
 double memory_budget_bytes() {
+    // Read again at most once a second on each thread: a sweep asks at every point, and the cgroup
+    // files cost as much to open as a small point's other checks.
+    struct Reading {
+        double bytes = 0.0;
+        std::chrono::steady_clock::time_point at;
+    };
+    thread_local Reading last;
+    const auto now = std::chrono::steady_clock::now();
+    if (last.bytes > 0.0 && now - last.at < std::chrono::seconds(1)) return last.bytes;
+    last = {read_memory_budget_bytes(), now};
+    return last.bytes;
+}
+
+double read_memory_budget_bytes() {
     const long pages = sysconf(_SC_PHYS_PAGES);
     const long page = sysconf(_SC_PAGE_SIZE);
     double memory = pages > 0 && page > 0 ? static_cast<double>(pages) * static_cast<double>(page) : kMemoryCap;

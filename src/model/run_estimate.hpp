@@ -82,8 +82,10 @@ struct RunEstimate {
 RunEstimate estimate_run(const Case& c);
 
 // Memory a run may plan on [bytes]: kMemoryFraction of the physical memory (or of the cgroup's
-// limit, when lower), at most kMemoryCap.
+// limit, when lower), at most kMemoryCap. memory_budget_bytes reads it at most once a second per
+// thread (a limit changed since shows within a second); read_memory_budget_bytes reads it now.
 double memory_budget_bytes();
+double read_memory_budget_bytes();
 
 // Problems of a transient of c that this machine or double precision cannot carry out: too many
 // elements for the method, more than kMaxTimeCorners corners of a table within the horizon, a sine
