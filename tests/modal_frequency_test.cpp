@@ -123,6 +123,25 @@ TEST(ModalFrequency, DenseFrequenciesAloneAreThoseOfTheModes) {
     }
 }
 
+// The lowest few shapes formed alone (a modal scan's), the others formed later on the same
+// matrices, and every shape formed at once all give the same numbers, to the last bit.
+TEST(ModalShape, ShapesFormedInPartsAreThoseFormedAtOnce) {
+    const System s = build_system(test::paper_cantilever(50, 0.61), SupportModel::pin);
+    const SparseMatrix K = submatrix(s.K, s.bending);
+    const SparseMatrix M = submatrix(s.M, s.bending);
+    const System other = build_system(test::paper_cantilever(20));
+    const ModeSet few = lowest_modes(K, M, 3);
+    const ModeSet rest = all_modes_dense(K, M);
+    (void)lowest_modes(submatrix(other.K, other.bending), submatrix(other.M, other.bending), 2);  // another problem in between
+    const ModeSet once = all_modes_dense(K, M);
+    ASSERT_EQ(few.shapes.cols(), 3);
+    ASSERT_EQ(once.shapes.cols(), K.rows());
+    EXPECT_TRUE(few.shapes == once.shapes.leftCols(3));
+    EXPECT_TRUE(few.omega == once.omega.head(3));
+    EXPECT_TRUE(rest.shapes == once.shapes);
+    EXPECT_TRUE(rest.omega == once.omega);
+}
+
 // Past m ~ 100 the discretisation error (h^4) falls below roundoff, which grows like cond(K) ~ m^4:
 // at m = 400 both solvers sit about 1e-7..1e-6 from the closed form (docs/validation.md).
 TEST(ModalFrequency, LargeMeshUsesLanczosAndAgreesWithDense) {
