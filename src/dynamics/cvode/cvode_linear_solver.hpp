@@ -21,6 +21,8 @@ namespace vi::cvode_detail {
 // |D_e| x |D_e|; empty or zero: no tangent).
 struct ElementTangents {
     std::vector<Eigen::MatrixXd> dfdq, dfdv;
+    // The projected tangents of the elements evaluated on the basis, summed (r x r; empty: none).
+    Eigen::MatrixXd modal_q, modal_v;
 };
 
 // The matrix a J + b I. J is filled by the Jacobian callback (a = 1, b = 0 then); CVODE forms

@@ -104,7 +104,8 @@ int jac_fn(realtype t, N_Vector y, N_Vector, SUNMatrix J, void* ud, N_Vector, N_
     return guarded([&] {
         cvode_detail::StructuredJacobian& j = cvode_detail::structured_content(J);
         auto tangents = std::make_shared<cvode_detail::ElementTangents>();
-        static_cast<const ModalSystem*>(ud)->tangents(t, N_VGetArrayPointer(y), tangents->dfdq, tangents->dfdv);
+        static_cast<const ModalSystem*>(ud)->tangents(t, N_VGetArrayPointer(y), tangents->dfdq, tangents->dfdv, &tangents->modal_q,
+                                                          &tangents->modal_v);
         j.tangents = std::move(tangents);
         j.a = 1.0;
         j.b = 0.0;
