@@ -26,6 +26,7 @@
 #include "model/input_error.hpp"
 #include "problem/beam_model.hpp"
 #include "statics/static_solution.hpp"
+#include "support/rest_force.hpp"
 #include "support/test_files.hpp"
 #include "sweep/case_paths.hpp"
 #include "support/input_error_of.hpp"
@@ -211,19 +212,7 @@ TEST(BeamSections, LayerStressGradientCurlsByGammaOverE) {
 TEST(BeamSections, ElectrodeForceUsesTheWidthUnderIt) {
     const Case c = base_with(kStepped + "[[electrodes]]\nfrom = 0.2\nto = 0.9\ngap = \"2 um\"\nvoltage = \"10 V\"\n"
                                         "waveform = \"step\"\nt_on = \"0 us\"\n");
-    const BeamModel b = build_beam_model(c);
-    const ForceElement* pad = nullptr;
-    for (const auto& f : b.forces) {
-        if (f->name() == "electrodes[0]") pad = f.get();
-    }
-    ASSERT_NE(pad, nullptr);
-    const std::vector<double> q(pad->dofs().size(), 0.0);
-    std::vector<double> f(pad->dofs().size(), 0.0);
-    pad->add_force(ElementState{1e-9, q.data(), q.data(), q.data()}, 0, f.data());
-    double total = 0.0;
-    for (std::size_t i = 0; i < f.size(); ++i) {
-        if (b.is_v[static_cast<std::size_t>(pad->dofs()[i])]) total += f[i];
-    }
+    const double total = test::rest_force(build_beam_model(c), "electrodes[0]", 1e-9);
     const double l = 100e-6, area = 30e-6 * 0.2 * l + 15e-6 * 0.5 * l;
     const double expected = -8.8541878128e-12 * 100.0 / (2.0 * 2e-6 * 2e-6) * area;
     EXPECT_NEAR(total, expected, 1e-12 * std::abs(expected));

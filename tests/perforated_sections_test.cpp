@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
@@ -26,6 +27,9 @@
 #include "modal/eigen_solver.hpp"
 #include "model/input_error.hpp"
 #include "problem/beam_model.hpp"
+#include "statics/layer_hold.hpp"
+#include "sweep/case_paths.hpp"
+#include "support/rest_force.hpp"
 #include "support/run_command.hpp"
 #include "support/test_files.hpp"
 #include "support/input_error_of.hpp"
@@ -113,12 +117,7 @@ TEST(PerforatedSections, ElectrodeFacesTheSolidFractionOfItsArea) {
     const auto* pad = dynamic_cast<const ElectrostaticPad*>(named(b, "electrodes[0]"));
     ASSERT_NE(pad, nullptr);
     const std::vector<double> q(pad->dofs().size(), 0.0);
-    std::vector<double> f(pad->dofs().size(), 0.0);
-    pad->add_force(ElementState{1e-9, q.data(), q.data(), q.data()}, 0, f.data());
-    double total = 0.0;
-    for (std::size_t i = 0; i < f.size(); ++i) {
-        if (b.is_v[static_cast<std::size_t>(pad->dofs()[i])]) total += f[i];
-    }
+    const double total = test::rest_force(b, "electrodes[0]", 1e-9);
     const double l = 100e-6, g = 2e-6, area = 30e-6 * (0.75 * 0.3 * l + 0.4 * l);
     const double expected = -kEps0 * 100.0 / (2.0 * g * g) * area;
     EXPECT_NEAR(total, expected, 1e-12 * std::abs(expected));
@@ -247,6 +246,55 @@ TEST(PerforatedSections, FilmVentsThroughTheHolesOfTheSectionOverIt) {
     const double expected = solid.c * factor * 0.3 * l + solid.c * 0.4 * l;
     EXPECT_NEAR(power, expected, 1e-12 * expected);
     EXPECT_LT(factor, 0.75);
+}
+
+// A perforated cantilever (mu = 0.5, solid fraction 0.75) held on an electrode's adhesive layer: the
+// layer touches only the solid fraction of its width, so W = w w_e 0.75, and the peel balance is the
+// clamped-guided span's with mu E I: the detached length (18 mu E I h^2 / W)^(1/4) and the critical
+// work of adhesion 1.5 mu E t^3 h^2 / (0.75 l^4) (docs/adhesion.md §10).
+TEST(PerforatedSections, LayerHoldTouchesTheSolidFractionOfTheLayer) {
+    const double E = 200e9, t = 2e-6, we = 30e-6, l = 100e-6, h = 1.5e-6, w = 0.2, mu = 0.5, solid = 0.75;
+    const Case c = base_with(holed("{ size = \"5 um\", pitch = \"10 um\" }") +
+                             "[[electrodes]]\nfrom = 0.2\nto = 1.0\ngap = \"1.7 um\"\ndielectric_thickness = \"0.2 um\"\n"
+                             "work_of_adhesion = 0.2\nvoltage = \"0 V\"\n");
+    const double EI = mu * E * we * t * t * t / 12.0, W = w * we * solid;
+    EXPECT_NEAR(layer_contact_width(c, 0), solid * we, 1e-15 * we);
+    const LayerHold hold = layer_hold(c, 0);
+    ASSERT_TRUE(hold.sticks);
+    EXPECT_NEAR(hold.adhesion_energy, W, 1e-12 * W);
+    const double ld = std::pow(18.0 * EI * h * h / W, 0.25);
+    EXPECT_NEAR(hold.contact_from, ld, 1e-9 * ld);
+    const double critical = 1.5 * mu * E * t * t * t * h * h / (solid * std::pow(l, 4));
+    EXPECT_NEAR(hold.critical_work_of_adhesion, critical, 1e-9 * critical);
+}
+
+// The holes' size and pitch are paths (sweep, fit, optimisation): a value set through the path
+// gives the model of the case file that writes it; a section without holes, a misspelt part and a
+// size at or past the pitch are refused with the path and the reason.
+TEST(PerforatedSections, HoleSizeAndPitchArePaths) {
+    const Case base = base_with(holed("{ size = \"5 um\", pitch = \"10 um\" }"));
+    Case swept = base;
+    set_case_text(swept, "beam.sections[0].holes.size", "6 um");
+    set_case_text(swept, "beam.sections[0].holes.pitch", "12.5 um");
+    EXPECT_EQ(get_case_value(swept, resolve_case_path("beam.sections[0].holes.size", swept)), 6e-6);
+    EXPECT_EQ(lowest_frequency(swept), lowest_frequency(base_with(holed("{ size = \"6 um\", pitch = \"12.5 um\" }"))));
+    EXPECT_NE(lowest_frequency(swept), lowest_frequency(base));
+    EXPECT_EQ(case_path_column(resolve_case_path("beam.sections[0].holes.pitch", swept)), "beam.sections[0].holes.pitch_m");
+    const std::vector<std::string> forms = case_path_forms();
+    EXPECT_NE(std::find(forms.begin(), forms.end(), "beam.sections[i].holes.size"), forms.end());
+
+    const Case solid = base_with("[[beam.sections]]\nfrom = 0\nto = 1\n");
+    EXPECT_EQ(test::input_error_of([&] { resolve_case_path("beam.sections[0].holes.size", solid); }),
+              "beam.sections[0].holes.size: the section has no holes (give them in the case file to vary their size or "
+              "pitch)");
+    EXPECT_EQ(test::input_error_of([&] { resolve_case_path("beam.sections[0].holes.sise", base); }),
+              "unknown key 'holes.sise' in beam.sections[i] (did you mean 'holes.size'?)");
+    Case bad = base;
+    EXPECT_EQ(test::input_error_of([&] { apply_case_settings(bad, "--set", {"beam.sections[0].holes.size=10um"}); }),
+              "--set: beam.sections[0].holes.size: must be below the pitch (10 um): the holes would leave no material "
+              "between them");
+    EXPECT_EQ(test::input_error_of([&] { set_case_text(bad, "beam.sections[0].holes.pitch", "-1 um"); }),
+              "beam.sections[0].holes.pitch: must be positive");
 }
 
 // Holes are written back and read the same (TOML and JSON).

@@ -47,7 +47,8 @@ Case full_case() {
                              "[[materials]]\nname = \"b\"\nyoungs_modulus = \"80 GPa\"\ndensity = \"9000 kg/m^3\"\npoisson_ratio = 0.4\n"
                              "[[beam.sections]]\nfrom = 0\nto = 0.5\n"
                              "layers = [{ material = \"a\", thickness = \"1 um\" }, { material = \"b\", thickness = \"1 um\" }]\n"
-                             "[[beam.sections]]\nfrom = 0.5\nto = 1\nwidth = \"20 um\"\nthickness = \"1.5 um\"\n";
+                             "[[beam.sections]]\nfrom = 0.5\nto = 1\nwidth = \"20 um\"\nthickness = \"1.5 um\"\n"
+                             "holes = { size = \"2 um\", pitch = \"5 um\" }\n";
     return read_case_text(text, "full.toml");
 }
 
@@ -147,8 +148,9 @@ TEST(SweepCasePaths, EveryFormReadsBackWhatWasSet) {
     // keys beyond t_on and frequency (rise, hold, fall, level, phase, bias); since every number of the
     // schema is a path, the electrode's dielectric_modulus, work_of_adhesion, adhesion_range and
     // width, and the film's from, to and gap; the Hertz law's 13 numbers; solver.field_step.
-    // The sections' from, to, width and thickness and the materials' five numbers.
-    EXPECT_EQ(checked, 91);
+    // The sections' from, to, width, thickness, holes.size and holes.pitch and the materials' five
+    // numbers.
+    EXPECT_EQ(checked, 93);
 }
 
 TEST(SweepCasePaths, ValuesLandWhereTheCaseFileWouldPutThem) {

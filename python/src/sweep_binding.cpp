@@ -3,20 +3,18 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cstdint>
 #include <optional>
 #include <set>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "point_rows.hpp"
 #include "io/number_text.hpp"
 #include "model/input_error.hpp"
 #include "model/parallel_for.hpp"
-#include "model/run_control.hpp"
 #include "study/analyses/sweep_analyses.hpp"
 #include "sweep/columns.hpp"
 #include "sweep/grid.hpp"
@@ -85,36 +83,18 @@ py::dict sweep(const Case& base, const py::object& values, const std::string& an
     for (const SweepAxis& a : grid.axes()) {
         if (is_integer_path(a.path)) integer_columns.insert(case_path_column(a.path));
     }
-    std::vector<std::string> rows(grid.size());
-    std::vector<std::size_t> indices(grid.size());
-    for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = i;
     SweepRunInfo info;
     const auto t0 = std::chrono::steady_clock::now();
-    const PythonProgress out_progress(progress_mode, progress_interval);
-    Progress progress("sweep", "points", grid.size(), 0, out_progress.style(), out_progress.interval_s(), false,
-                      out_progress.sink());
-    run_released(
-        [&] {
-            const FinishProgress finish{progress};
-            const ProgressTicker ticker(progress);
-            run_sweep_points(
-                base, grid, indices, settings, workers,
-                [&](const SweepPointResult& r) {
-                    rows[r.index] = sweep_csv_row(r, columns.size());
-                    progress.advance();
-                    for (std::size_t c = 0; c < r.cells.size() && c < columns.size(); ++c) {
-                        if (std::holds_alternative<std::int64_t>(r.cells[c])) integer_columns.insert(columns[c].name);
-                    }
-                    ++info.points_done;
-                    if (!r.ok()) info.failures.emplace_back(r.index, r.status);
-                },
-                &stop_flag());
-        },
-        [&out_progress] { out_progress.flush(); });
+    PointRows points = run_point_rows(base, grid, settings, workers, columns, "sweep", "points", progress_mode,
+                                      progress_interval, [&info](const SweepPointResult& r) {
+                                          ++info.points_done;
+                                          if (!r.ok()) info.failures.emplace_back(r.index, r.status);
+                                      });
+    integer_columns.merge(points.integer_columns);
     info.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     std::string csv = sweep_csv_header(grid, columns) + "\n";
-    for (const std::string& row : rows) csv += row + "\n";
+    for (const std::string& row : points.rows) csv += row + "\n";
     std::sort(info.failures.begin(), info.failures.end());
     info.case_path = base.origin.file;
     info.case_name = base.name;

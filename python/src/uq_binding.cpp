@@ -4,15 +4,14 @@
 #include <optional>
 #include <set>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include <pybind11/stl.h>
 
 #include "bindings.hpp"
+#include "point_rows.hpp"
 #include "model/input_error.hpp"
 #include "model/parallel_for.hpp"
-#include "model/run_control.hpp"
 #include "study/analyses/sweep_analyses.hpp"
 #include "sweep/table.hpp"
 #include "uq/sample_design.hpp"
@@ -72,36 +71,15 @@ py::dict uq(const Case& base, const py::object& vary, const std::string& analysi
     for (const std::string& spec : specs) s.specs.push_back(parse_yield_spec(spec, numeric));
     const SampleDesign design = make_sample_design(inputs, samples, s.method, seed, sensitivity);
 
-    std::set<std::string> integer_columns;
-    std::vector<std::string> rows(design.runs());
-    std::vector<std::size_t> indices(design.runs());
-    for (std::size_t i = 0; i < indices.size(); ++i) indices[i] = i;
-    const PythonProgress out_progress(progress_mode, progress_interval);
-    Progress progress("uq", "runs", design.runs(), 0, out_progress.style(), out_progress.interval_s(), false,
-                      out_progress.sink());
-    run_released(
-        [&] {
-            const FinishProgress finish{progress};
-            const ProgressTicker ticker(progress);
-            run_sweep_points(
-                base, design.grid, indices, settings, resolve_thread_count(threads),
-                [&](const SweepPointResult& r) {
-                    rows[r.index] = sweep_csv_row(r, columns.size());
-                    progress.advance();
-                    for (std::size_t c = 0; c < r.cells.size() && c < columns.size(); ++c) {
-                        if (std::holds_alternative<std::int64_t>(r.cells[c])) integer_columns.insert(columns[c].name);
-                    }
-                },
-                &stop_flag());
-        },
-        [&out_progress] { out_progress.flush(); });
+    const PointRows points = run_point_rows(base, design.grid, settings, resolve_thread_count(threads), columns, "uq",
+                                            "runs", progress_mode, progress_interval);
     std::string csv = sweep_csv_header(design.grid, columns) + "\n";
-    for (const std::string& row : rows) csv += row + "\n";
+    for (const std::string& row : points.rows) csv += row + "\n";
     nlohmann::json j = uq_summary_json(design, uq_table_from_csv(csv, inputs.size()), s);
     j["case"] = base.origin.file;
     j["case_name"] = base.name;
     py::dict out;
-    out["table"] = csv_columns(csv, integer_columns);
+    out["table"] = csv_columns(csv, points.integer_columns);
     out["summary"] = json_value(j.dump());
     return out;
 }

@@ -15,6 +15,7 @@
 #include "model/case_schema.hpp"
 #include "model/input_error.hpp"
 #include "model/number_format.hpp"
+#include "model/section_checks.hpp"
 
 // Reading happens in two passes. The first walks the schema (model/case_schema.hpp) over the TOML
 // tree: each section's table, or each entry of its array, is read key by key into the Case through
@@ -144,9 +145,8 @@ bool read_holes(FieldReader& f, const KeySpec& k, std::size_t i, Reading& r, Cas
     if (!size || !pitch || !shape) return false;
     if (!(*size > 0.0)) r.value_problems.push_back({path + ".size", "must be positive"});
     if (!(*pitch > 0.0)) r.value_problems.push_back({path + ".pitch", "must be positive"});
-    if (*size > 0.0 && *pitch > 0.0 && !(*size < *pitch)) {
-        r.value_problems.push_back({path + ".size", "must be below the pitch (" + significant(*pitch * 1e6, 4) +
-                                                        " um): the holes would leave no material between them"});
+    if (*size > 0.0 && *pitch > 0.0) {
+        if (std::string why = holes_pitch_problem(*size, *pitch); !why.empty()) r.value_problems.push_back({path + ".size", why});
     }
     *k.holes(c, i) = Holes{*size, *pitch, *shape == "circle" ? HoleShape::circle : HoleShape::square};
     return true;

@@ -115,6 +115,23 @@ SectionSpec beam_sections_section() {
     holes.default_text = "none (solid)";
     holes.holes = [](Case& c, std::size_t i) { return &c.beam.sections[i].holes; };
     holes.is_set = [](const Case& c, std::size_t i) { return c.beam.sections[i].holes.has_value(); };
+    const KeyCondition holed = when<BeamSection>([](const BeamSection& x) { return x.holes.has_value(); }, {},
+                                                 "needs $.holes", "the section has no holes (give them in the case file "
+                                                                  "to vary their size or pitch)");
+    for (const bool size : {true, false}) {
+        KeySpec part = number_key(size ? "size" : "pitch", Dimension::length).in(positive()).only(holed);
+        part.set_refuses_out_of_range = true;
+        part.means(size ? "the holes' side (square) or diameter (circle)" : "their spacing, along and across");
+        part.get_number = [size](const Case& c, std::size_t i, std::size_t) {
+            const Holes& h = *c.beam.sections[i].holes;
+            return size ? h.size : h.pitch;
+        };
+        part.set_number = [size](Case& c, std::size_t i, std::size_t, double v) {
+            Holes& h = *c.beam.sections[i].holes;
+            (size ? h.size : h.pitch) = v;
+        };
+        holes.parts.push_back(std::move(part));
+    }
     return s;
 }
 

@@ -126,6 +126,9 @@ struct KeySpec {
     std::function<std::vector<Layer>*(Case&, std::size_t i)> layers;
     // hole_array: where the holes go.
     std::function<std::optional<Holes>*(Case&, std::size_t i)> holes;
+    // Numbers inside an inline-table key (holes.size, holes.pitch): a sweep, fit or optimisation
+    // path reaches them as "key.part"; the reader, the writer and the docs' tables go through the key.
+    std::vector<KeySpec> parts;
 
     // Fluent setters for the tables of keys.
     KeySpec& means(std::string text);

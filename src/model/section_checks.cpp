@@ -45,6 +45,11 @@ void check_cover(std::vector<CaseProblem>& out, const std::vector<BeamSection>& 
 
 }  // namespace
 
+std::string holes_pitch_problem(double size, double pitch) {
+    if (size < pitch) return "";
+    return "must be below the pitch (" + significant(pitch * 1e6, 4) + " um): the holes would leave no material between them";
+}
+
 void check_sections(std::vector<CaseProblem>& out, const Case& c) {
     check_cover(out, c.beam.sections);
     for (std::size_t i = 0; i < c.materials.size(); ++i) {
@@ -58,6 +63,13 @@ void check_sections(std::vector<CaseProblem>& out, const Case& c) {
     for (std::size_t k = 0; k < c.beam.sections.size(); ++k) {
         const BeamSection& s = c.beam.sections[k];
         const double w = s.width.value_or(c.beam.width);
+        // The reader refuses these at once; a path (sweep, fit) may set them later.
+        if (s.holes && s.holes->size > 0.0 && s.holes->pitch > 0.0) {
+            if (std::string why = holes_pitch_problem(s.holes->size, s.holes->pitch); !why.empty()) {
+                out.push_back({section_key(k, "holes.size"), std::move(why)});
+                continue;
+            }
+        }
         if (s.holes && s.holes->size > 0.0 && w > 0.0 && !(s.holes->size < w)) {
             out.push_back({section_key(k, "holes.size"), "the holes (" + significant(s.holes->size * 1e6, 4) +
                                                              " um) are as wide as the section or wider (w = " +

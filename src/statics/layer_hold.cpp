@@ -65,6 +65,14 @@ SectionResultants electrode_section(const Case& c, std::size_t k) {
     return beam_sections(c)[section_index_at(c.beam, 0.5 * (e.from + e.to))];
 }
 
+double layer_contact_width(const Case& c, std::size_t k) {
+    const Electrode& e = c.electrodes.at(k);
+    const SectionResultants under = electrode_section(c, k);
+    // Release holes take their area out of the layer's contact as out of the electrode's force
+    // (problem/electrode_elements.cpp).
+    return (e.width > 0.0 ? e.width : under.width) * under.solid_fraction;
+}
+
 std::vector<BeamSection> part_sections(const Beam& b, double s, bool from_left) {
     std::vector<BeamSection> out;
     const double l = b.length;
@@ -134,11 +142,11 @@ LayerHold layer_hold(const Case& c, std::size_t k) {
     const Electrode& e = c.electrodes[k];
     const double l = c.beam.length;
     const SectionResultants under = electrode_section(c, k);
-    const double width = e.width > 0.0 ? e.width : under.width;
+    const double contact_width = layer_contact_width(c, k);
     LayerHold h;
     h.electrode = k;
     h.air_gap = e.gap - e.dielectric_thickness;
-    h.adhesion_energy = *e.work_of_adhesion * width;
+    h.adhesion_energy = *e.work_of_adhesion * contact_width;
     const double EI = under.EI;
     h.holding_moment = std::sqrt(2.0 * EI * h.adhesion_energy);
     h.span_from = e.from * l;
@@ -157,7 +165,7 @@ LayerHold layer_hold(const Case& c, std::size_t k) {
     const double x0 = h.sticks ? h.contact_from : a, x1 = h.sticks ? h.contact_to : b;
     h.restoring_force = std::abs(left.at(x0).shear) + std::abs(right.at(x1).shear);
     if (!h.sticks) h.contact_from = h.contact_to = 0.0;
-    const double stiffness = e.dielectric_modulus * width / e.dielectric_thickness;
+    const double stiffness = e.dielectric_modulus * contact_width / e.dielectric_thickness;
     const AdhesiveLayerLaw law(stiffness, W, e.adhesion_range);
     h.even_pull_off_force = h.sticks ? law.largest_pull() * (h.contact_to - h.contact_from) : 0.0;
     // Some contact stays exactly when an x in [a, b] has both G_left(x) and G_right(x) <= W: the least
@@ -177,7 +185,7 @@ LayerHold layer_hold(const Case& c, std::size_t k) {
         }
     }
     const double x = 0.5 * (lo + hi);
-    h.critical_work_of_adhesion = std::max(left.at(x).release_rate, right.at(x).release_rate) / width;
+    h.critical_work_of_adhesion = std::max(left.at(x).release_rate, right.at(x).release_rate) / contact_width;
     return h;
 }
 

@@ -32,6 +32,10 @@ PeelRate peel_release_rate(const Case& c, EndCondition end, double s, double off
 // gives none, the EI that holds the beam flat on it).
 SectionResultants electrode_section(const Case& c, std::size_t k);
 
+// The width of electrodes[k]'s layer that the beam touches [m]: the electrode's (or the section's)
+// width times the solid fraction its release holes leave.
+double layer_contact_width(const Case& c, std::size_t k);
+
 // The sections of the part of length s [m] of beam b from its left end (or its right end, mirrored)
 // as x/s; none for a beam without sections.
 std::vector<BeamSection> part_sections(const Beam& b, double s, bool from_left);
@@ -41,7 +45,7 @@ std::vector<BeamSection> part_sections(const Beam& b, double s, bool from_left);
 struct LayerHold {
     std::size_t electrode = 0;
     double air_gap = 0.0;          // h = gap - t_d: the layer's face from the beam's rest [m]
-    double adhesion_energy = 0.0;  // W = w w_e [J/m]
+    double adhesion_energy = 0.0;  // W = w w_e, w_e the contact width [J/m]
     double holding_moment = 0.0;   // sqrt(2 E I W): the edge moment at which the beam peels [N m]
     double span_from = 0.0, span_to = 0.0;  // the layer's span [m]
     // Held flat on the layer over its whole span, the release rate at each end of the span [J/m]

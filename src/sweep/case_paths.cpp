@@ -31,9 +31,26 @@ const SectionSpec* path_section(std::string_view name) {
     return s != nullptr && has_numbers(*s) ? s : nullptr;
 }
 
+// A number key of s, or a number inside one of its inline tables ("holes.size").
 const KeySpec* path_key(const SectionSpec& s, std::string_view name) {
-    const KeySpec* k = s.key(name);
-    return k != nullptr && is_numeric(k->kind) ? k : nullptr;
+    const std::size_t dot = name.find('.');
+    const KeySpec* k = s.key(name.substr(0, dot));
+    if (k == nullptr) return nullptr;
+    if (dot == std::string_view::npos) return is_numeric(k->kind) ? k : nullptr;
+    for (const KeySpec& part : k->parts) {
+        if (part.name == name.substr(dot + 1)) return &part;
+    }
+    return nullptr;
+}
+
+// The names a path may give after s's entry: its number keys and "key.part" for the numbers inside
+// its inline tables, each with its key.
+template <class Visit>
+void for_each_path_key(const SectionSpec& s, Visit&& visit) {
+    for (const KeySpec& k : s.keys) {
+        if (is_numeric(k.kind)) visit(k.name, k);
+        for (const KeySpec& part : k.parts) visit(k.name + "." + part.name, part);
+    }
 }
 
 struct PathTarget {
@@ -58,23 +75,23 @@ std::string known_sections() {
 
 std::string known_fields(const SectionSpec& s) {
     std::string out;
-    for (const KeySpec& k : s.keys) {
-        if (is_numeric(k.kind)) out += (out.empty() ? "" : ", ") + k.name + (is_pair(k.kind) ? "[k]" : "");
-    }
+    for_each_path_key(s, [&out](const std::string& name, const KeySpec& k) {
+        out += (out.empty() ? "" : ", ") + name + (is_pair(k.kind) ? "[k]" : "");
+    });
     return out;
 }
 
 // " (did you mean 'x'?)" when name is a near misspelling of a section (section null) or of a key of
 // section; else " (accepted: ...)".
 std::string spelling_hint(std::string_view name, const SectionSpec* section) {
-    std::vector<std::string_view> candidates;
+    std::vector<std::string> names;
     if (section == nullptr) {
         for (const SectionSpec& s : case_schema().sections)
-            if (has_numbers(s)) candidates.emplace_back(s.name);
+            if (has_numbers(s)) names.push_back(s.name);
     } else {
-        for (const KeySpec& k : section->keys)
-            if (is_numeric(k.kind)) candidates.emplace_back(k.name);
+        for_each_path_key(*section, [&names](const std::string& n, const KeySpec&) { names.push_back(n); });
     }
+    const std::vector<std::string_view> candidates(names.begin(), names.end());
     if (const auto guess = closest_spelling(name, candidates)) return " (did you mean '" + *guess + "'?)";
     return " (accepted: " + (section == nullptr ? known_sections() : known_fields(*section)) + ")";
 }
@@ -166,7 +183,14 @@ CasePath resolve_case_path(std::string_view text, const Case& c) {
         throw InputError("\"" + std::string(text) + "\" is not a path like supports[0].position or beam.length");
     }
     rest.remove_prefix(1);
-    const Part field = read_part(rest, text);
+    Part field = read_part(rest, text);
+    // A number inside an inline table of the entry: "holes.size".
+    if (!field.index && rest.size() > 1 && rest.front() == '.') {
+        rest.remove_prefix(1);
+        const Part part = read_part(rest, text);
+        field.name += "." + part.name;
+        field.index = part.index;
+    }
     p.field = field.name;
     p.field_index = field.index;
     if (!rest.empty()) throw InputError("\"" + std::string(text) + "\" is not a path like supports[0].position or beam.length");
@@ -267,9 +291,9 @@ std::vector<std::pair<std::string, std::string>> case_path_form_units() {
     std::vector<std::pair<std::string, std::string>> out;
     for (const SectionSpec& s : case_schema().sections) {
         if (!has_numbers(s)) continue;
-        for (const KeySpec& k : s.keys) {
-            if (is_numeric(k.kind)) out.emplace_back(s.form() + "." + k.name + (is_pair(k.kind) ? "[k]" : ""), k.unit);
-        }
+        for_each_path_key(s, [&out, &s](const std::string& name, const KeySpec& k) {
+            out.emplace_back(s.form() + "." + name + (is_pair(k.kind) ? "[k]" : ""), k.unit);
+        });
     }
     return out;
 }

@@ -24,8 +24,8 @@ std::vector<LayerStiction> layer_stiction(const Case& c) {
         s.hold = layer_hold(c, k);
         const SectionResultants under = electrode_section(c, k);
         const double EI = under.EI;
-        const double width = e.width > 0.0 ? e.width : under.width;
-        const double stiffness = e.dielectric_modulus * width / e.dielectric_thickness;
+        const double contact_width = layer_contact_width(c, k);
+        const double stiffness = e.dielectric_modulus * contact_width / e.dielectric_thickness;
         const AdhesiveLayerLaw law(stiffness, s.hold.adhesion_energy, e.adhesion_range);
         // Laid at the law's rest on the face, toward the electrode.
         const double sign = e.side == Side::above ? 1.0 : -1.0;
@@ -43,7 +43,7 @@ std::vector<LayerStiction> layer_stiction(const Case& c) {
             s.detached_closed_form = c.beam.sections.empty()
                                          ? detached_length_closed_form(c.material.effective_modulus(), c.beam.thickness,
                                                                        s.hold.air_gap, *e.work_of_adhesion)
-                                         : detached_length_of_section(EI, under.width, s.hold.air_gap, *e.work_of_adhesion);
+                                         : detached_length_of_section(EI, contact_width, s.hold.air_gap, *e.work_of_adhesion);
             s.detached_on_layer = detached_length_on_layer(EI, s.hold.air_gap, s.hold.adhesion_energy, stiffness);
             if (s.settled_stuck) {
                 s.detached_settled = c.beam.right == EndCondition::free ? s.settled_from : c.beam.length - s.settled_to;
