@@ -457,6 +457,34 @@ const Eigen::VectorXcd& PieceSolution::sample_exponentials(double tau, double t_
     return sample_e_;
 }
 
+namespace {
+
+// acc[j] += Re(A_jk e_k) over the live modes k, from the packed amplitudes (per mode: the channels'
+// Re A, then Im A). NF > 0: that many channels, summed in registers; NF = 0: nf of them in memory.
+template <std::size_t NF>
+void accumulate_channels(const double* pack, const double* ep, const std::vector<int>& live, double* acc,
+                         std::size_t nf = NF) {
+    if constexpr (NF > 0) {
+        double sum[NF] = {};
+        for (int k : live) {
+            const double er = ep[2 * k], ei = ep[2 * k + 1];
+            const double* ar = pack + 2 * NF * static_cast<std::size_t>(k);
+            const double* ai = ar + NF;
+            for (std::size_t j = 0; j < NF; ++j) sum[j] += ar[j] * er - ai[j] * ei;
+        }
+        for (std::size_t j = 0; j < NF; ++j) acc[j] = sum[j];
+    } else {
+        for (int k : live) {
+            const double er = ep[2 * k], ei = ep[2 * k + 1];
+            const double* ar = pack + 2 * nf * static_cast<std::size_t>(k);
+            const double* ai = ar + nf;
+            for (std::size_t j = 0; j < nf; ++j) acc[j] += ar[j] * er - ai[j] * ei;
+        }
+    }
+}
+
+}  // namespace
+
 void PieceSolution::sampled_values(const std::vector<const ExpSignal*>& fs, double tau, std::vector<double>& out) const {
     const std::size_t nf = fs.size();
     const std::size_t m = static_cast<std::size_t>(sample_e_.size());
@@ -474,13 +502,11 @@ void PieceSolution::sampled_values(const std::vector<const ExpSignal*>& fs, doub
     // All channels in one pass over the live modes, real parts only: Re sum A_k e_k summed in the
     // same order as the complex sum, the same value to the last bit.
     out.assign(nf, 0.0);
-    double* acc = out.data();
     const double* ep = reinterpret_cast<const double*>(sample_e_.data());
-    for (int k : sample_live_) {
-        const double er = ep[2 * k], ei = ep[2 * k + 1];
-        const double* ar = sample_pack_.data() + 2 * nf * static_cast<std::size_t>(k);
-        const double* ai = ar + nf;
-        for (std::size_t j = 0; j < nf; ++j) acc[j] += ar[j] * er - ai[j] * ei;
+    switch (nf) {  // a fixed count keeps the sums in registers (one or two contacts)
+        case 5: accumulate_channels<5>(sample_pack_.data(), ep, sample_live_, out.data()); break;
+        case 8: accumulate_channels<8>(sample_pack_.data(), ep, sample_live_, out.data()); break;
+        default: accumulate_channels<0>(sample_pack_.data(), ep, sample_live_, out.data(), nf); break;
     }
     for (std::size_t j = 0; j < nf; ++j) {
         for (const ExpTerm& t : fs[j]->terms) out[j] += term_derivative(t, tau, 0).real();

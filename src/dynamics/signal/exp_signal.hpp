@@ -46,6 +46,8 @@ struct ExpSignal {
 inline cd fast_exp(cd z, double tau) {
     // At a piece's start every exponential is 1 (what the libm calls below return there too).
     if (tau == 0.0) return cd(1.0, 0.0);
+    // A constant term (z = 0): exp(0) = 1 exactly, without the library call.
+    if (z.real() == 0.0 && z.imag() == 0.0) return cd(1.0, 0.0);
     const double x = z.real() * tau;
     if (x < -707.0) return cd(0.0, 0.0);
     const double e = std::exp(x);
