@@ -63,6 +63,10 @@ double ExpSignal::bound(double tau, double h, int d) const {
         if (d >= 3) m = std::pow(mag2, 0.5 * d);
         b += std::sqrt(std::norm(A[k])) * m * growth;
     }
+    return terms_bound(terms, tau, h, d, b);
+}
+
+double terms_bound(const std::vector<ExpTerm>& terms, double tau, double h, int d, double b) {
     for (const ExpTerm& t : terms) {
         const double growth = std::max(std::exp(t.s.real() * tau), std::exp(t.s.real() * (tau + h)));
         const double as = std::abs(t.s);

@@ -21,6 +21,9 @@ struct ExpTerm {
 
 // d-th derivative of one particular term at tau.
 cd term_derivative(const ExpTerm& t, double tau, int d);
+// An upper bound of |d-th derivative| of a sum of particular terms over [tau, tau + h] (as
+// ExpSignal::bound sums them).
+double terms_bound(const std::vector<ExpTerm>& terms, double tau, double h, int d, double b = 0.0);
 
 struct ExpSignal {
     const Eigen::VectorXcd* lambda = nullptr;  // exponents of the homogeneous part [1/s]
