@@ -104,6 +104,13 @@ double ExpSignal::integral(double tau) const {
     return sum.real();
 }
 
+double ExpSignal::integral(double tau, const Eigen::VectorXcd& e) const {
+    cd sum = 0.0;
+    for (Eigen::Index k = 0; k < A.size(); ++k) sum += A[k] * exp_moment((*lambda)[k], 0, tau, e[k]);
+    for (const ExpTerm& t : terms) sum += t.coef * exp_moment(t.s, t.power, tau);
+    return sum.real();
+}
+
 double product_integral(const ExpSignal& f, const ExpSignal& g, double tau) {
     // Re(a) Re(b) = (a b + a conj(b)) / 2: both products are sums of exponentials.
     cd sum = 0.0;

@@ -42,6 +42,8 @@ struct ExpSignal {
     [[nodiscard]] double bound(double tau, double h, int d) const;
     // Integral of f over [0, tau].
     [[nodiscard]] double integral(double tau) const;
+    // The same given e_k = fast_exp(lambda_k, tau) already computed: the same value to the last bit.
+    [[nodiscard]] double integral(double tau, const Eigen::VectorXcd& e) const;
 };
 
 // exp(z tau) as exp(Re) (cos, sin): no complex-library call, and 0 without libm's underflow path once
