@@ -4,7 +4,8 @@
 // that must converge with m (closing time, bounces, stable contact) and the peak RSS so far (the
 // rows run coarsest first, so it is each row's own peak or an earlier one's).
 // A figure, never a pass or fail:
-//   vi_bench_cvode_mesh [--reduced N] [--full-only] [--min M] [--max M] [--rtol R] [--repeat K] [--state auto|modal|nodal]
+//   vi_bench_cvode_mesh [--reduced N] [--full-only | --reduced-only] [--min M] [--max M] [--rtol R] [--repeat K]
+//                       [--state auto|modal|nodal]
 // --state picks the full model's coordinates (CvodeOptions::state; the column `state` says which
 // ran: modal or the FE DOFs).
 // The runs go through the solver directly, without the case limits, so that a mesh above them can
@@ -107,13 +108,14 @@ void print_last(const std::vector<Row>& rows) {
 
 int main(int argc, char** argv) {
     int reduced = 10, least = 50, most = 400, repeat = 1;
-    bool reduced_runs = true;
+    bool reduced_runs = true, full_runs = true;
     double rtol = 0.0;
     vi::CvodeOptions::State state = vi::CvodeOptions::State::automatic;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--reduced" && i + 1 < argc) reduced = std::atoi(argv[++i]);
         else if (a == "--full-only") reduced_runs = false;
+        else if (a == "--reduced-only") full_runs = false;
         else if (a == "--max" && i + 1 < argc) most = std::atoi(argv[++i]);
         else if (a == "--min" && i + 1 < argc) least = std::max(1, std::atoi(argv[++i]));
         else if (a == "--rtol" && i + 1 < argc) rtol = std::atof(argv[++i]);
@@ -127,7 +129,8 @@ int main(int argc, char** argv) {
         } else if (a == "--state" && i + 1 < argc && std::string(argv[i + 1]) == "auto") {
             ++i;
         } else {
-            std::fprintf(stderr, "usage: vi_bench_cvode_mesh [--reduced N] [--full-only] [--min M] [--max M] [--rtol R] [--repeat K] [--state auto|modal|nodal]\n");
+            std::fprintf(stderr, "usage: vi_bench_cvode_mesh [--reduced N] [--full-only | --reduced-only] [--min M] [--max M] [--rtol R] "
+                                 "[--repeat K] [--state auto|modal|nodal]\n");
             return 2;
         }
     }
@@ -135,10 +138,12 @@ int main(int argc, char** argv) {
     const double tol = rtol > 0.0 ? rtol : c.solver.rtol;
     std::printf("cantilever_switch.toml, 50 us, rtol %.0e; growth = cpu time over the previous row's\n", tol);
     std::vector<Row> full, red;
-    header("full model");
-    for (int m = least; m <= most; m *= 2) {
-        full.push_back(run(c, m, 0, tol, repeat, state));
-        print_last(full);
+    if (full_runs) {
+        header("full model");
+        for (int m = least; m <= most; m *= 2) {
+            full.push_back(run(c, m, 0, tol, repeat, state));
+            print_last(full);
+        }
     }
     if (reduced_runs) {
         header(("reduced model, " + std::to_string(reduced) + " modes").c_str());

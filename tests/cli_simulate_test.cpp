@@ -420,5 +420,23 @@ TEST(CliSimulateHelp, MentionsOut) {
     EXPECT_NE(r.out.find("--json"), std::string::npos) << r.out;
 }
 
+TEST(CliSimulateCvodeState, SummarySaysWhichCoordinatesCvodeIntegrated) {
+    const std::string kSwitch = test::source_path("examples/switch/cantilever_switch.toml");
+    const auto state_of = [&](const std::string& reduced_modes) {
+        const auto r = test::run_vibroimpact({"simulate", kSwitch, "--json", "--set", "solver.horizon=2 us", "--set",
+                                              "solver.reduced_modes=" + reduced_modes});
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        const json j = json::parse(r.out);
+        EXPECT_EQ(j["solver"]["method"], "cvode");
+        return j["solver"]["state"];
+    };
+    // The electrode covers most of the beam: the full model runs in the FE DOFs, a reduced one in its modes.
+    EXPECT_EQ(state_of("0"), "fe_dofs");
+    EXPECT_EQ(state_of("8"), "modal");
+    const auto exact = test::run_vibroimpact({"simulate", test::source_path("examples/paper/free_impact_tip.toml"), "--json"});
+    ASSERT_EQ(exact.exit_code, 0) << exact.err;
+    EXPECT_FALSE(json::parse(exact.out)["solver"].contains("state"));
+}
+
 }  // namespace
 }  // namespace vi

@@ -149,13 +149,18 @@ double ElectrostaticPad::force_scale() const {
 }
 
 ElectrostaticPad::Narrowest ElectrostaticPad::narrowest(const double* q) const {
-    Narrowest out{std::numeric_limits<double>::infinity(), 0.0};
-    const PadGeometry& g = geometry_;
-    for (const PadPoint& p : points_) {
-        const double air = electrical_gap(p, q) - g.dielectric_thickness / g.dielectric_permittivity;
-        if (air < out.air_gap) out = {air, p.x};
+    // The smallest g_e, then its air gap (subtracting the layer keeps the order).
+    double least = std::numeric_limits<double>::infinity();
+    double x = 0.0;
+    for (const PointRun& r : runs_) {
+        const std::array<double, 4> qe = run_dofs(r, q);
+        for (std::size_t k = r.begin; k < r.end; ++k) {
+            const double ge = run_gap(points_[k], qe);
+            if (ge < least) least = ge, x = points_[k].x;
+        }
     }
-    return out;
+    const PadGeometry& g = geometry_;
+    return {least - g.dielectric_thickness / g.dielectric_permittivity, x};
 }
 
 std::vector<double> ElectrostaticPad::mean_travel_row() const {

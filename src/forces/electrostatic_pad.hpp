@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -149,6 +150,9 @@ public:
     // A line load over the span that is constant, linear and quadratic in x: the shapes the force
     // takes as the gap closes unevenly, for a reduced-order model's static corrections.
     [[nodiscard]] std::vector<std::vector<double>> load_patterns() const override;
+    // On a basis: the basis' values at the quadrature points, kept, so that a force costs two
+    // products of that Nq x r matrix and a tangent one weighted product (electrostatic_pad_reduced.cpp).
+    [[nodiscard]] std::unique_ptr<const ReducedElement> reduced(const BasisRows& rows) const override;
 
     // V(t) [V].
     [[nodiscard]] double voltage(double t) const { return voltage_ * time_(t); }
@@ -165,6 +169,8 @@ public:
     [[nodiscard]] const PadGeometry& geometry() const { return geometry_; }
 
 private:
+    friend class ReducedPad;
+
     // g_e at point k; inline, as it runs at every quadrature point of every right-hand side.
     [[nodiscard]] double electrical_gap(const PadPoint& p, const double* q) const {
         return rest_gap_ - geometry_.sign * point_displacement(p, q);

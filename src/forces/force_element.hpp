@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "forces/linear_form.hpp"
+#include "forces/reduced_element.hpp"
 #include "model/time_function.hpp"
 
 namespace vi {
@@ -157,6 +158,14 @@ public:
     // Times in (t0, t1) where an integrator must stop for its prescribed force (a step's jump, a
     // table's corners: TimeFunction::stops), ascending.
     [[nodiscard]] virtual std::vector<double> time_stops(double /*t0*/, double /*t1*/) const { return {}; }
+
+    // The element evaluated directly on the basis rows P of its DOFs (forces/reduced_element.hpp), or
+    // null: a reduced-order model then projects the element's own force and tangent. Worth offering
+    // where the element's work grows with its DOFs while the model has few coordinates (an electrode
+    // over a fine mesh); only for an element that is not a contact and has no watch functions.
+    [[nodiscard]] virtual std::unique_ptr<const ReducedElement> reduced(const BasisRows& /*rows*/) const {
+        return nullptr;
+    }
 
     // The element as the exact solver needs it, or nullopt when its force is not piecewise linear.
     [[nodiscard]] virtual std::optional<LinearForm> linear_form() const { return std::nullopt; }

@@ -258,6 +258,8 @@ nlohmann::json transient_summary_json(const Case& c, const BuiltProblem& b, cons
         j["solver"]["tangencies"] = r.stats.tangencies;
         if (r.stats.at_rest_from >= 0.0) j["solver"]["at_rest_from_s"] = r.stats.at_rest_from;
     } else {
+        // Which coordinates CVODE integrated: the answers of the two agree to its tolerance, not bit for bit.
+        j["solver"]["state"] = r.stats.nodal_state ? "fe_dofs" : "modal";
         j["solver"]["basis_vectors"] = r.stats.basis_vectors;
         j["solver"]["basis_modes"] = r.stats.basis_modes;
         j["solver"]["initial_projection_error"] = r.stats.initial_projection_error;

@@ -127,7 +127,9 @@ void project(Factors& f, const std::shared_ptr<const ElementTangents>& t) {
             }
         }
     }
-    f.use_dense = s > r / 4;
+    // Elements on the basis give their tangents already projected: r x r, dense.
+    const bool modal = t && (nonzero(t->modal_q) || nonzero(t->modal_v));
+    f.use_dense = s > r / 4 || modal;
     // The FE-DOF form pays while the tangents are banded (pads and films couple the DOFs of one
     // element, at most 6 per row); a dense tangent (mid-plane stretching couples every DOF) would
     // fill its sparse factors, and the dense modal form is then the faster one.
@@ -145,6 +147,10 @@ void project(Factors& f, const std::shared_ptr<const ElementTangents>& t) {
         const Eigen::MatrixXd FqP = Fqs * f.P, FvP = Fvs * f.P;
         f.PFqP.noalias() = f.P.transpose() * FqP;
         f.PFvP.noalias() = f.P.transpose() * FvP;
+        if (modal) {
+            f.PFqP += t->modal_q;
+            f.PFvP += t->modal_v;
+        }
     }
     f.projected = t;
 }
@@ -203,7 +209,7 @@ void solve_modal(Factors& f, const Eigen::Map<const Eigen::VectorXd>& r_eta, con
                  Eigen::VectorXd& xv) {
     const Eigen::VectorXd& w = f.system->basis().omega;
     Eigen::VectorXd t = f.b * r_v + f.a * w.cwiseAbs2().cwiseProduct(r_eta);
-    if (f.P.rows() == 0) {
+    if (f.P.rows() == 0 && !f.use_dense) {  // no tangent at all (elements on the basis make it dense)
         xv = f.inv_delta.cwiseProduct(t);
     } else if (f.use_physical) {
         f.physical->solve(r_eta, r_v, xv);

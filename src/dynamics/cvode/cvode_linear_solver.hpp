@@ -24,6 +24,8 @@ namespace vi::cvode_detail {
 // |D_e| x |D_e|; empty or zero: no tangent).
 struct ElementTangents {
     std::vector<Eigen::MatrixXd> dfdq, dfdv;
+    // The projected tangents of the elements evaluated on the basis, summed (r x r; empty: none).
+    Eigen::MatrixXd modal_q, modal_v;
     // On a nodal basis instead: their sums on the FE DOFs (n x n).
     Eigen::SparseMatrix<double> Fq, Fv;
 };

@@ -149,7 +149,7 @@ int jac_fn(realtype t, N_Vector y, N_Vector, SUNMatrix J, void* ud, N_Vector, N_
         if (sys.nodal()) {
             sys.fe_tangents(t, N_VGetArrayPointer(y), tangents->Fq, tangents->Fv);
         } else {
-            sys.tangents(t, N_VGetArrayPointer(y), tangents->dfdq, tangents->dfdv);
+            sys.tangents(t, N_VGetArrayPointer(y), tangents->dfdq, tangents->dfdv, &tangents->modal_q, &tangents->modal_v);
         }
         j.tangents = std::move(tangents);
         j.a = 1.0;

@@ -34,15 +34,29 @@ ModalSystem::ModalSystem(const TransientProblem& p, ModalBasis basis)
         for (const ForceElementPtr& e : p.forces) rows_.push_back(rows_of(basis_.phi, e->dofs()));
     }
     for (const ForceElementPtr& e : p.forces) films_ = films_ || e->dissipation_kind() == DissipationKind::film;
+    // On a full basis the union's rows cost what the element's own evaluation does; on a few modes
+    // an element over many DOFs is cheaper on the basis (ForceElement::reduced).
+    reduced_.resize(p.forces.size());
+    for (std::size_t e = 0; e < p.forces.size() && !basis_.full; ++e) {
+        const ForceElement& el = *p.forces[e];
+        if (el.is_contact() || el.watch_count() > 0) continue;
+        reduced_[e] = el.reduced(BasisRows{rows_[e].data(), static_cast<std::size_t>(rows_[e].rows()),
+                                           static_cast<std::size_t>(r_)});
+    }
     std::vector<int> all;
-    for (const ForceElementPtr& e : p.forces) all.insert(all.end(), e->dofs().begin(), e->dofs().end());
+    for (std::size_t e = 0; e < p.forces.size(); ++e) {
+        if (!reduced_[e]) all.insert(all.end(), p.forces[e]->dofs().begin(), p.forces[e]->dofs().end());
+    }
     std::sort(all.begin(), all.end());
     all.erase(std::unique(all.begin(), all.end()), all.end());
     if (!nodal_) union_rows_ = rows_of(basis_.phi, all);
     union_dofs_ = all;
-    for (const ForceElementPtr& e : p.forces) {
+    for (std::size_t e = 0; e < p.forces.size(); ++e) {
         std::vector<int> at;
-        for (int d : e->dofs()) at.push_back(static_cast<int>(std::lower_bound(all.begin(), all.end(), d) - all.begin()));
+        if (!reduced_[e]) {
+            for (int d : p.forces[e]->dofs())
+                at.push_back(static_cast<int>(std::lower_bound(all.begin(), all.end(), d) - all.begin()));
+        }
         local_.push_back(std::move(at));
     }
     uf_.resize(static_cast<Eigen::Index>(all.size()));
@@ -124,17 +138,25 @@ double ModalSystem::add_element_forces(double te, const double* y, Eigen::Map<Ei
     double dissipated = 0.0;
     gather_union(y, nullptr);
     uf_.setZero();
+    const ReducedState rs{te, y, y + r_};
     for (int e = 0; e < elements(); ++e) {
-        const ElementState& s = union_state(e, te, false);
         const int mode = modes_[static_cast<std::size_t>(e)];
-        const double power = assembler_.force_and_power(mode);
+        const ReducedElement* on_basis = reduced_[static_cast<std::size_t>(e)].get();
+        double power = 0.0;
+        if (on_basis) {
+            power = on_basis->add_force_and_power(rs, mode, acc.data());
+            if (work) *work += on_basis->input_power(rs, mode);
+        } else {
+            const ElementState& s = union_state(e, te, false);
+            power = assembler_.force_and_power(mode);
+            assembler_.scatter_force(1.0, uf_.data());
+            if (work) *work += element(e).input_power(s, mode);
+        }
         if (element(e).dissipation_kind() != DissipationKind::film) {
             dissipated += power;
         } else if (film) {
             *film += power;
         }
-        assembler_.scatter_force(1.0, uf_.data());
-        if (work) *work += element(e).input_power(s, mode);
     }
     apply_union_forces(acc);
     return dissipated;
@@ -212,6 +234,11 @@ void ModalSystem::root_functions(double t, const double* y, double* g) const {
         const ForceElement& el = element(e);
         const std::size_t ue = static_cast<std::size_t>(e);
         if (switch_root_[ue] < 0 && el.watch_count() == 0) continue;
+        if (reduced_[ue]) {
+            // No watches: an element on the basis has none (ForceElement::reduced).
+            g[switch_root_[ue]] = reduced_[ue]->switching_function(ReducedState{te, y, y + r_}, modes_[ue]);
+            continue;
+        }
         const ElementState& s = union_state(e, te, need && needs_acceleration(e));
         if (switch_root_[ue] >= 0) g[switch_root_[ue]] = el.switching_function(s, modes_[ue]);
         if (el.watch_count() > 0) el.watch_functions(s, modes_[ue], g + watch_root_[ue]);
@@ -225,21 +252,35 @@ void ModalSystem::root_functions(double t, const double* y, double* g) const {
 }
 
 void ModalSystem::tangents(double t, const double* y, std::vector<Eigen::MatrixXd>& dfdq,
-                           std::vector<Eigen::MatrixXd>& dfdv) const {
+                           std::vector<Eigen::MatrixXd>& dfdv, Eigen::MatrixXd* modal_q, Eigen::MatrixXd* modal_v) const {
     const double te = element_time(t);
     dfdq.resize(p_.forces.size());
     dfdv.resize(p_.forces.size());
     gather_union(y, nullptr);
     // Row-major blocks as the elements write them; Eigen's default is column-major.
     using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+    RowMajor on_basis_q, on_basis_v;
     for (int e = 0; e < elements(); ++e) {
         const std::size_t ue = static_cast<std::size_t>(e);
+        if (reduced_[ue]) {
+            if (!modal_q || !modal_v) throw std::logic_error("ModalSystem::tangents: an element on the basis needs the modal sums");
+            if (on_basis_q.size() == 0) {
+                on_basis_q = RowMajor::Zero(r_, r_);
+                on_basis_v = RowMajor::Zero(r_, r_);
+            }
+            reduced_[ue]->add_tangent(ReducedState{te, y, y + r_}, modes_[ue], on_basis_q.data(), on_basis_v.data());
+            dfdq[ue].resize(0, 0);
+            dfdv[ue].resize(0, 0);
+            continue;
+        }
         static_cast<void>(union_state(e, te, false));
         assembler_.tangent(modes_[ue]);
         const Eigen::Index m = static_cast<Eigen::Index>(local_[ue].size());
         dfdq[ue] = Eigen::Map<const RowMajor>(assembler_.dfdq().data(), m, m);
         dfdv[ue] = Eigen::Map<const RowMajor>(assembler_.dfdv().data(), m, m);
     }
+    if (modal_q) *modal_q = on_basis_q;
+    if (modal_v) *modal_v = on_basis_v;
 }
 
 void ModalSystem::fe_tangents(double t, const double* y, Eigen::SparseMatrix<double>& Fq,

@@ -51,8 +51,9 @@ public:
     // On a modal basis only (empty on a nodal one): alpha + beta w^2 per vector, element e's basis rows.
     [[nodiscard]] const Eigen::VectorXd& rayleigh() const { return d_; }
     [[nodiscard]] const Eigen::MatrixXd& rows(int e) const { return rows_[static_cast<std::size_t>(e)]; }
-    // The union of the elements' DOFs (elements overlap: a pad and its film share every DOF): its
-    // basis rows (|U| x r; modal basis only), and the position in it of each of element e's DOFs.
+    // The union of the DOFs of the elements not evaluated on the basis (elements overlap: a pad and
+    // its film share every DOF): its basis rows (|U| x r; modal basis only), and the position in it
+    // of each of element e's DOFs (none for an element evaluated on the basis).
     [[nodiscard]] const Eigen::MatrixXd& union_rows() const { return union_rows_; }
     [[nodiscard]] const std::vector<int>& union_positions(int e) const { return local_[static_cast<std::size_t>(e)]; }
     // The FE DOF of each row of union_rows().
@@ -81,8 +82,15 @@ public:
     // CVODE callbacks on raw arrays of length size().
     void rhs(double t, const double* y, double* ydot) const;
     void root_functions(double t, const double* y, double* g) const;
-    // d f_e / d q_e and d f_e / d v_e of every element at y (row-major |D_e| x |D_e| each).
-    void tangents(double t, const double* y, std::vector<Eigen::MatrixXd>& dfdq, std::vector<Eigen::MatrixXd>& dfdv) const;
+    // d f_e / d q_e and d f_e / d v_e of every element at y (row-major |D_e| x |D_e| each; 0 x 0 for an
+    // element evaluated on the basis, reduced(e)), and where some are, the sums of their projected
+    // tangents P_e^T (d f_e / d q_e) P_e and P_e^T (d f_e / d v_e) P_e (r x r; else left empty).
+    void tangents(double t, const double* y, std::vector<Eigen::MatrixXd>& dfdq, std::vector<Eigen::MatrixXd>& dfdv,
+                  Eigen::MatrixXd* modal_q = nullptr, Eigen::MatrixXd* modal_v = nullptr) const;
+    // Whether element e is evaluated directly on the basis (ForceElement::reduced): on a reduced
+    // basis, for an element that offers it. Its DOFs are then not in the union unless another
+    // element's are.
+    [[nodiscard]] bool reduced(int e) const { return reduced_[static_cast<std::size_t>(e)] != nullptr; }
 
     // The same summed over the elements onto their FE DOFs, as n x n sparse matrices (nodal basis:
     // the element blocks are dense in storage but banded in content, so only their nonzeros move).
@@ -160,6 +168,7 @@ private:
     int r_ = 0;
     Eigen::VectorXd w2_, d_;                 // omega^2, alpha + beta omega^2
     std::vector<Eigen::MatrixXd> rows_;      // per element: basis rows of its DOFs (|D_e| x r)
+    std::vector<std::unique_ptr<const ReducedElement>> reduced_;  // per element: on the basis, or null
     Eigen::MatrixXd union_rows_;             // basis rows of the union of the elements' DOFs (|U| x r)
     std::vector<int> union_dofs_;            // the union's DOFs, ascending
     std::vector<std::vector<int>> local_;    // per element: positions of its DOFs in the union
