@@ -9,6 +9,7 @@
 
 #include "dynamics/exact/exact_give_up.hpp"
 #include "dynamics/exact/state_memo.hpp"
+#include "dynamics/signal/exp_sincos.hpp"
 #include "model/run_control.hpp"
 
 namespace vi {
@@ -387,8 +388,30 @@ ExpSignal PieceSolution::channel(const Eigen::RowVectorXcd& row, double scale, d
 
 Eigen::VectorXcd PieceSolution::exponentials(double tau) const {
     const Eigen::VectorXcd& lam = s_->modes.lambda;
-    Eigen::VectorXcd e(lam.size());
-    for (Eigen::Index k = 0; k < e.size(); ++k) e[k] = fast_exp(lam[k], tau);
+    const Eigen::Index m = lam.size();
+    Eigen::VectorXcd e(m);
+    if (tau == 0.0) {
+        e.setOnes();
+        return e;
+    }
+    // In the scans' vectorised pass (the same values they use), and 0 below exp(-707) as fast_exp.
+    thread_local std::vector<double> scratch;
+    const std::size_t n = static_cast<std::size_t>(m);
+    if (scratch.size() < 5 * n) scratch.resize(5 * n);
+    double* x = scratch.data();
+    double* y = x + n;
+    for (std::size_t k = 0; k < n; ++k) {
+        x[k] = lam[static_cast<Eigen::Index>(k)].real() * tau;
+        y[k] = lam[static_cast<Eigen::Index>(k)].imag() * tau;
+    }
+    double* ex = y + n;
+    double* co = ex + n;
+    double* si = co + n;
+    exp_sincos(x, y, ex, co, si, static_cast<int>(m));
+    for (std::size_t k = 0; k < n; ++k) {
+        const double g = x[k] < -707.0 ? 0.0 : ex[k];
+        e[static_cast<Eigen::Index>(k)] = cd(g * co[k], g * si[k]);
+    }
     return e;
 }
 
