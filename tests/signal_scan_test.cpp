@@ -189,8 +189,8 @@ TEST(SignalScan, ACrossingNarrowerThanTheSmallestStepIsReportedWhenStepped) {
     EXPECT_GT(stepped, 0);
 }
 
-// The integral from exponentials computed once per piece, and a constant term's exponential, are
-// the plain ones to the last bit (the solver relies on that to take them from its piece-end state).
+// The integral from exponentials given by the caller (the solver passes its piece-end ones) is the
+// plain one to the last bit when they are fast_exp's, and a constant term's exponential is 1 exactly.
 TEST(SignalScan, IntegralFromGivenExponentialsIsTheSameToTheLastBit) {
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> u(0.0, 1.0);
