@@ -189,5 +189,21 @@ TEST(SignalScan, ACrossingNarrowerThanTheSmallestStepIsReportedWhenStepped) {
     EXPECT_GT(stepped, 0);
 }
 
+// The integral from exponentials given by the caller (the solver passes its piece-end ones) is the
+// plain one to the last bit when they are fast_exp's, and a constant term's exponential is 1 exactly.
+TEST(SignalScan, IntegralFromGivenExponentialsIsTheSameToTheLastBit) {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int trial = 0; trial < 20; ++trial) {
+        RandomSignal r = random_signal(rng, u(rng) - 0.5);
+        r.f.lambda = &r.lambda;
+        const double tau = 1e-5 * std::pow(u(rng), 2.0);
+        Eigen::VectorXcd e(r.lambda.size());
+        for (Eigen::Index k = 0; k < e.size(); ++k) e[k] = fast_exp(r.lambda[k], tau);
+        EXPECT_EQ(r.f.integral(tau, e), r.f.integral(tau)) << trial;
+        EXPECT_EQ(fast_exp(cd(0.0, 0.0), tau), cd(std::exp(0.0 * tau), 0.0));
+    }
+}
+
 }  // namespace
 }  // namespace vi

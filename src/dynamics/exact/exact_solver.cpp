@@ -174,9 +174,10 @@ private:
     void sample_piece(const PieceSolution& s);
     // The whole beam at the sample next_sample_ (tau into the piece) when it is a frame of the field.
     void record_field(const PieceSolution& s, double tau);
-    void grow_episodes(const PieceSolution& s);
+    // e: the piece's exponentials at its end (its impulse integral takes them).
+    void grow_episodes(const PieceSolution& s, const Eigen::VectorXcd& e);
     void count_zero_length_piece();
-    // e: the piece's exponentials at its end.
+    // e: as for grow_episodes.
     void switch_contact(const PieceSolution& s, const Eigen::VectorXcd& e);
     void finish();
     void open_episode(int c, double t, double v_in);
@@ -375,13 +376,13 @@ void ExactRun::sample_piece(const PieceSolution& s) {
 }
 
 // The open episodes' impulse and peaks over the piece, and the extremes.
-void ExactRun::grow_episodes(const PieceSolution& s) {
+void ExactRun::grow_episodes(const PieceSolution& s, const Eigen::VectorXcd& e_end) {
     for (int c = 0; c < nc_; ++c) {
         const int e = open_[static_cast<std::size_t>(c)];
         if (e < 0) continue;
         ContactEpisode& ep = res_.episodes[static_cast<std::size_t>(e)];
         const ExpSignal& F = s.contact_force(c);
-        ep.impulse += F.integral(tau_e_);
+        ep.impulse += F.integral(tau_e_, e_end);
         ep.peak_force = maximum_over(F, tau_e_, cs_, &res_.stats.steps, ep.peak_force, 1e-7).value;
         ep.peak_penetration = maximum_over(s.penetration(c), tau_e_, cs_, &res_.stats.steps, ep.peak_penetration, 1e-7).value;
     }
@@ -463,9 +464,9 @@ bool ExactRun::advance() {
 
     const auto t_prop = Clock::now();
     sample_piece(s);
-    grow_episodes(s);
-    if (o_.energy) s.accumulate_dissipation(tau_e_, ledger_);
     const Eigen::VectorXcd e_end = s.exponentials(tau_e_);
+    grow_episodes(s, e_end);
+    if (o_.energy) s.accumulate_dissipation(tau_e_, ledger_);
     x_ = s.state_at(tau_e_, e_end);
     res_.stats.propagation_s += seconds_since(t_prop);
     ++res_.stats.steps;

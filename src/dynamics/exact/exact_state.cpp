@@ -9,6 +9,7 @@
 
 #include "dynamics/exact/exact_give_up.hpp"
 #include "dynamics/exact/state_memo.hpp"
+#include "dynamics/signal/exp_sincos.hpp"
 #include "model/run_control.hpp"
 
 namespace vi {
@@ -387,8 +388,30 @@ ExpSignal PieceSolution::channel(const Eigen::RowVectorXcd& row, double scale, d
 
 Eigen::VectorXcd PieceSolution::exponentials(double tau) const {
     const Eigen::VectorXcd& lam = s_->modes.lambda;
-    Eigen::VectorXcd e(lam.size());
-    for (Eigen::Index k = 0; k < e.size(); ++k) e[k] = fast_exp(lam[k], tau);
+    const Eigen::Index m = lam.size();
+    Eigen::VectorXcd e(m);
+    if (tau == 0.0) {
+        e.setOnes();
+        return e;
+    }
+    // In the scans' vectorised pass (the same values they use), and 0 below exp(-707) as fast_exp.
+    thread_local std::vector<double> scratch;
+    const std::size_t n = static_cast<std::size_t>(m);
+    if (scratch.size() < 5 * n) scratch.resize(5 * n);
+    double* x = scratch.data();
+    double* y = x + n;
+    for (std::size_t k = 0; k < n; ++k) {
+        x[k] = lam[static_cast<Eigen::Index>(k)].real() * tau;
+        y[k] = lam[static_cast<Eigen::Index>(k)].imag() * tau;
+    }
+    double* ex = y + n;
+    double* co = ex + n;
+    double* si = co + n;
+    exp_sincos(x, y, ex, co, si, static_cast<int>(m));
+    for (std::size_t k = 0; k < n; ++k) {
+        const double g = x[k] < -707.0 ? 0.0 : ex[k];
+        e[static_cast<Eigen::Index>(k)] = cd(g * co[k], g * si[k]);
+    }
     return e;
 }
 
@@ -457,6 +480,34 @@ const Eigen::VectorXcd& PieceSolution::sample_exponentials(double tau, double t_
     return sample_e_;
 }
 
+namespace {
+
+// acc[j] += Re(A_jk e_k) over the live modes k, from the packed amplitudes (per mode: the channels'
+// Re A, then Im A). NF > 0: that many channels, summed in registers; NF = 0: nf of them in memory.
+template <std::size_t NF>
+void accumulate_channels(const double* pack, const double* ep, const std::vector<int>& live, double* acc,
+                         std::size_t nf = NF) {
+    if constexpr (NF > 0) {
+        double sum[NF] = {};
+        for (int k : live) {
+            const double er = ep[2 * k], ei = ep[2 * k + 1];
+            const double* ar = pack + 2 * NF * static_cast<std::size_t>(k);
+            const double* ai = ar + NF;
+            for (std::size_t j = 0; j < NF; ++j) sum[j] += ar[j] * er - ai[j] * ei;
+        }
+        for (std::size_t j = 0; j < NF; ++j) acc[j] = sum[j];
+    } else {
+        for (int k : live) {
+            const double er = ep[2 * k], ei = ep[2 * k + 1];
+            const double* ar = pack + 2 * nf * static_cast<std::size_t>(k);
+            const double* ai = ar + nf;
+            for (std::size_t j = 0; j < nf; ++j) acc[j] += ar[j] * er - ai[j] * ei;
+        }
+    }
+}
+
+}  // namespace
+
 void PieceSolution::sampled_values(const std::vector<const ExpSignal*>& fs, double tau, std::vector<double>& out) const {
     const std::size_t nf = fs.size();
     const std::size_t m = static_cast<std::size_t>(sample_e_.size());
@@ -474,13 +525,11 @@ void PieceSolution::sampled_values(const std::vector<const ExpSignal*>& fs, doub
     // All channels in one pass over the live modes, real parts only: Re sum A_k e_k summed in the
     // same order as the complex sum, the same value to the last bit.
     out.assign(nf, 0.0);
-    double* acc = out.data();
     const double* ep = reinterpret_cast<const double*>(sample_e_.data());
-    for (int k : sample_live_) {
-        const double er = ep[2 * k], ei = ep[2 * k + 1];
-        const double* ar = sample_pack_.data() + 2 * nf * static_cast<std::size_t>(k);
-        const double* ai = ar + nf;
-        for (std::size_t j = 0; j < nf; ++j) acc[j] += ar[j] * er - ai[j] * ei;
+    switch (nf) {  // a fixed count keeps the sums in registers (one or two contacts)
+        case 5: accumulate_channels<5>(sample_pack_.data(), ep, sample_live_, out.data()); break;
+        case 8: accumulate_channels<8>(sample_pack_.data(), ep, sample_live_, out.data()); break;
+        default: accumulate_channels<0>(sample_pack_.data(), ep, sample_live_, out.data(), nf); break;
     }
     for (std::size_t j = 0; j < nf; ++j) {
         for (const ExpTerm& t : fs[j]->terms) out[j] += term_derivative(t, tau, 0).real();

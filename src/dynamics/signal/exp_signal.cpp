@@ -63,6 +63,10 @@ double ExpSignal::bound(double tau, double h, int d) const {
         if (d >= 3) m = std::pow(mag2, 0.5 * d);
         b += std::sqrt(std::norm(A[k])) * m * growth;
     }
+    return terms_bound(terms, tau, h, d, b);
+}
+
+double terms_bound(const std::vector<ExpTerm>& terms, double tau, double h, int d, double b) {
     for (const ExpTerm& t : terms) {
         const double growth = std::max(std::exp(t.s.real() * tau), std::exp(t.s.real() * (tau + h)));
         const double as = std::abs(t.s);
@@ -96,6 +100,13 @@ cd exp_moment(cd mu, int p, double tau, cd e) {
 double ExpSignal::integral(double tau) const {
     cd sum = 0.0;
     for (Eigen::Index k = 0; k < A.size(); ++k) sum += A[k] * exp_moment((*lambda)[k], 0, tau);
+    for (const ExpTerm& t : terms) sum += t.coef * exp_moment(t.s, t.power, tau);
+    return sum.real();
+}
+
+double ExpSignal::integral(double tau, const Eigen::VectorXcd& e) const {
+    cd sum = 0.0;
+    for (Eigen::Index k = 0; k < A.size(); ++k) sum += A[k] * exp_moment((*lambda)[k], 0, tau, e[k]);
     for (const ExpTerm& t : terms) sum += t.coef * exp_moment(t.s, t.power, tau);
     return sum.real();
 }

@@ -21,6 +21,9 @@ struct ExpTerm {
 
 // d-th derivative of one particular term at tau.
 cd term_derivative(const ExpTerm& t, double tau, int d);
+// An upper bound of |d-th derivative| of a sum of particular terms over [tau, tau + h] (as
+// ExpSignal::bound sums them).
+double terms_bound(const std::vector<ExpTerm>& terms, double tau, double h, int d, double b = 0.0);
 
 struct ExpSignal {
     const Eigen::VectorXcd* lambda = nullptr;  // exponents of the homogeneous part [1/s]
@@ -39,6 +42,8 @@ struct ExpSignal {
     [[nodiscard]] double bound(double tau, double h, int d) const;
     // Integral of f over [0, tau].
     [[nodiscard]] double integral(double tau) const;
+    // The same given e_k = fast_exp(lambda_k, tau) already computed: the same value to the last bit.
+    [[nodiscard]] double integral(double tau, const Eigen::VectorXcd& e) const;
 };
 
 // exp(z tau) as exp(Re) (cos, sin): no complex-library call, and 0 without libm's underflow path once
@@ -46,6 +51,8 @@ struct ExpSignal {
 inline cd fast_exp(cd z, double tau) {
     // At a piece's start every exponential is 1 (what the libm calls below return there too).
     if (tau == 0.0) return cd(1.0, 0.0);
+    // A constant term (z = 0): exp(0) = 1 exactly, without the library call.
+    if (z.real() == 0.0 && z.imag() == 0.0) return cd(1.0, 0.0);
     const double x = z.real() * tau;
     if (x < -707.0) return cd(0.0, 0.0);
     const double e = std::exp(x);

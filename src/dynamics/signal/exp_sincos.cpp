@@ -76,9 +76,10 @@ inline double cos_reduced(double r) {
 
 }  // namespace
 
-// Also built for AVX2 (four lanes instead of two), chosen at load time where the processor has it;
-// without FMA, so both builds round alike.
-__attribute__((target_clones("avx2", "default")))
+// Also built for AVX2 (four lanes instead of two) and AVX-512 (eight), chosen at load time where
+// the processor has them; without fused multiply-adds (-ffp-contract=off for this file), so that
+// every build rounds alike.
+__attribute__((target_clones("avx512f", "avx2", "default")))
 void exp_sincos(const double* x, const double* y, double* e, double* c, double* s, int n) {
     // One pass of plain arithmetic over all k (no calls, no branches: vectorised), then the rare
     // arguments outside its range through the C library.

@@ -1,6 +1,7 @@
 #pragma once
 // exp(x) and (cos, sin)(y) over arrays, in plain arithmetic the compiler can vectorise: the modal
-// exponentials of the signal scans (every live mode at each evaluation point).
+// exponentials of the signal scans (every live mode at each evaluation point) and of the exact
+// solver's pieces (every mode at a piece's end and at the history's anchors).
 
 namespace vi {
 

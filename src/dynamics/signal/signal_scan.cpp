@@ -46,7 +46,16 @@ int frexp_exponent(double x) {
 struct SpareStore {
     std::unique_ptr<double[]> data;
     std::size_t capacity = 0;
+    std::vector<double> dead, mags;
+    std::vector<int> live;
+    std::vector<ExpTerm> terms;
 };
+
+// Gives v to spare when it holds more room than spare has (the next scan takes the larger).
+template <class V>
+void give_back(V& v, V& spare_v) {
+    if (v.capacity() > spare_v.capacity()) spare_v = std::move(v);
+}
 thread_local SpareStore spare;
 
 }  // namespace
@@ -57,6 +66,10 @@ SignalScan::~SignalScan() {
         spare.capacity = capacity_;
     }
     if (modes_.capacity() > spare_modes().capacity()) spare_modes() = std::move(modes_);
+    give_back(dead_, spare.dead);
+    give_back(mags_, spare.mags);
+    give_back(live_, spare.live);
+    give_back(terms_, spare.terms);
 }
 
 std::vector<SignalScan::Mode>& SignalScan::spare_modes() {
@@ -68,6 +81,11 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
     store_ = std::move(spare.data);
     capacity_ = spare.capacity;
     spare.capacity = 0;
+    dead_ = std::move(spare.dead);
+    mags_ = std::move(spare.mags);
+    live_ = std::move(spare.live);
+    terms_ = std::move(spare.terms);
+    terms_.clear();
     m_ = static_cast<int>(f.A.size());
     const Eigen::VectorXcd& lam = *f.lambda;
     // Decompositions come sorted; signals built by hand may not be.
@@ -122,12 +140,7 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
         terms_.push_back({sign * t.coef, t.s, t.power});
         size_ += magnitude(t.coef);
     }
-    if (!terms_.empty()) {
-        ExpSignal part;
-        part.lambda = f.lambda;
-        part.terms = f.terms;
-        terms_b2_ = part.bound(0.0, t_end, 2);
-    }
+    if (!terms_.empty()) terms_b2_ = terms_bound(f.terms, 0.0, t_end, 2);
     skip_ = kSkipFraction * size_;
     // amp e^(re t) <= skip once t >= ln(amp / skip) / -re; ln x <= e ln 2 for x = mant 2^e, mant < 1,
     // so the exponent of frexp gives a time that is never early.
