@@ -113,15 +113,16 @@ Eigen::VectorXd dense_shape(const DenseSolution& sol, const SparseMatrix& M, Eig
     return col;
 }
 
-// The last dense solution on this thread, kept with the matrices it belongs to: a transient
-// computes the modes of the same (K, M) twice (the problem's frequencies and the solver's basis),
-// and the points of a sweep that keep the mesh and the material (contact stiffness, damping, gap,
-// initial step) share them. A different (K, M) replaces it; the result is the same either way.
+// Whether a kept dense matrix holds exactly the entries of a sparse one.
 bool same_matrix(const Eigen::MatrixXd& dense, const SparseMatrix& sparse) {
     if (dense.rows() != sparse.rows() || dense.cols() != sparse.cols()) return false;
     return dense == Eigen::MatrixXd(sparse);
 }
 
+// The last dense solution on this thread, kept with the matrices it belongs to: a transient
+// computes the modes of the same (K, M) twice (the problem's frequencies and the solver's basis),
+// and the points of a sweep that keep the mesh and the material (contact stiffness, damping, gap,
+// initial step) share them. A different (K, M) replaces it; the result is the same either way.
 struct DenseModesMemo {
     Eigen::MatrixXd K, M;
     DenseSolution solution;  // its factors are dropped once every shape is formed
