@@ -59,6 +59,17 @@ struct TransientOptions {
     // history and the final ledger end there); empty: the run goes to the horizon. It must be cheap
     // and must not throw. CVODE ignores it and runs to the horizon.
     std::function<bool(const RunSoFar&)> stop_when;
+    // Exact solver only: how much of a contact episode's peaks the caller reads. Asked once at each
+    // episode's onset with the episodes so far (the new one last), it returns a penetration [m]:
+    // -inf, both peaks to the solver's tolerance (as when empty); +inf, neither (both NaN); a level,
+    // only whether the penetration peak lies above it. Then both peaks are NaN when the penetration
+    // is proven to stay at or below the level; when a value clearly above it is seen (beyond the
+    // peak search's own tolerance), peak_penetration is that value (not the peak) and peak_force NaN;
+    // otherwise the peaks are computed as usual from that piece of the episode on (the force peak
+    // stays NaN if an earlier piece was skipped). Every comparison with the level comes out as with
+    // full peaks, but for a peak within the search's tolerance (1e-7) of the level in an episode
+    // whose earlier pieces were skipped. CVODE ignores it and computes every peak.
+    std::function<double(const std::vector<ContactEpisode>&)> peak_level;
 };
 
 class TransientSolver {

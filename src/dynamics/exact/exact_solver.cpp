@@ -42,10 +42,12 @@ double constant_part(const ExpSignal& f) {
 // no closer than ~1e-6 to the continuum at m = 50). Relative to the maximum, not to the signal's
 // amplitudes, so that the tiny penetration of a grazing contact is still resolved; never finer than
 // roundoff of the signal.
+constexpr double kPeakTolerance = 1e-7;
+constexpr double kSizeTolerance = 64.0 * std::numeric_limits<double>::epsilon();
 SignalMaximum maximum_over(const ExpSignal& f, double tau_end, const CrossingSearch& cs, int* evals,
                            double floor = -std::numeric_limits<double>::infinity(), double rel_tol = 1e-9,
                            double sign = 1.0) {
-    return global_maximum(f, tau_end, 64.0 * std::numeric_limits<double>::epsilon(), rel_tol, cs.t_tol, evals, floor, sign,
+    return global_maximum(f, tau_end, kSizeTolerance, rel_tol, cs.t_tol, evals, floor, sign,
                           cs.budget);
 }
 
@@ -181,6 +183,7 @@ private:
     void switch_contact(const PieceSolution& s, const Eigen::VectorXcd& e);
     void finish();
     void open_episode(int c, double t, double v_in);
+    [[nodiscard]] bool peaks_needed(const PieceSolution& s, int c);
 
     const PiecewiseLinearProblem& p_;
     const TransientOptions& o_;
@@ -195,6 +198,10 @@ private:
     Eigen::VectorXd x_;
     bool contact_is_watched_ = false;
     std::vector<int> open_;  // each contact's open episode, -1 for none
+    // Each contact's open episode: the level its penetration peak is only compared with
+    // (TransientOptions::peak_level; -inf: peaks in full), and whether a piece of it went unscanned.
+    std::vector<double> peak_level_;
+    std::vector<bool> peak_skipped_;
     std::vector<double> breaks_;
     double dt_out_ = 0.0;
     long n_samples_ = 0;
@@ -238,6 +245,8 @@ ExactRun::ExactRun(const PiecewiseLinearProblem& p, const TransientOptions& o, c
     res_.extremes.watched_max = res_.extremes.contact_max = -std::numeric_limits<double>::infinity();
     res_.extremes.watched_min = std::numeric_limits<double>::infinity();
     open_.assign(static_cast<std::size_t>(nc_), -1);
+    peak_level_.assign(static_cast<std::size_t>(nc_), -std::numeric_limits<double>::infinity());
+    peak_skipped_.assign(static_cast<std::size_t>(nc_), false);
 
     for (const LoadTerm& l : p.loads) {
         for (double b : l.time.breakpoints(0.0, p.t_end)) breaks_.push_back(b);
@@ -254,8 +263,43 @@ void ExactRun::open_episode(int c, double t, double v_in) {
     e.support = c;
     e.t_on = t;
     e.v_in = v_in;
-    open_[static_cast<std::size_t>(c)] = static_cast<int>(res_.episodes.size());
+    const auto k = static_cast<std::size_t>(c);
+    open_[k] = static_cast<int>(res_.episodes.size());
     res_.episodes.push_back(e);
+    peak_level_[k] = o_.peak_level ? o_.peak_level(res_.episodes) : -std::numeric_limits<double>::infinity();
+    peak_skipped_[k] = false;
+    if (peak_level_[k] > -std::numeric_limits<double>::infinity()) {
+        res_.episodes.back().peak_force = res_.episodes.back().peak_penetration = std::numeric_limits<double>::quiet_NaN();
+    }
+}
+
+// Whether the open episode of contact c needs its peaks over this piece in full: not while its
+// penetration's comparison with the level its caller reads is settled without them.
+bool ExactRun::peaks_needed(const PieceSolution& s, int c) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    const auto k = static_cast<std::size_t>(c);
+    double& level = peak_level_[k];
+    if (level == -kInf) return true;
+    if (level == kInf) return false;
+    ContactEpisode& ep = res_.episodes[static_cast<std::size_t>(open_[k])];
+    const LevelComparison cmp = compare_with_level(s.penetration(c), tau_e_, level, kSizeTolerance, kPeakTolerance,
+                                                   cs_.t_tol, &res_.stats.steps, cs_.budget);
+    if (cmp.outcome == LevelComparison::below) {
+        peak_skipped_[k] = true;
+        return false;
+    }
+    if (cmp.outcome == LevelComparison::above) {
+        // Above for good: a value seen stands for the peak, and nothing more is needed of it.
+        ep.peak_penetration = cmp.seen;
+        level = kInf;
+        return false;
+    }
+    // Only the full search can tell: from here on in full, from the values an episode starts
+    // with (the force peak stays unknown when an earlier piece was skipped).
+    level = -kInf;
+    ep.peak_penetration = 0.0;
+    if (!peak_skipped_[k]) ep.peak_force = 0.0;
+    return true;
 }
 
 // The contacts closed at t = 0 open their episodes; the initial ledger.
@@ -383,8 +427,11 @@ void ExactRun::grow_episodes(const PieceSolution& s, const Eigen::VectorXcd& e_e
         ContactEpisode& ep = res_.episodes[static_cast<std::size_t>(e)];
         const ExpSignal& F = s.contact_force(c);
         ep.impulse += F.integral(tau_e_, e_end);
-        ep.peak_force = maximum_over(F, tau_e_, cs_, &res_.stats.steps, ep.peak_force, 1e-7).value;
-        ep.peak_penetration = maximum_over(s.penetration(c), tau_e_, cs_, &res_.stats.steps, ep.peak_penetration, 1e-7).value;
+        if (!peaks_needed(s, c)) continue;
+        if (!peak_skipped_[static_cast<std::size_t>(c)]) {
+            ep.peak_force = maximum_over(F, tau_e_, cs_, &res_.stats.steps, ep.peak_force, kPeakTolerance).value;
+        }
+        ep.peak_penetration = maximum_over(s.penetration(c), tau_e_, cs_, &res_.stats.steps, ep.peak_penetration, kPeakTolerance).value;
     }
     if (!res_.episodes.empty() && tau_e_ > 0.0) {
         const bool in_contact = std::find(active_.begin(), active_.end(), true) != active_.end();

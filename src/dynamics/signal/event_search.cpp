@@ -35,6 +35,14 @@ double refine(const SignalScan& f, double a, double b, double fa, double fb, dou
     return b;
 }
 
+// An interval of a branch and bound over a signal, with an upper bound of the signal on it; the
+// heaps keep the highest bound on top.
+struct Interval {
+    double bound;
+    ScanPoint a, b;
+    bool operator<(const Interval& o) const { return bound < o.bound; }
+};
+
 }  // namespace
 
 void charge_evaluations(long* budget, long n) {
@@ -111,11 +119,6 @@ SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double size_tol
     };
     // Best first: always refine the interval with the highest upper bound; once that bound cannot
     // beat the best value seen, no interval can, and the search ends.
-    struct Interval {
-        double bound;
-        ScanPoint a, b;
-        bool operator<(const Interval& o) const { return bound < o.bound; }
-    };
     std::vector<Interval> heap;
     // Without a run's budget, a bound of its own: no search runs without a limit on its work.
     long own_budget = 6000000;
@@ -145,6 +148,56 @@ SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double size_tol
         }
     }
     return best;
+}
+
+LevelComparison compare_with_level(const ExpSignal& f, double tau_end, double level, double size_tol, double rel_tol,
+                                   double h_min, int* evals, long* budget) {
+    SignalScan scan(f, 1.0, tau_end);
+    const double certain = level + 2.0 * (rel_tol * std::abs(level) + size_tol * scan.size());
+    LevelComparison out;
+    // A value proves the maximum above the level only beyond the margin global_maximum may leave.
+    auto settles_above = [&](const ScanPoint& p) {
+        if (evals) ++*evals;
+        out.seen = std::max(out.seen, p.value);
+        return p.value - SignalScan::roundoff(p) > certain;
+    };
+    auto bound = [&](const ScanPoint& a, const ScanPoint& b) {
+        if (evals) ++*evals;
+        return scan.upper_bound(a, b) + std::max(SignalScan::roundoff(a), SignalScan::roundoff(b));
+    };
+    auto decided = [&](LevelComparison::Outcome o) {
+        out.outcome = o;
+        return out;
+    };
+    long own_budget = 6000000;
+    if (!budget) budget = &own_budget;
+    const ScanPoint p0 = scan.evaluate(0.0);
+    const ScanPoint p1 = scan.evaluate(tau_end);
+    if (settles_above(p0) || settles_above(p1)) return decided(LevelComparison::above);
+    // A value above the level but within the margin: only the full search can tell.
+    if (out.seen > level) return decided(LevelComparison::undecided);
+    std::vector<Interval> heap{{bound(p0, p1), p0, p1}};
+    // Highest bound first: a value above the level, if there is one, is met soonest there. Only
+    // intervals bounded above the level are kept.
+    while (!heap.empty() && heap.front().bound > level) {
+        charge_evaluations(budget, 3);
+        std::pop_heap(heap.begin(), heap.end());
+        const Interval iv = heap.back();
+        heap.pop_back();
+        const double half = 0.5 * (iv.b.t - iv.a.t);
+        if (half < h_min) return decided(LevelComparison::undecided);
+        const ScanPoint mid = scan.evaluate(iv.a.t + half);
+        if (settles_above(mid)) return decided(LevelComparison::above);
+        if (out.seen > level) return decided(LevelComparison::undecided);
+        for (const auto& [a, b] : {std::pair{iv.a, mid}, std::pair{mid, iv.b}}) {
+            const double ub = bound(a, b);
+            if (ub > level) {
+                heap.push_back({ub, a, b});
+                std::push_heap(heap.begin(), heap.end());
+            }
+        }
+    }
+    return decided(LevelComparison::below);
 }
 
 }  // namespace vi

@@ -54,4 +54,18 @@ SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double size_tol
                              int* evaluations = nullptr, double floor = -std::numeric_limits<double>::infinity(),
                              double sign = 1.0, long* budget = nullptr);
 
+// Where the largest value of f over [0, tau_end] lies against a level, by the same bounds as
+// global_maximum (each raised by its rounding bound) but only as far as the comparison needs:
+// `below` when f <= level is proven everywhere; `above` when a value of f beyond level (1 + 2 rel_tol)
+// + 2 size_tol S is seen (S the signal's size), so that global_maximum with those tolerances would
+// find a maximum above the level; `undecided` otherwise (a value just above the level, or an
+// interval narrower than h_min still not bounded below it). Much cheaper than global_maximum when
+// the maximum lies far from the level: what a caller needs of a peak it only compares with one.
+struct LevelComparison {
+    enum Outcome { below, above, undecided } outcome = undecided;
+    double seen = -std::numeric_limits<double>::infinity();  // the largest value evaluated
+};
+LevelComparison compare_with_level(const ExpSignal& f, double tau_end, double level, double size_tol, double rel_tol,
+                                   double h_min, int* evaluations = nullptr, long* budget = nullptr);
+
 }  // namespace vi
