@@ -18,8 +18,9 @@ std::vector<Impact> group_episodes(const std::vector<ContactEpisode>& episodes, 
             Impact& im = impacts[static_cast<std::size_t>(li)];
             im.t_off = e.t_off;
             im.v_out = e.v_out;
-            im.peak_force = std::max(im.peak_force, e.peak_force);
-            im.peak_penetration = std::max(im.peak_penetration, e.peak_penetration);
+            // fmax: an episode whose peaks were not computed (NaN, TransientOptions::peak_level) adds none.
+            im.peak_force = std::fmax(im.peak_force, e.peak_force);
+            im.peak_penetration = std::fmax(im.peak_penetration, e.peak_penetration);
             im.impulse += e.impulse;
             im.closed_at_end = e.closed_at_end;
             im.contact_energy += e.contact_energy;
@@ -51,12 +52,16 @@ std::vector<Impact> group_episodes(const std::vector<ContactEpisode>& episodes, 
 
 }  // namespace
 
+double grouping_gap(const ImpactSettings& s) {
+    return !s.group ? 0.0 : s.group_gap > 0.0 ? s.group_gap : 0.25 * 2.0 * std::numbers::pi / s.omega1;
+}
+
 ContactDamage contact_damage(const std::vector<Impact>& impacts) {
     ContactDamage d;
     d.peak_pressure = std::numeric_limits<double>::quiet_NaN();
     for (const Impact& im : impacts) {
         d.contact_energy += im.contact_energy;
-        d.peak_force = std::max(d.peak_force, im.peak_force);
+        d.peak_force = std::fmax(d.peak_force, im.peak_force);
         if (!std::isnan(im.peak_pressure)) {
             d.peak_pressure = std::isnan(d.peak_pressure) ? im.peak_pressure : std::max(d.peak_pressure, im.peak_pressure);
         }
@@ -70,7 +75,7 @@ ContactDamage contact_damage(const std::vector<Impact>& impacts) {
 
 ImpactSummary summarize_impacts(const TransientResult& r, const ImpactSettings& s) {
     ImpactSummary out;
-    out.group_gap = !s.group ? 0.0 : s.group_gap > 0.0 ? s.group_gap : 0.25 * 2.0 * std::numbers::pi / s.omega1;
+    out.group_gap = grouping_gap(s);
     out.impacts = group_episodes(r.episodes, out.group_gap);
     // A run that an element ended (the beam collapsing onto an electrode) never settles: T_p has no
     // value, and its reason is that outcome.

@@ -63,6 +63,12 @@ struct ImpactSummary {
     std::optional<double> y_max, z_max, y_max_contact, watched_min;  // [m], [-], [m], [m]
 };
 
+// The longest flight between two contact episodes of one support that still groups them into one
+// impact [s]: s.group_gap, a quarter period of mode 1 when that is 0, or 0 without grouping.
+double grouping_gap(const ImpactSettings& s);
+
+// Episodes whose peaks were not computed (NaN: TransientOptions::peak_level) add nothing to their
+// impact's peaks, so such an impact is never above the settle threshold.
 ImpactSummary summarize_impacts(const TransientResult& r, const ImpactSettings& s);
 
 }  // namespace vi

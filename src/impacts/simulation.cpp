@@ -10,6 +10,7 @@
 #include "dynamics/cvode/cvode_solver.hpp"
 #include "dynamics/exact/exact_give_up.hpp"
 #include "dynamics/exact/exact_solver.hpp"
+#include "impacts/peak_demand.hpp"
 #include "model/input_error.hpp"
 #include "model/number_format.hpp"
 #include "model/run_estimate.hpp"
@@ -155,6 +156,10 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
     TransientOptions to = transient_options(c.solver, o);
     to.field_every = o.field && o.history ? field_every(c.solver, run.built.problem.size()) : 0;
     if (o.stop_when) to.stop_when = o.stop_when(c, run.built);
+    // The switching ledger lists every contact's peak force: with electrodes every peak is computed.
+    if (o.peak_impacts >= 0 && c.electrodes.empty()) {
+        to.peak_level = leading_impacts_peak_level(impact_settings(c, run.built), o.peak_impacts);
+    }
     run.result = solve_transient(c, run.built.problem, to);
     const bool at_rest = released_at_rest(run.built);
     require_first_impact(c, run, at_rest);

@@ -36,6 +36,11 @@ struct SimulationOptions {
     // Makes the run's stop test (TransientOptions::stop_when) once the problem is built, e.g.
     // settled_stop (impacts/settled_stop.hpp); empty, or returning an empty test: to the horizon.
     std::function<std::function<bool(const RunSoFar&)>(const Case&, const BuiltProblem&)> stop_when;
+    // The number of leading impacts whose peaks the caller reads (-1: every episode's). Later
+    // episodes' peaks are then only compared with the settle threshold (impacts/peak_demand.hpp):
+    // the summary's T_p and its first impacts are as with every peak, the later impacts' peak force
+    // and penetration NaN where not computed. Exact solver, cases without electrodes; else ignored.
+    int peak_impacts = -1;
 };
 
 // Bounds of the field output: frames (one file each) and values held in memory (8 bytes each).

@@ -40,6 +40,8 @@ std::vector<SweepCell> analyse(const Case& c, const SweepSettings& settings) {
     SimulationOptions o;
     o.history = false;
     o.energy = false;
+    // Their columns read the peaks of the first impacts only.
+    o.peak_impacts = kSweepImpactColumns;
     return simulate_cells(run_simulation(c, o), settings.supports);
 }
 

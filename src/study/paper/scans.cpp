@@ -38,6 +38,7 @@ TransientPoint run_transient_point(const Case& c, double x) {
         // The scans report T_p, the first cycle, the first three impacts and the extremes: the run
         // ends once these are settled instead of bouncing on to the horizon.
         o.stop_when = [](const Case& k, const BuiltProblem& b) { return settled_stop(k, b, 3); };
+        o.peak_impacts = 3;
         const SimulationRun run = run_simulation(c, o);
         const ImpactSummary& s = run.summary;
         const double l = c.beam.length;
