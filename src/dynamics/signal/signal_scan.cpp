@@ -46,7 +46,7 @@ int frexp_exponent(double x) {
 struct SpareStore {
     std::unique_ptr<double[]> data;
     std::size_t capacity = 0;
-    std::vector<double> dead, mags;
+    std::vector<double> dead, mags, blocks;
     std::vector<int> live;
     std::vector<ExpTerm> terms;
 };
@@ -68,6 +68,7 @@ SignalScan::~SignalScan() {
     if (modes_.capacity() > spare_modes().capacity()) spare_modes() = std::move(modes_);
     give_back(dead_, spare.dead);
     give_back(mags_, spare.mags);
+    give_back(blocks_, spare.blocks);
     give_back(live_, spare.live);
     give_back(terms_, spare.terms);
 }
@@ -83,6 +84,7 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
     spare.capacity = 0;
     dead_ = std::move(spare.dead);
     mags_ = std::move(spare.mags);
+    blocks_ = std::move(spare.blocks);
     live_ = std::move(spare.live);
     terms_ = std::move(spare.terms);
     terms_.clear();
@@ -156,28 +158,57 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
         }
     }
     for (int k = 0; k < m_; ++k) dead_[static_cast<std::size_t>(k)] = modes_[static_cast<std::size_t>(k)].dead;
+    // Per block of kBlock modes: its earliest and latest death time and its modes' sum of |lambda|.
+    blocks_.resize(static_cast<std::size_t>(3 * ((m_ + kBlock - 1) / kBlock)));
+    for (int k0 = 0, b = 0; k0 < m_; k0 += kBlock, ++b) {
+        const int k1 = std::min(m_, k0 + kBlock);
+        double lo = std::numeric_limits<double>::infinity(), hi = -lo, sum = 0.0;
+        for (int k = k0; k < k1; ++k) {
+            lo = std::min(lo, dead_[static_cast<std::size_t>(k)]);
+            hi = std::max(hi, dead_[static_cast<std::size_t>(k)]);
+            sum += mags_[static_cast<std::size_t>(k)];
+        }
+        blocks_[static_cast<std::size_t>(3 * b)] = lo;
+        blocks_[static_cast<std::size_t>(3 * b + 1)] = hi;
+        blocks_[static_cast<std::size_t>(3 * b + 2)] = sum;
+    }
 }
 
 void SignalScan::update_live(double t) const {
     if (t >= live_from_ && t < live_until_) return;
-    // Mode k is live while t < dead_k: the set holds between the death times around t. Without
+    // Mode k is live while t < dead_k: the set holds between the death times around t. Block by
+    // block: a block whose modes are all dead or all live at t (most are, as the fast overdamped
+    // modes die in about the order of their |lambda|) takes one test; inside a mixed block, no
     // branches: which modes are dead varies from one point to the next in ways a branch predictor
     // cannot follow.
     constexpr double kInf = std::numeric_limits<double>::infinity();
     const double* dead = dead_.data();
     const double* mag = mags_.data();
+    const double* block = blocks_.data();
     live_.resize(static_cast<std::size_t>(m_));
     int* out = live_.data();
     int n = 0;
     double dead_mag = 0.0, from = -kInf, until = kInf;
-    for (int k = 0; k < m_; ++k) {
-        const double dk = dead[k];
-        const bool alive = t < dk;
-        out[n] = k;
-        n += alive ? 1 : 0;
-        dead_mag += alive ? 0.0 : mag[k];
-        from = std::max(from, alive ? -kInf : dk);
-        until = std::min(until, alive ? dk : kInf);
+    for (int k0 = 0, b = 0; k0 < m_; k0 += kBlock, ++b) {
+        const int k1 = std::min(m_, k0 + kBlock);
+        const double lo = block[3 * b], hi = block[3 * b + 1];
+        if (t >= hi) {  // all dead
+            dead_mag += block[3 * b + 2];
+            from = std::max(from, hi);
+        } else if (t < lo) {  // all live
+            for (int k = k0; k < k1; ++k) out[n++] = k;
+            until = std::min(until, lo);
+        } else {
+            for (int k = k0; k < k1; ++k) {
+                const double dk = dead[k];
+                const bool alive = t < dk;
+                out[n] = k;
+                n += alive ? 1 : 0;
+                dead_mag += alive ? 0.0 : mag[k];
+                from = std::max(from, alive ? -kInf : dk);
+                until = std::min(until, alive ? dk : kInf);
+            }
+        }
     }
     live_.resize(static_cast<std::size_t>(n));
     live_from_ = from;

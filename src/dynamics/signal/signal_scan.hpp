@@ -90,6 +90,9 @@ private:
     std::unique_ptr<double[]> store_;
     std::size_t capacity_ = 0, used_ = 0;
     std::vector<double> dead_, mags_;  // each mode's death time and |lambda|, contiguous
+    // Per block of kBlock consecutive modes: {earliest death time, latest, sum of |lambda|}.
+    static constexpr int kBlock = 8;
+    std::vector<double> blocks_;
     mutable std::vector<int> live_;
     mutable double live_from_ = 0.0, live_until_ = -1.0;  // live_ holds for t in [from, until)
     mutable int dead_count_ = 0;
