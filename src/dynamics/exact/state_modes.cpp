@@ -1,5 +1,6 @@
 #include "model/run_control.hpp"
 #include "dynamics/exact/state_modes.hpp"
+#include "dynamics/exact/modal_sums.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -249,15 +250,17 @@ Eigen::VectorXd StateModes::state(const Eigen::VectorXcd& c) const {
         // Column by column, leaving out the modes whose coefficient is exactly zero: at the end of a
         // piece every mode decayed below exp(-707) is (fast_exp), about half of them.
         x.setZero();
-        auto head = x.head(dofs());
-        auto tail = x.tail(dofs());
-        const auto vr = Vr();
-        const auto vi = Vi();
+        thread_local std::vector<int> cols;
+        thread_local std::vector<double> coef;
+        cols.clear();
+        coef.clear();
         for (int k = 0; k < size(); ++k) {
             if (w[k] == cd(0.0)) continue;
-            head += w[k].real() * vr.col(k) - w[k].imag() * vi.col(k);
-            tail += lw[k].real() * vr.col(k) - lw[k].imag() * vi.col(k);
+            cols.push_back(k);
+            coef.insert(coef.end(), {w[k].real(), w[k].imag(), lw[k].real(), lw[k].imag()});
         }
+        add_mode_columns(vl.data(), vl.data() + dofs(), vl.outerStride(), dofs(), cols.data(), coef.data(),
+                         static_cast<int>(cols.size()), x.data(), x.data() + dofs());
     } else {
         x.head(dofs()) = combine(*this, w).real();
         x.tail(dofs()) = combine(*this, lw).real();

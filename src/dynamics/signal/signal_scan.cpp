@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <bit>
 #include <cstdint>
+#include <cstring>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -46,7 +47,7 @@ int frexp_exponent(double x) {
 struct SpareStore {
     std::unique_ptr<double[]> data;
     std::size_t capacity = 0;
-    std::vector<double> dead, mags, blocks;
+    std::vector<double> dead, blocks;
     std::vector<int> live;
     std::vector<ExpTerm> terms;
 };
@@ -60,6 +61,68 @@ thread_local SpareStore spare;
 
 }  // namespace
 
+
+// What a scan needs of the exponents alone, kept for the last few sets seen on this thread: the
+// pieces of one contact state share them, and each piece scans several signals.
+struct PoleSet {
+    std::vector<double> key;         // the exponents as given (real and imaginary parts)
+    std::vector<int> order;          // ascending |lambda| (empty: already so)
+    std::vector<SignalScanPole> poles;  // in that order
+    std::vector<double> mags;        // |lambda|, in that order, contiguous
+    double gamma = 0.0;              // largest Re lambda > 0, else 0
+};
+
+namespace {
+
+std::shared_ptr<const PoleSet> make_pole_set(const Eigen::VectorXcd& lam) {
+    auto set = std::make_shared<PoleSet>();
+    const int m = static_cast<int>(lam.size());
+    const double* lp = reinterpret_cast<const double*>(lam.data());
+    set->key.assign(lp, lp + 2 * m);
+    // Decompositions come sorted; signals built by hand may not be.
+    bool sorted = true;
+    for (int k = 1; k < m && sorted; ++k) sorted = std::norm(lam[k - 1]) <= std::norm(lam[k]);
+    if (!sorted) {
+        set->order.resize(static_cast<std::size_t>(m));
+        std::iota(set->order.begin(), set->order.end(), 0);
+        std::stable_sort(set->order.begin(), set->order.end(),
+                         [&](int a, int b) { return std::norm(lam[a]) < std::norm(lam[b]); });
+    }
+    set->poles.resize(static_cast<std::size_t>(m));
+    set->mags.resize(static_cast<std::size_t>(m));
+    for (int j = 0; j < m; ++j) {
+        const std::size_t k = static_cast<std::size_t>(sorted ? j : set->order[static_cast<std::size_t>(j)]);
+        const double lr = lp[2 * k], li = lp[2 * k + 1];
+        SignalScanPole& pl = set->poles[static_cast<std::size_t>(j)];
+        pl.re = lr;
+        pl.im = li;
+        pl.mag2 = lr * lr + li * li;  // std::norm's own formula
+        pl.mag = std::sqrt(pl.mag2);
+        set->mags[static_cast<std::size_t>(j)] = pl.mag;
+        set->gamma = std::max(set->gamma, lr);
+    }
+    return set;
+}
+
+// The pole set of lam: one of the last kKept built on this thread when its exponents are the same
+// to the last bit (compared whole, so a vector freed and another allocated in its place cannot be
+// taken for it), else a new one.
+std::shared_ptr<const PoleSet> pole_set(const Eigen::VectorXcd& lam) {
+    constexpr int kKept = 4;
+    thread_local std::shared_ptr<const PoleSet> kept[kKept];
+    thread_local int next = 0;
+    const std::size_t n = static_cast<std::size_t>(2 * lam.size());
+    for (const auto& set : kept) {
+        if (set && set->key.size() == n && std::memcmp(set->key.data(), lam.data(), n * sizeof(double)) == 0) return set;
+    }
+    auto set = make_pole_set(lam);
+    kept[next] = set;
+    next = (next + 1) % kKept;
+    return set;
+}
+
+}  // namespace
+
 SignalScan::~SignalScan() {
     if (capacity_ > spare.capacity) {
         spare.data = std::move(store_);
@@ -67,7 +130,6 @@ SignalScan::~SignalScan() {
     }
     if (modes_.capacity() > spare_modes().capacity()) spare_modes() = std::move(modes_);
     give_back(dead_, spare.dead);
-    give_back(mags_, spare.mags);
     give_back(blocks_, spare.blocks);
     give_back(live_, spare.live);
     give_back(terms_, spare.terms);
@@ -83,60 +145,38 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
     capacity_ = spare.capacity;
     spare.capacity = 0;
     dead_ = std::move(spare.dead);
-    mags_ = std::move(spare.mags);
     blocks_ = std::move(spare.blocks);
     live_ = std::move(spare.live);
     terms_ = std::move(spare.terms);
     terms_.clear();
     m_ = static_cast<int>(f.A.size());
-    const Eigen::VectorXcd& lam = *f.lambda;
-    // Decompositions come sorted; signals built by hand may not be.
-    bool sorted = true;
-    for (int k = 1; k < m_ && sorted; ++k) sorted = std::norm(lam[k - 1]) <= std::norm(lam[k]);
-    std::vector<int> order;
-    if (!sorted) {
-        order.resize(static_cast<std::size_t>(m_));
-        std::iota(order.begin(), order.end(), 0);
-        std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return std::norm(lam[a]) < std::norm(lam[b]); });
-    }
+    std::shared_ptr<const PoleSet> set = pole_set(*f.lambda);
+    poles_ = set->poles.data();
+    mags_ = set->mags.data();
+    gamma_ = set->gamma;
+    const bool sorted = set->order.empty();
     // The thread's spare array: every field of every mode is written below.
     modes_ = std::move(spare_modes());
     modes_.resize(static_cast<std::size_t>(m_));
     // Real and imaginary parts read as doubles (std::complex is laid out as double[2]): a complex
-    // copied through the stack in halves and read back whole stalls the store forwarding, which cost
-    // half of this constructor.
-    const double* lp = reinterpret_cast<const double*>(lam.data());
+    // copied through the stack in halves and read back whole stalls the store forwarding.
     const double* ap = reinterpret_cast<const double*>(f.A.data());
-    double gamma = 0.0, size = 0.0;  // in registers: the members would be stored and read back per mode
-    // |lambda|^2 and |A|^2 into the contiguous arrays first, their square roots in one vectorised
-    // pass (sqrt is correctly rounded either way), then into the modes.
+    // |A|^2 into the contiguous array first, the square roots in one vectorised pass (sqrt is
+    // correctly rounded either way), then into the modes.
     dead_.resize(static_cast<std::size_t>(m_));
-    mags_.resize(static_cast<std::size_t>(m_));
-    double* mag = mags_.data();
     double* amp = dead_.data();
     for (int j = 0; j < m_; ++j) {
-        const std::size_t k = static_cast<std::size_t>(sorted ? j : order[static_cast<std::size_t>(j)]);
-        const double lr = lp[2 * k], li = lp[2 * k + 1], ar = ap[2 * k], ai = ap[2 * k + 1];
-        Mode& md = modes_[static_cast<std::size_t>(j)];
-        md.A = cd(sign * ar, sign * ai);
-        md.re = lr;
-        md.im = li;
-        md.mag2 = lr * lr + li * li;  // std::norm's own formula
-        mag[j] = md.mag2;
+        const std::size_t k = static_cast<std::size_t>(sorted ? j : set->order[static_cast<std::size_t>(j)]);
+        const double ar = ap[2 * k], ai = ap[2 * k + 1];
+        modes_[static_cast<std::size_t>(j)].A = cd(sign * ar, sign * ai);
         amp[j] = ar * ar + ai * ai;
-        gamma = std::max(gamma, lr);
     }
+    for (int j = 0; j < m_; ++j) amp[j] = std::sqrt(amp[j]);
+    double size = 0.0;  // in a register: the member would be stored and read back per mode
     for (int j = 0; j < m_; ++j) {
-        mag[j] = std::sqrt(mag[j]);
-        amp[j] = std::sqrt(amp[j]);
-    }
-    for (int j = 0; j < m_; ++j) {
-        Mode& md = modes_[static_cast<std::size_t>(j)];
-        md.mag = mag[j];
-        md.amp = amp[j];
+        modes_[static_cast<std::size_t>(j)].amp = amp[j];
         size += amp[j];
     }
-    gamma_ = gamma;
     size_ = size;
     for (const ExpTerm& t : f.terms) {
         terms_.push_back({sign * t.coef, t.s, t.power});
@@ -146,27 +186,30 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
     skip_ = kSkipFraction * size_;
     // amp e^(re t) <= skip once t >= ln(amp / skip) / -re; ln x <= e ln 2 for x = mant 2^e, mant < 1,
     // so the exponent of frexp gives a time that is never early.
-    for (Mode& md : modes_) {
-        if (md.re > 0.0) {
-            md.dead = std::numeric_limits<double>::infinity();  // roundoff of an undamped mode: may grow
-        } else if (md.amp <= skip_) {
-            md.dead = 0.0;
-        } else if (md.re < 0.0) {
-            md.dead = frexp_exponent(md.amp / skip_) * std::numbers::ln2 / -md.re;
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < m_; ++k) {
+        const double re = poles_[k].re, a = amp[k];
+        double& dk = dead_[static_cast<std::size_t>(k)];
+        if (re > 0.0) {
+            dk = kInf;  // roundoff of an undamped mode: may grow
+        } else if (a <= skip_) {
+            dk = 0.0;
+        } else if (re < 0.0) {
+            dk = frexp_exponent(a / skip_) * std::numbers::ln2 / -re;
         } else {
-            md.dead = std::numeric_limits<double>::infinity();
+            dk = kInf;
         }
     }
-    for (int k = 0; k < m_; ++k) dead_[static_cast<std::size_t>(k)] = modes_[static_cast<std::size_t>(k)].dead;
+    pole_set_ = std::move(set);
     // Per block of kBlock modes: its earliest and latest death time and its modes' sum of |lambda|.
     blocks_.resize(static_cast<std::size_t>(3 * ((m_ + kBlock - 1) / kBlock)));
     for (int k0 = 0, b = 0; k0 < m_; k0 += kBlock, ++b) {
         const int k1 = std::min(m_, k0 + kBlock);
-        double lo = std::numeric_limits<double>::infinity(), hi = -lo, sum = 0.0;
+        double lo = kInf, hi = -kInf, sum = 0.0;
         for (int k = k0; k < k1; ++k) {
             lo = std::min(lo, dead_[static_cast<std::size_t>(k)]);
             hi = std::max(hi, dead_[static_cast<std::size_t>(k)]);
-            sum += mags_[static_cast<std::size_t>(k)];
+            sum += mags_[k];
         }
         blocks_[static_cast<std::size_t>(3 * b)] = lo;
         blocks_[static_cast<std::size_t>(3 * b + 1)] = hi;
@@ -183,7 +226,7 @@ void SignalScan::update_live(double t) const {
     // cannot follow.
     constexpr double kInf = std::numeric_limits<double>::infinity();
     const double* dead = dead_.data();
-    const double* mag = mags_.data();
+    const double* mag = mags_;
     const double* block = blocks_.data();
     live_.resize(static_cast<std::size_t>(m_));
     int* out = live_.data();
@@ -225,9 +268,9 @@ const double* SignalScan::exponentials(double t) const {
     double* x = scratch.data();
     double* y = x + n;
     for (std::size_t i = 0; i < n; ++i) {
-        const Mode& md = modes_[static_cast<std::size_t>(live_[i])];
-        x[i] = md.re * t;
-        y[i] = md.im * t;
+        const SignalScanPole& pl = poles_[live_[i]];
+        x[i] = pl.re * t;
+        y[i] = pl.im * t;
     }
     exp_sincos(x, y, y + n, y + 2 * n, y + 3 * n, static_cast<int>(n));
     return y + n;
@@ -257,29 +300,30 @@ ScanPoint SignalScan::evaluate(double t) {
     double value = 0.0, slope = 0.0, abs1 = dead_abs1_;
     for (std::size_t i = 0; i < n; ++i) {
         const Mode& md = modes_[static_cast<std::size_t>(live_[i])];
+        const SignalScanPole& pl = poles_[live_[i]];
         double vre = 0.0, lre = 0.0, unc = 0.0;
         // |v_k| exactly (or, below exp(-707), an upper bound) before deciding whether to evaluate it.
         const double e = ex ? ex[i] : 1.0;
         const double mk = md.amp * e;
         if (mk <= skip_) {
             unc = mk;  // Re v and Re(lambda v) lie within +-|v| and +-|lambda||v|
-        } else if (md.im == 0.0) {
+        } else if (pl.im == 0.0) {
             vre = md.A.real() * e;
-            lre = md.re * vre;
+            lre = pl.re * vre;
         } else {
             const cd v = ex ? md.A * cd(e * co[i], e * si[i]) : md.A;
             vre = v.real();
-            lre = md.re * v.real() - md.im * v.imag();
+            lre = pl.re * v.real() - pl.im * v.imag();
         }
         value += vre;
         slope += lre;
-        abs1 += mk * md.mag;
-        rec[kLambda] = md.mag;
+        abs1 += mk * pl.mag;
+        rec[kLambda] = pl.mag;
         double* next = rec + kRecord;
         next[kF0] = rec[kF0] + vre + unc;
-        next[kF1] = rec[kF1] + lre + unc * md.mag;
+        next[kF1] = rec[kF1] + lre + unc * pl.mag;
         next[kMag] = rec[kMag] + mk;
-        next[kB2] = rec[kB2] + mk * md.mag2;
+        next[kB2] = rec[kB2] + mk * pl.mag2;
         rec = next;
     }
     rec[kLambda] = std::numeric_limits<double>::infinity();
@@ -310,9 +354,10 @@ double SignalScan::value(double t) const {
     double v = 0.0;
     for (std::size_t i = 0; i < n; ++i) {
         const Mode& md = modes_[static_cast<std::size_t>(live_[i])];
+        const SignalScanPole& pl = poles_[live_[i]];
         const double e = ex ? ex[i] : 1.0;
-        if (md.re * t < -707.0 || md.amp * e <= skip_) continue;
-        if (md.im == 0.0) {
+        if (pl.re * t < -707.0 || md.amp * e <= skip_) continue;
+        if (pl.im == 0.0) {
             v += md.A.real() * e;
             continue;
         }

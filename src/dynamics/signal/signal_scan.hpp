@@ -30,6 +30,12 @@ struct ScanPoint {
     std::size_t offset = 0;  // where its prefix records live in the scan's store
 };
 
+// What a scan keeps of one exponent lambda.
+struct SignalScanPole {
+    double re, im, mag, mag2;  // lambda, |lambda|, |lambda|^2 [1/s, 1/s^2]
+};
+struct PoleSet;
+
 class SignalScan {
 public:
     // sign = -1 scans -f (for minima). t_end: the particular part's |f''| is bounded over [0, t_end].
@@ -74,12 +80,15 @@ private:
 
     int m_ = 0;
     struct Mode {
-        cd A;                            // amplitude (times sign)
-        double re, im, mag, mag2, amp;   // lambda, |lambda|, |lambda|^2, |A|
-        double dead;                     // from this time on |v_k| <= skip_ (no evaluation at all)
+        cd A;        // amplitude (times sign)
+        double amp;  // |A|
     };
     std::vector<Mode> modes_;            // ascending |lambda|
     static std::vector<Mode>& spare_modes();
+    // The exponents' part, shared by the scans of signals with the same exponents.
+    std::shared_ptr<const PoleSet> pole_set_;
+    const SignalScanPole* poles_ = nullptr;  // ascending |lambda|
+    const double* mags_ = nullptr;           // their |lambda|, contiguous
     std::vector<ExpTerm> terms_;         // particular part (times sign)
     double terms_b2_ = 0.0;              // bound of |particular''| over [0, t_end]
     double gamma_ = 0.0;                 // largest Re lambda > 0 (roundoff of undamped modes), else 0
@@ -89,7 +98,7 @@ private:
     // thousands of points; zeroing or page-faulting fresh buffers cost more than the sums).
     std::unique_ptr<double[]> store_;
     std::size_t capacity_ = 0, used_ = 0;
-    std::vector<double> dead_, mags_;  // each mode's death time and |lambda|, contiguous
+    std::vector<double> dead_;  // each mode's death time (from it on |v_k| <= skip_: no evaluation at all)
     // Per block of kBlock consecutive modes: {earliest death time, latest, sum of |lambda|}.
     static constexpr int kBlock = 8;
     std::vector<double> blocks_;

@@ -1,0 +1,13 @@
+#pragma once
+// Sums over the modes' vectors in plain loops built for several vector widths: a piece's end state
+// x = sum_k Re(w_k [v_k; lambda_k v_k]) (StateModes::state).
+
+namespace vi {
+
+// For each of the `count` columns j: head += wr_j vr_j - wi_j vi_j and tail += lr_j vr_j - li_j vi_j
+// over n rows, with vr_j = vr + col[j] * ld (likewise vi_j) and coef[4 j .. 4 j + 3] = {wr, wi, lr, li}.
+// Each entry rounds as head[i] + (wr vr[i] - wi vi[i]) in that order, on every processor.
+void add_mode_columns(const double* vr, const double* vi, long ld, int n, const int* col, const double* coef,
+                      int count, double* head, double* tail);
+
+}  // namespace vi
