@@ -3,6 +3,8 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
+#include <limits>
+#include <numbers>
 
 namespace vi {
 namespace {
@@ -114,6 +116,32 @@ void exp_sincos(const double* x, const double* y, double* e, double* c, double* 
             c[k] = std::cos(y[k]);
             s[k] = std::sin(y[k]);
         }
+    }
+}
+
+__attribute__((target_clones("avx512f", "avx2", "default")))
+void death_times(const double* re, const double* amp, double skip, int n, double* dead) {
+    constexpr double kInf = std::numeric_limits<double>::infinity();
+    constexpr std::uint64_t kMantissa = (std::uint64_t{1} << 52) - 1;
+    const std::uint64_t sbits = std::bit_cast<std::uint64_t>(skip);
+    const std::int64_t es = static_cast<std::int64_t>(sbits >> 52);  // skip > 0: no sign bit
+    const std::uint64_t ms = sbits & kMantissa;
+    for (int k = 0; k < n; ++k) {
+        const double a = amp[k], r = re[k];
+        // The exponent std::frexp gives a / skip, without the division: a / skip = (a' / s') 2^(ea - es)
+        // with significands a', s' in [1, 2), and the rounded quotient of the significands stays in
+        // [1, 2) when a' >= s', in [1/2, 1) otherwise (both are multiples of 2^-52, so the exact
+        // quotient stays more than half an ulp away from 2 and from 1).
+        const std::uint64_t abits = std::bit_cast<std::uint64_t>(a);
+        const std::int64_t e = static_cast<std::int64_t>(abits >> 52) - es + ((abits & kMantissa) >= ms ? 1 : 0);
+        const double t = static_cast<double>(static_cast<int>(e)) * std::numbers::ln2 / -r;
+        // r > 0: inf; else a <= skip: 0; else r < 0: t; else inf. As bit masks: no branches.
+        const std::uint64_t grows = std::uint64_t{0} - (r > 0.0 ? 1u : 0u);
+        const std::uint64_t small = std::uint64_t{0} - (a <= skip ? 1u : 0u);
+        const std::uint64_t decays = std::uint64_t{0} - (r < 0.0 ? 1u : 0u);
+        const std::uint64_t inf = std::bit_cast<std::uint64_t>(kInf);
+        const std::uint64_t later = (decays & std::bit_cast<std::uint64_t>(t)) | (~decays & inf);
+        dead[k] = std::bit_cast<double>((grows & inf) | (~grows & ~small & later));
     }
 }
 

@@ -11,4 +11,11 @@ namespace vi {
 // floor for an exponential); x above 700 or |y| above 1e5 is handed to the C library.
 void exp_sincos(const double* x, const double* y, double* e, double* c, double* s, int n);
 
+// For k < n, the time from which amp[k] e^(re[k] t) <= skip for good: ln(amp / skip) / -re bounded
+// above by the exponent e of amp / skip (amp / skip = f 2^e, 1/2 <= f < 1) as e ln 2 / -re, never
+// early; 0 where amp <= skip, infinite where re >= 0 (an undamped mode's roundoff may grow). The
+// same values as std::frexp of the quotient gives, to the last bit. skip must be a positive normal
+// number, amp finite and non-negative.
+void death_times(const double* re, const double* amp, double skip, int n, double* dead);
+
 }  // namespace vi

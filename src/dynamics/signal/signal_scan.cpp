@@ -69,6 +69,7 @@ struct PoleSet {
     std::vector<int> order;          // ascending |lambda| (empty: already so)
     std::vector<SignalScanPole> poles;  // in that order
     std::vector<double> mags;        // |lambda|, in that order, contiguous
+    std::vector<double> res;         // Re lambda, in that order, contiguous
     double gamma = 0.0;              // largest Re lambda > 0, else 0
 };
 
@@ -90,6 +91,7 @@ std::shared_ptr<const PoleSet> make_pole_set(const Eigen::VectorXcd& lam) {
     }
     set->poles.resize(static_cast<std::size_t>(m));
     set->mags.resize(static_cast<std::size_t>(m));
+    set->res.resize(static_cast<std::size_t>(m));
     for (int j = 0; j < m; ++j) {
         const std::size_t k = static_cast<std::size_t>(sorted ? j : set->order[static_cast<std::size_t>(j)]);
         const double lr = lp[2 * k], li = lp[2 * k + 1];
@@ -99,6 +101,7 @@ std::shared_ptr<const PoleSet> make_pole_set(const Eigen::VectorXcd& lam) {
         pl.mag2 = lr * lr + li * li;  // std::norm's own formula
         pl.mag = std::sqrt(pl.mag2);
         set->mags[static_cast<std::size_t>(j)] = pl.mag;
+        set->res[static_cast<std::size_t>(j)] = lr;
         set->gamma = std::max(set->gamma, lr);
     }
     return set;
@@ -164,7 +167,9 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
     // |A|^2 into the contiguous array first, the square roots in one vectorised pass (sqrt is
     // correctly rounded either way), then into the modes.
     dead_.resize(static_cast<std::size_t>(m_));
-    double* amp = dead_.data();
+    thread_local std::vector<double> amps;
+    amps.resize(static_cast<std::size_t>(m_));
+    double* amp = amps.data();
     for (int j = 0; j < m_; ++j) {
         const std::size_t k = static_cast<std::size_t>(sorted ? j : set->order[static_cast<std::size_t>(j)]);
         const double ar = ap[2 * k], ai = ap[2 * k + 1];
@@ -187,17 +192,21 @@ SignalScan::SignalScan(const ExpSignal& f, double sign, double t_end) {
     // amp e^(re t) <= skip once t >= ln(amp / skip) / -re; ln x <= e ln 2 for x = mant 2^e, mant < 1,
     // so the exponent of frexp gives a time that is never early.
     constexpr double kInf = std::numeric_limits<double>::infinity();
-    for (int k = 0; k < m_; ++k) {
-        const double re = poles_[k].re, a = amp[k];
-        double& dk = dead_[static_cast<std::size_t>(k)];
-        if (re > 0.0) {
-            dk = kInf;  // roundoff of an undamped mode: may grow
-        } else if (a <= skip_) {
-            dk = 0.0;
-        } else if (re < 0.0) {
-            dk = frexp_exponent(a / skip_) * std::numbers::ln2 / -re;
-        } else {
-            dk = kInf;
+    if (std::isnormal(skip_) && std::isfinite(size_)) {
+        death_times(set->res.data(), amp, skip_, m_, dead_.data());
+    } else {
+        for (int k = 0; k < m_; ++k) {
+            const double re = poles_[k].re, a = amp[k];
+            double& dk = dead_[static_cast<std::size_t>(k)];
+            if (re > 0.0) {
+                dk = kInf;  // roundoff of an undamped mode: may grow
+            } else if (a <= skip_) {
+                dk = 0.0;
+            } else if (re < 0.0) {
+                dk = frexp_exponent(a / skip_) * std::numbers::ln2 / -re;
+            } else {
+                dk = kInf;
+            }
         }
     }
     pole_set_ = std::move(set);
