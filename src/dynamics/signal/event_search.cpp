@@ -118,28 +118,38 @@ SignalMaximum global_maximum(const ExpSignal& f, double tau_end, double size_tol
         }
     };
     // Best first: always refine the interval with the highest upper bound; once that bound cannot
-    // beat the best value seen, no interval can, and the search ends.
-    std::vector<Interval> heap;
+    // beat the best value seen, no interval can, and the search ends. The heap holds the bound and
+    // the indices of the ends in `points` (moving whole points about the heap cost more).
+    struct Span {
+        double bound;
+        int a, b;
+        bool operator<(const Span& o) const { return bound < o.bound; }
+    };
+    thread_local std::vector<Span> heap;
+    thread_local std::vector<ScanPoint> points;
+    heap.clear();
+    points.clear();
     // Without a run's budget, a bound of its own: no search runs without a limit on its work.
     long own_budget = 6000000;
     if (!budget) budget = &own_budget;
-    const ScanPoint p0 = scan.evaluate(0.0);
-    const ScanPoint p1 = scan.evaluate(tau_end);
-    consider(p0);
-    consider(p1);
-    heap.push_back({scan.upper_bound(p0, p1), p0, p1});
+    points.push_back(scan.evaluate(0.0));
+    points.push_back(scan.evaluate(tau_end));
+    consider(points[0]);
+    consider(points[1]);
+    heap.push_back({scan.upper_bound(points[0], points[1]), 0, 1});
     while (!heap.empty()) {
         charge_evaluations(budget, 3);
         std::pop_heap(heap.begin(), heap.end());
-        const Interval iv = heap.back();
+        const Span iv = heap.back();
         heap.pop_back();
         if (iv.bound <= best.value + margin) break;
-        const double half = 0.5 * (iv.b.t - iv.a.t);
-        const ScanPoint mid = scan.evaluate(iv.a.t + half);
-        consider(mid);
+        const double half = 0.5 * (points[static_cast<std::size_t>(iv.b)].t - points[static_cast<std::size_t>(iv.a)].t);
+        points.push_back(scan.evaluate(points[static_cast<std::size_t>(iv.a)].t + half));
+        const int mid = static_cast<int>(points.size()) - 1;
+        consider(points.back());
         if (half < h_min) continue;
         for (const auto& [a, b] : {std::pair{iv.a, mid}, std::pair{mid, iv.b}}) {
-            const double bound = scan.upper_bound(a, b);
+            const double bound = scan.upper_bound(points[static_cast<std::size_t>(a)], points[static_cast<std::size_t>(b)]);
             if (evals) ++*evals;
             if (bound > best.value + margin) {
                 heap.push_back({bound, a, b});
