@@ -409,6 +409,26 @@ void ExactRun::record_field(const PieceSolution& s, double tau) {
 
 // The samples up to the piece's end (the one at its end belongs to the next piece, but the last).
 void ExactRun::sample_piece(const PieceSolution& s) {
+    if (!o_.energy && o_.field_every == 0) {
+        // Without the ledger or field frames, up to 1024 samples at a time (the recurrence's runs
+        // computed together), watching the stop flag between them.
+        thread_local std::vector<double> tau, t_abs;
+        for (bool more = true; more;) {
+            tau.clear();
+            t_abs.clear();
+            while (next_sample_ + static_cast<long>(tau.size()) < n_samples_ && tau.size() < 1024) {
+                const double ts = std::min((next_sample_ + static_cast<long>(tau.size())) * dt_out_, p_.t_end);
+                if (ts > t_ + tau_e_ || (ts == t_ + tau_e_ && t_ + tau_e_ < p_.t_end)) break;
+                tau.push_back(ts - t_);
+                t_abs.push_back(ts);
+            }
+            more = tau.size() == 1024;
+            if (!tau.empty()) s.sample_many(tau.data(), t_abs.data(), static_cast<int>(tau.size()), active_, res_.history);
+            next_sample_ += static_cast<long>(tau.size());
+            if (more) check_run();
+        }
+        return;
+    }
     while (next_sample_ < n_samples_) {
         const double ts = std::min(next_sample_ * dt_out_, p_.t_end);
         if (ts > t_ + tau_e_ || (ts == t_ + tau_e_ && t_ + tau_e_ < p_.t_end)) break;

@@ -508,20 +508,33 @@ void accumulate_channels(const double* pack, const double* ep, const std::vector
 
 }  // namespace
 
-void PieceSolution::sampled_values(const std::vector<const ExpSignal*>& fs, double tau, std::vector<double>& out) const {
+void PieceSolution::pack_channels(const std::vector<const ExpSignal*>& fs) const {
     const std::size_t nf = fs.size();
     const std::size_t m = static_cast<std::size_t>(sample_e_.size());
-    if (sample_pack_.size() != 2 * nf * m) {
-        // The channels' amplitudes per mode side by side (real parts, then imaginary), once per piece.
-        sample_pack_.resize(2 * nf * m);
-        for (std::size_t k = 0; k < m; ++k) {
-            for (std::size_t j = 0; j < nf; ++j) {
-                const cd a = fs[j]->A[static_cast<Eigen::Index>(k)];
-                sample_pack_[2 * nf * k + j] = a.real();
-                sample_pack_[2 * nf * k + nf + j] = a.imag();
-            }
+    if (sample_pack_.size() == 2 * nf * m) return;
+    // The channels' amplitudes per mode side by side (real parts, then imaginary), once per piece.
+    sample_pack_.resize(2 * nf * m);
+    for (std::size_t k = 0; k < m; ++k) {
+        for (std::size_t j = 0; j < nf; ++j) {
+            const cd a = fs[j]->A[static_cast<Eigen::Index>(k)];
+            sample_pack_[2 * nf * k + j] = a.real();
+            sample_pack_[2 * nf * k + nf + j] = a.imag();
         }
     }
+}
+
+void PieceSolution::sampled_channels(std::vector<const ExpSignal*>& out) const {
+    out.assign({&watched_v_, &watched_vel_});
+    for (std::size_t c = 0; c < v_.size(); ++c) {
+        out.push_back(&v_[c]);
+        out.push_back(&vel_[c]);
+        out.push_back(&force_[c]);
+    }
+}
+
+void PieceSolution::sampled_values(const std::vector<const ExpSignal*>& fs, double tau, std::vector<double>& out) const {
+    const std::size_t nf = fs.size();
+    pack_channels(fs);
     // All channels in one pass over the live modes, real parts only: Re sum A_k e_k summed in the
     // same order as the complex sum, the same value to the last bit.
     out.assign(nf, 0.0);
@@ -548,12 +561,7 @@ void PieceSolution::sample(double tau, double t_abs, const std::vector<bool>& ac
     const Eigen::VectorXcd& e = sample_exponentials(tau, t_abs, energy);
     thread_local std::vector<const ExpSignal*> channels;
     thread_local std::vector<double> values;
-    channels.assign({&watched_v_, &watched_vel_});
-    for (std::size_t c = 0; c < nc; ++c) {
-        channels.push_back(&v_[c]);
-        channels.push_back(&vel_[c]);
-        channels.push_back(&force_[c]);
-    }
+    sampled_channels(channels);
     sampled_values(channels, tau, values);
     h.t.push_back(t_abs);
     h.watched_v.push_back(values[0]);

@@ -86,6 +86,11 @@ public:
     void accumulate_dissipation(double tau, EnergyLedger& ledger) const;
     void sample(double tau, double t_abs, const std::vector<bool>& active, TimeHistory& h, bool energy,
                 const EnergyLedger& start) const;
+    // sample() at count samples in time order (tau[i] in the piece, t_abs[i] absolute), without the
+    // energy ledger: the same values to the last bit, each run of samples that follow an anchor
+    // by the recurrence computed together (dynamics/exact/piece_samples.cpp).
+    void sample_many(const double* tau, const double* t_abs, int count, const std::vector<bool>& active,
+                     TimeHistory& h) const;
 
 private:
     using Term = ForcingTerm;
@@ -129,6 +134,10 @@ private:
     // The channels fs at the sample tau (after sample_exponentials), into out; the same channels at
     // every sample of the piece.
     void sampled_values(const std::vector<const ExpSignal*>& fs, double tau, std::vector<double>& out) const;
+    // The sampled channels (watched v and velocity, then per contact v, velocity and F), and their
+    // amplitudes packed per mode (sample_pack_) once per piece.
+    void sampled_channels(std::vector<const ExpSignal*>& out) const;
+    void pack_channels(const std::vector<const ExpSignal*>& fs) const;
     mutable double sample_tau_ = -1.0, sample_dt_ = -1.0;
     mutable int sample_run_ = 0;
     mutable Eigen::VectorXcd sample_e_, sample_step_;

@@ -20,3 +20,23 @@ void add_mode_columns(const double* vr, const double* vi, long ld, int n, const 
 }
 
 }  // namespace vi
+
+namespace vi {
+
+__attribute__((target_clones("avx512f", "avx2", "default")))
+void add_channel_runs(const double* pack, int nf, const int* live, int nl, const double* er, const double* ei, int S,
+                      double* acc) {
+    for (int l = 0; l < nl; ++l) {
+        const double* ar = pack + 2 * static_cast<long>(nf) * live[l];
+        const double* ai = ar + nf;
+        const double* xr = er + static_cast<long>(l) * S;
+        const double* xi = ei + static_cast<long>(l) * S;
+        for (int j = 0; j < nf; ++j) {
+            const double a = ar[j], b = ai[j];
+            double* out = acc + static_cast<long>(j) * S;
+            for (int s = 0; s < S; ++s) out[s] += a * xr[s] - b * xi[s];
+        }
+    }
+}
+
+}  // namespace vi
