@@ -19,10 +19,7 @@ void add_mode_columns(const double* vr, const double* vi, long ld, int n, const 
     }
 }
 
-}  // namespace vi
-
-namespace vi {
-
+// Vectorised across the samples of the run (each sum over the modes stays in mode order).
 __attribute__((target_clones("avx512f", "avx2", "default")))
 void add_channel_runs(const double* pack, int nf, const int* live, int nl, const double* er, const double* ei, int S,
                       double* acc) {

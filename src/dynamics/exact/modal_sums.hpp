@@ -1,6 +1,7 @@
 #pragma once
-// Sums over the modes' vectors in plain loops built for several vector widths: a piece's end state
-// x = sum_k Re(w_k [v_k; lambda_k v_k]) (StateModes::state).
+// Sums over the modes in plain loops built for several vector widths, rounding alike on every
+// processor: a piece's end state x = sum_k Re(w_k [v_k; lambda_k v_k]) (StateModes::state) and the
+// history's channels over a run of samples (PieceSolution::sample_many).
 
 namespace vi {
 
@@ -9,10 +10,6 @@ namespace vi {
 // Each entry rounds as head[i] + (wr vr[i] - wi vi[i]) in that order, on every processor.
 void add_mode_columns(const double* vr, const double* vi, long ld, int n, const int* col, const double* coef,
                       int count, double* head, double* tail);
-
-}  // namespace vi
-
-namespace vi {
 
 // The history's channels over a run of S samples: for each of the nl live modes l (mode live[l]) in
 // order, acc[j S + s] += ar_j er[l S + s] - ai_j ei[l S + s] for the nf channels j, where

@@ -61,7 +61,6 @@ thread_local SpareStore spare;
 
 }  // namespace
 
-
 // What a scan needs of the exponents alone, kept for the last few sets seen on this thread: the
 // pieces of one contact state share them, and each piece scans several signals.
 struct PoleSet {
