@@ -37,13 +37,15 @@ double constant_part(const ExpSignal& f) {
     return v;
 }
 
+// The episode peaks' tolerance relative to the peak, and every maximum's relative to the signal's size.
+constexpr double kPeakTolerance = 1e-7;
+constexpr double kSizeTolerance = 64.0 * std::numeric_limits<double>::epsilon();
+
 // Largest value of f over [0, tau_end] and where, to rel_tol of the maximum itself: 1e-9 for y_max
 // and the deepest deflection, 1e-7 for episode peaks (plotted quantities; the FE model itself is
 // no closer than ~1e-6 to the continuum at m = 50). Relative to the maximum, not to the signal's
 // amplitudes, so that the tiny penetration of a grazing contact is still resolved; never finer than
 // roundoff of the signal.
-constexpr double kPeakTolerance = 1e-7;
-constexpr double kSizeTolerance = 64.0 * std::numeric_limits<double>::epsilon();
 SignalMaximum maximum_over(const ExpSignal& f, double tau_end, const CrossingSearch& cs, int* evals,
                            double floor = -std::numeric_limits<double>::infinity(), double rel_tol = 1e-9,
                            double sign = 1.0) {
