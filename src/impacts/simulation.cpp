@@ -157,13 +157,12 @@ SimulationRun run_simulation(const Case& c, const SimulationOptions& o) {
     to.field_every = o.field && o.history ? field_every(c.solver, run.built.problem.size()) : 0;
     if (o.stop_when) to.stop_when = o.stop_when(c, run.built);
     // The switching ledger lists every contact's peak force: with electrodes every peak is computed.
-    if (o.peak_impacts >= 0 && c.electrodes.empty()) {
-        to.peak_level = leading_impacts_peak_level(impact_settings(c, run.built), o.peak_impacts);
-    }
+    const ImpactSettings settings = impact_settings(c, run.built);
+    if (o.peak_impacts >= 0 && c.electrodes.empty()) to.peak_level = leading_impacts_peak_level(settings, o.peak_impacts);
     run.result = solve_transient(c, run.built.problem, to);
     const bool at_rest = released_at_rest(run.built);
     require_first_impact(c, run, at_rest);
-    run.summary = summarize_impacts(run.result, impact_settings(c, run.built));
+    run.summary = summarize_impacts(run.result, settings);
     if (at_rest && run.summary.impacts.empty()) {
         run.summary.Tp = 0.0;
         run.summary.Tp_reason = "at_rest";
