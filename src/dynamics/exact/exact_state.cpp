@@ -509,26 +509,35 @@ void accumulate_channels(const double* pack, const double* ep, const std::vector
 }  // namespace
 
 void PieceSolution::pack_channels(const std::vector<const ExpSignal*>& fs) const {
+    if (sample_pack_of_ == fs) return;
     const std::size_t nf = fs.size();
     const std::size_t m = static_cast<std::size_t>(sample_e_.size());
-    if (sample_pack_.size() == 2 * nf * m) return;
-    // The channels' amplitudes per mode side by side (real parts, then imaginary), once per piece.
-    sample_pack_.resize(2 * nf * m);
+    // The channels' amplitudes per mode side by side (real parts, then imaginary), once per piece
+    // (every entry written: no zeroing first).
+    sample_pack_.resize(static_cast<Eigen::Index>(2 * nf * m));
+    double* pack = sample_pack_.data();
     for (std::size_t k = 0; k < m; ++k) {
         for (std::size_t j = 0; j < nf; ++j) {
             const cd a = fs[j]->A[static_cast<Eigen::Index>(k)];
-            sample_pack_[2 * nf * k + j] = a.real();
-            sample_pack_[2 * nf * k + nf + j] = a.imag();
+            pack[2 * nf * k + j] = a.real();
+            pack[2 * nf * k + nf + j] = a.imag();
         }
     }
+    sample_pack_of_ = fs;
 }
 
-void PieceSolution::sampled_channels(std::vector<const ExpSignal*>& out) const {
+void PieceSolution::sampled_channels(const std::vector<bool>& active, std::vector<const ExpSignal*>& out,
+                                     std::vector<int>& force_at) const {
     out.assign({&watched_v_, &watched_vel_});
+    force_at.assign(v_.size(), -1);
     for (std::size_t c = 0; c < v_.size(); ++c) {
         out.push_back(&v_[c]);
         out.push_back(&vel_[c]);
-        out.push_back(&force_[c]);
+        // An open contact's force is recorded as 0: its channel is not summed.
+        if (c < active.size() && active[c]) {
+            force_at[c] = static_cast<int>(out.size());
+            out.push_back(&force_[c]);
+        }
     }
 }
 
@@ -539,10 +548,14 @@ void PieceSolution::sampled_values(const std::vector<const ExpSignal*>& fs, doub
     // same order as the complex sum, the same value to the last bit.
     out.assign(nf, 0.0);
     const double* ep = reinterpret_cast<const double*>(sample_e_.data());
-    switch (nf) {  // a fixed count keeps the sums in registers (one or two contacts)
-        case 5: accumulate_channels<5>(sample_pack_.data(), ep, sample_live_, out.data()); break;
-        case 8: accumulate_channels<8>(sample_pack_.data(), ep, sample_live_, out.data()); break;
-        default: accumulate_channels<0>(sample_pack_.data(), ep, sample_live_, out.data(), nf); break;
+    const double* pack = sample_pack_.data();
+    switch (nf) {  // a fixed count keeps the sums in registers (one or two contacts, open or closed)
+        case 4: accumulate_channels<4>(pack, ep, sample_live_, out.data()); break;
+        case 5: accumulate_channels<5>(pack, ep, sample_live_, out.data()); break;
+        case 6: accumulate_channels<6>(pack, ep, sample_live_, out.data()); break;
+        case 7: accumulate_channels<7>(pack, ep, sample_live_, out.data()); break;
+        case 8: accumulate_channels<8>(pack, ep, sample_live_, out.data()); break;
+        default: accumulate_channels<0>(pack, ep, sample_live_, out.data(), nf); break;
     }
     for (std::size_t j = 0; j < nf; ++j) {
         for (const ExpTerm& t : fs[j]->terms) out[j] += term_derivative(t, tau, 0).real();
@@ -560,16 +573,18 @@ void PieceSolution::sample(double tau, double t_abs, const std::vector<bool>& ac
     // One set of exponentials serves every channel, the state and the energy terms.
     const Eigen::VectorXcd& e = sample_exponentials(tau, t_abs, energy);
     thread_local std::vector<const ExpSignal*> channels;
+    thread_local std::vector<int> force_at;
     thread_local std::vector<double> values;
-    sampled_channels(channels);
+    sampled_channels(active, channels, force_at);
     sampled_values(channels, tau, values);
     h.t.push_back(t_abs);
     h.watched_v.push_back(values[0]);
     h.watched_velocity.push_back(values[1]);
+    std::size_t j = 2;
     for (std::size_t c = 0; c < nc; ++c) {
-        h.contact_v[c].push_back(values[2 + 3 * c]);
-        h.contact_velocity[c].push_back(values[3 + 3 * c]);
-        h.contact_force[c].push_back(active[c] ? values[4 + 3 * c] : 0.0);
+        h.contact_v[c].push_back(values[j++]);
+        h.contact_velocity[c].push_back(values[j++]);
+        h.contact_force[c].push_back(force_at[c] >= 0 ? values[j++] : 0.0);
     }
     if (energy) h.energy.push_back(energy_at(tau, start, e));
 }

@@ -134,16 +134,19 @@ private:
     // The channels fs at the sample tau (after sample_exponentials), into out; the same channels at
     // every sample of the piece.
     void sampled_values(const std::vector<const ExpSignal*>& fs, double tau, std::vector<double>& out) const;
-    // The sampled channels (watched v and velocity, then per contact v, velocity and F), and their
-    // amplitudes packed per mode (sample_pack_) once per piece.
-    void sampled_channels(std::vector<const ExpSignal*>& out) const;
+    // The sampled channels (watched v and velocity, then per contact v, velocity and, if `active`
+    // closes it, F at index force_at[c]; -1 for an open one), and their amplitudes packed per mode
+    // (sample_pack_) once per piece.
+    void sampled_channels(const std::vector<bool>& active, std::vector<const ExpSignal*>& out,
+                          std::vector<int>& force_at) const;
     void pack_channels(const std::vector<const ExpSignal*>& fs) const;
     mutable double sample_tau_ = -1.0, sample_dt_ = -1.0;
     mutable int sample_run_ = 0;
     mutable Eigen::VectorXcd sample_e_, sample_step_;
     mutable Eigen::VectorXd sample_weight_;  // per mode: the largest |A_k|^2 of the sampled channels
     mutable double sample_floor2_ = 0.0;     // (1e-18 of the sum of the largest |A_k|)^2
-    mutable std::vector<double> sample_pack_;  // per mode: the sampled channels' Re A_k, then Im A_k
+    mutable Eigen::VectorXd sample_pack_;  // per mode: the sampled channels' Re A_k, then Im A_k
+    mutable std::vector<const ExpSignal*> sample_pack_of_;  // the channels packed there
     mutable std::vector<int> sample_live_;
     mutable bool energy_ready_ = false;
     mutable cd a_wc_a_;                        // a^T (W .* cauchy) a

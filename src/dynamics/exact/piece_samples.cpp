@@ -13,6 +13,12 @@
 
 namespace vi {
 
+namespace {
+// Samples summed together at most: a run's exponentials and sums (about 40 live modes x 16 samples)
+// stay in the first-level cache; the recurrence goes on across blocks, so the values do not change.
+constexpr int kSampleBlock = 16;
+}  // namespace
+
 void PieceSolution::sample_many(const double* tau, const double* t_abs, int count, const std::vector<bool>& active,
                                 TimeHistory& h) const {
     const std::size_t nc = p_->contacts.size();
@@ -22,8 +28,9 @@ void PieceSolution::sample_many(const double* tau, const double* t_abs, int coun
         h.contact_force.resize(nc);
     }
     thread_local std::vector<const ExpSignal*> channels;
-    thread_local std::vector<double> er, ei, acc;
-    sampled_channels(channels);
+    thread_local std::vector<int> force_at;
+    thread_local std::vector<double> er, ei, acc;  // grown only: every entry used is written first
+    sampled_channels(active, channels, force_at);
     const int nf = static_cast<int>(channels.size());
     for (int i = 0; i < count;) {
         // Sample i as sample() takes it (an anchor or one step of the recurrence).
@@ -31,15 +38,17 @@ void PieceSolution::sample_many(const double* tau, const double* t_abs, int coun
         pack_channels(channels);
         // The samples after it that sample() would take by the recurrence.
         int run = 0;
-        for (int j = i + 1; j < count && sample_run_ + run < kSampleAnchor; ++j) {
+        for (int j = i + 1; j < count && sample_run_ + run < kSampleAnchor && run + 1 < kSampleBlock; ++j) {
             const double dt = tau[j] - tau[j - 1];
             if (!(dt > 0.0 && std::abs(dt - sample_dt_) <= 8.0 * std::numeric_limits<double>::epsilon() * t_abs[j])) break;
             ++run;
         }
         const int S = run + 1;
         const int nl = static_cast<int>(sample_live_.size());
-        er.resize(static_cast<std::size_t>(nl * S));
-        ei.resize(static_cast<std::size_t>(nl * S));
+        if (er.size() < static_cast<std::size_t>(nl * S)) {
+            er.resize(static_cast<std::size_t>(nl * S));
+            ei.resize(static_cast<std::size_t>(nl * S));
+        }
         // Per live mode, its exponentials at the S samples: e, e step, (e step) step, ... as sample()
         // multiplies them (a complex product written out: re = ac - bd, im = ad + bc).
         for (int l = 0; l < nl; ++l) {
@@ -63,7 +72,7 @@ void PieceSolution::sample_many(const double* tau, const double* t_abs, int coun
         }
         sample_run_ += run;
         sample_tau_ = tau[i + run];
-        acc.assign(static_cast<std::size_t>(nf * S), 0.0);
+        if (acc.size() < static_cast<std::size_t>(nf * S)) acc.resize(static_cast<std::size_t>(nf * S));
         add_channel_runs(sample_pack_.data(), nf, sample_live_.data(), nl, er.data(), ei.data(), S, acc.data());
         for (int s = 0; s < S; ++s) {
             auto value = [&](int j) {
@@ -74,11 +83,11 @@ void PieceSolution::sample_many(const double* tau, const double* t_abs, int coun
             h.t.push_back(t_abs[i + s]);
             h.watched_v.push_back(value(0));
             h.watched_velocity.push_back(value(1));
+            int j = 2;
             for (std::size_t c = 0; c < nc; ++c) {
-                const int j = 2 + 3 * static_cast<int>(c);
-                h.contact_v[c].push_back(value(j));
-                h.contact_velocity[c].push_back(value(j + 1));
-                h.contact_force[c].push_back(active[c] ? value(j + 2) : 0.0);
+                h.contact_v[c].push_back(value(j++));
+                h.contact_velocity[c].push_back(value(j++));
+                h.contact_force[c].push_back(force_at[c] >= 0 ? value(j++) : 0.0);
             }
         }
         i += S;
