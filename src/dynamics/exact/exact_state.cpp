@@ -387,32 +387,38 @@ ExpSignal PieceSolution::channel(const Eigen::RowVectorXcd& row, double scale, d
 }
 
 Eigen::VectorXcd PieceSolution::exponentials(double tau) const {
+    Eigen::VectorXcd e(s_->modes.lambda.size());
+    exponentials_into(tau, nullptr, e);
+    return e;
+}
+
+void PieceSolution::exponentials_into(double tau, const std::vector<int>* modes, Eigen::VectorXcd& e) const {
     const Eigen::VectorXcd& lam = s_->modes.lambda;
-    const Eigen::Index m = lam.size();
-    Eigen::VectorXcd e(m);
+    const std::size_t n = modes ? modes->size() : static_cast<std::size_t>(lam.size());
+    const int* idx = modes ? modes->data() : nullptr;
+    auto mode = [idx](std::size_t i) { return static_cast<Eigen::Index>(idx ? idx[i] : static_cast<int>(i)); };
     if (tau == 0.0) {
-        e.setOnes();
-        return e;
+        for (std::size_t i = 0; i < n; ++i) e[mode(i)] = 1.0;
+        return;
     }
-    // In the scans' vectorised pass (the same values they use), and 0 below exp(-707) as fast_exp.
+    // In the scans' vectorised pass (the same values they use: each lane rounds alike), and 0 below
+    // exp(-707) as fast_exp.
     thread_local std::vector<double> scratch;
-    const std::size_t n = static_cast<std::size_t>(m);
     if (scratch.size() < 5 * n) scratch.resize(5 * n);
     double* x = scratch.data();
     double* y = x + n;
-    for (std::size_t k = 0; k < n; ++k) {
-        x[k] = lam[static_cast<Eigen::Index>(k)].real() * tau;
-        y[k] = lam[static_cast<Eigen::Index>(k)].imag() * tau;
+    for (std::size_t i = 0; i < n; ++i) {
+        x[i] = lam[mode(i)].real() * tau;
+        y[i] = lam[mode(i)].imag() * tau;
     }
     double* ex = y + n;
     double* co = ex + n;
     double* si = co + n;
-    exp_sincos(x, y, ex, co, si, static_cast<int>(m));
-    for (std::size_t k = 0; k < n; ++k) {
-        const double g = x[k] < -707.0 ? 0.0 : ex[k];
-        e[static_cast<Eigen::Index>(k)] = cd(g * co[k], g * si[k]);
+    exp_sincos(x, y, ex, co, si, static_cast<int>(n));
+    for (std::size_t i = 0; i < n; ++i) {
+        const double g = x[i] < -707.0 ? 0.0 : ex[i];
+        e[mode(i)] = cd(g * co[i], g * si[i]);
     }
-    return e;
 }
 
 Eigen::VectorXcd PieceSolution::full_exponentials(const Eigen::VectorXcd& e) const {
@@ -449,35 +455,59 @@ const Eigen::VectorXcd& PieceSolution::sample_exponentials(double tau, double t_
         for (int k : sample_live_) sample_e_[k] *= sample_step_[k];
         ++sample_run_;
     } else {
+        const Eigen::Index m = s_->modes.lambda.size();
+        if (sample_decaying_ < 0) sample_decaying_ = s_->modes.lambda.real().maxCoeff() <= 0.0 ? 1 : 0;
+        // After the piece's first sample, a mode found dead stays dead (|exp(lambda tau)| does not
+        // grow when no exponent has a positive real part): only the live ones are formed and tested.
+        const bool narrowed = !all_modes && sample_tau_ >= 0.0 && sample_decaying_ == 1;
         if (sample_tau_ >= 0.0 && dt > 0.0 && !same_step) {
             sample_dt_ = dt;
-            sample_step_ = exponentials(dt);
+            if (narrowed) {
+                if (sample_step_.size() != m) sample_step_.setOnes(m);
+                exponentials_into(dt, &sample_live_, sample_step_);
+            } else {
+                sample_step_ = exponentials(dt);
+            }
         }
-        sample_e_ = exponentials(tau);
-        sample_run_ = 0;
-        const Eigen::Index m = sample_e_.size();
-        sample_live_.clear();
-        if (all_modes) {
-            for (Eigen::Index k = 0; k < m; ++k) sample_live_.push_back(static_cast<int>(k));
+        if (narrowed) {
+            exponentials_into(tau, &sample_live_, sample_e_);
         } else {
-            if (sample_weight_.size() != m) {
-                // Squared magnitudes (no hypot): only compared with a threshold far below roundoff.
-                sample_weight_ = watched_v_.A.cwiseAbs2().cwiseMax(watched_vel_.A.cwiseAbs2());
-                for (std::size_t c = 0; c < v_.size(); ++c) {
-                    sample_weight_ = sample_weight_.cwiseMax(v_[c].A.cwiseAbs2())
-                                         .cwiseMax(vel_[c].A.cwiseAbs2())
-                                         .cwiseMax(force_[c].A.cwiseAbs2());
-                }
-                const double floor = 1e-18 * sample_weight_.cwiseSqrt().sum();
-                sample_floor2_ = floor * floor;
-            }
-            for (Eigen::Index k = 0; k < m; ++k) {
-                if (sample_weight_[k] * std::norm(sample_e_[k]) > sample_floor2_) sample_live_.push_back(static_cast<int>(k));
-            }
+            sample_e_ = exponentials(tau);
         }
+        sample_run_ = 0;
+        select_live_modes(all_modes, narrowed);
     }
     sample_tau_ = tau;
     return sample_e_;
+}
+
+void PieceSolution::select_live_modes(bool all_modes, bool narrowed) const {
+    const Eigen::Index m = sample_e_.size();
+    if (all_modes) {
+        sample_live_.clear();
+        for (Eigen::Index k = 0; k < m; ++k) sample_live_.push_back(static_cast<int>(k));
+        return;
+    }
+    if (sample_weight_.size() != m) {
+        // Squared magnitudes (no hypot): only compared with a threshold far below roundoff.
+        sample_weight_ = watched_v_.A.cwiseAbs2().cwiseMax(watched_vel_.A.cwiseAbs2());
+        for (std::size_t c = 0; c < v_.size(); ++c) {
+            sample_weight_ = sample_weight_.cwiseMax(v_[c].A.cwiseAbs2())
+                                 .cwiseMax(vel_[c].A.cwiseAbs2())
+                                 .cwiseMax(force_[c].A.cwiseAbs2());
+        }
+        const double floor = 1e-18 * sample_weight_.cwiseSqrt().sum();
+        sample_floor2_ = floor * floor;
+    }
+    auto live = [&](int k) { return sample_weight_[k] * std::norm(sample_e_[k]) > sample_floor2_; };
+    if (narrowed) {
+        std::erase_if(sample_live_, [&](int k) { return !live(k); });
+        return;
+    }
+    sample_live_.clear();
+    for (Eigen::Index k = 0; k < m; ++k) {
+        if (live(static_cast<int>(k))) sample_live_.push_back(static_cast<int>(k));
+    }
 }
 
 namespace {

@@ -76,6 +76,8 @@ public:
     // The representatives' exponentials at tau (exp_sincos: within 4 ulps, 0 below exp(-707)), and the
     // state from them (the same as state_at(tau)).
     [[nodiscard]] Eigen::VectorXcd exponentials(double tau) const;
+    // The same into e for the listed modes only (all when `modes` is null); the others untouched.
+    void exponentials_into(double tau, const std::vector<int>* modes, Eigen::VectorXcd& e) const;
     [[nodiscard]] Eigen::VectorXd state_at(double tau, const Eigen::VectorXcd& e) const;
     // With a constant forcing (no load ramps or harmonics in the piece), the mechanical energy of the
     // motion about the piece's own equilibrium at its start [J]: what is left to move; -1 otherwise.
@@ -131,6 +133,8 @@ private:
     // the channels' summed amplitudes (a heavily damped mode soon after a switch is not), compared
     // in squares.
     [[nodiscard]] const Eigen::VectorXcd& sample_exponentials(double tau, double t_abs, bool all_modes) const;
+    // sample_live_ at an anchor: every mode, or those above the threshold (narrowed: of those live so far).
+    void select_live_modes(bool all_modes, bool narrowed) const;
     // The channels fs at the sample tau (after sample_exponentials), into out; the same channels at
     // every sample of the piece.
     void sampled_values(const std::vector<const ExpSignal*>& fs, double tau, std::vector<double>& out) const;
@@ -148,6 +152,7 @@ private:
     mutable Eigen::VectorXd sample_pack_;  // per mode: the sampled channels' Re A_k, then Im A_k
     mutable std::vector<const ExpSignal*> sample_pack_of_;  // the channels packed there
     mutable std::vector<int> sample_live_;
+    mutable int sample_decaying_ = -1;  // 1: no exponent with a positive real part; -1: not yet known
     mutable bool energy_ready_ = false;
     mutable cd a_wc_a_;                        // a^T (W .* cauchy) a
     mutable std::vector<Eigen::VectorXcd> wC_; // W C_m per particular term
