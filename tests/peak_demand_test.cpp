@@ -126,11 +126,18 @@ ContactEpisode episode(int support, double t_on, double t_off, double peak) {
     return e;
 }
 
-TEST(PeakDemand, LevelFollowsTheSummarysGrouping) {
+// Settings whose grouping gap is `gap` (first period 2 pi) and whose settle threshold is 0.1 of
+// the first impact's peak.
+ImpactSettings grouping_settings(double gap) {
     ImpactSettings s;
     s.omega1 = 1.0;
-    s.group_gap = 1.0;
+    s.group_gap = gap;
     s.settle_tolerance = 0.1;
+    return s;
+}
+
+TEST(PeakDemand, LevelFollowsTheSummarysGrouping) {
+    ImpactSettings s = grouping_settings(1.0);
     auto level = leading_impacts_peak_level(s, 2);
     std::vector<ContactEpisode> eps;
     auto next = [&](ContactEpisode e) {
@@ -157,10 +164,7 @@ TEST(PeakDemand, LevelFollowsTheSummarysGrouping) {
 }
 
 TEST(PeakDemand, TiedOnsetsCountAsLeading) {
-    ImpactSettings s;
-    s.omega1 = 1.0;
-    s.group_gap = 0.5;
-    s.settle_tolerance = 0.1;
+    const ImpactSettings s = grouping_settings(0.5);
     auto level = leading_impacts_peak_level(s, 1);
     std::vector<ContactEpisode> eps{episode(0, 1.0, 2.0, 4.0)};
     EXPECT_EQ(level(eps), -kInf);

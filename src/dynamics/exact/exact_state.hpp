@@ -76,8 +76,6 @@ public:
     // The representatives' exponentials at tau (exp_sincos: within 4 ulps, 0 below exp(-707)), and the
     // state from them (the same as state_at(tau)).
     [[nodiscard]] Eigen::VectorXcd exponentials(double tau) const;
-    // The same into e for the listed modes only (all when `modes` is null); the others untouched.
-    void exponentials_into(double tau, const std::vector<int>* modes, Eigen::VectorXcd& e) const;
     [[nodiscard]] Eigen::VectorXd state_at(double tau, const Eigen::VectorXcd& e) const;
     // With a constant forcing (no load ramps or harmonics in the piece), the mechanical energy of the
     // motion about the piece's own equilibrium at its start [J]: what is left to move; -1 otherwise.
@@ -133,6 +131,8 @@ private:
     // the channels' summed amplitudes (a heavily damped mode soon after a switch is not), compared
     // in squares.
     [[nodiscard]] const Eigen::VectorXcd& sample_exponentials(double tau, double t_abs, bool all_modes) const;
+    // exponentials(tau) into e for the listed modes only (all when `modes` is null); the others untouched.
+    void exponentials_into(double tau, const std::vector<int>* modes, Eigen::VectorXcd& e) const;
     // sample_live_ at an anchor: every mode, or those above the threshold (narrowed: of those live so far).
     void select_live_modes(bool all_modes, bool narrowed) const;
     // The channels fs at the sample tau (after sample_exponentials), into out; the same channels at
