@@ -607,15 +607,7 @@ void PieceSolution::sample(double tau, double t_abs, const std::vector<bool>& ac
     thread_local std::vector<double> values;
     sampled_channels(active, channels, force_at);
     sampled_values(channels, tau, values);
-    h.t.push_back(t_abs);
-    h.watched_v.push_back(values[0]);
-    h.watched_velocity.push_back(values[1]);
-    std::size_t j = 2;
-    for (std::size_t c = 0; c < nc; ++c) {
-        h.contact_v[c].push_back(values[j++]);
-        h.contact_velocity[c].push_back(values[j++]);
-        h.contact_force[c].push_back(force_at[c] >= 0 ? values[j++] : 0.0);
-    }
+    record_sample(h, t_abs, force_at, [&](int j) { return values[static_cast<std::size_t>(j)]; });
     if (energy) h.energy.push_back(energy_at(tau, start, e));
 }
 

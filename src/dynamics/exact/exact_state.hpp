@@ -161,6 +161,21 @@ private:
     mutable std::vector<std::vector<cd>> gC_;  // per contact: g^T C_m
 };
 
+// Appends one sample at t to h: the watched point's v and velocity, then per contact v, velocity and
+// F (0 when force_at[c] < 0: open), reading the sampled channels in that order through value(j).
+template <class Value>
+void record_sample(TimeHistory& h, double t, const std::vector<int>& force_at, const Value& value) {
+    h.t.push_back(t);
+    h.watched_v.push_back(value(0));
+    h.watched_velocity.push_back(value(1));
+    int j = 2;
+    for (std::size_t c = 0; c < force_at.size(); ++c) {
+        h.contact_v[c].push_back(value(j++));
+        h.contact_velocity[c].push_back(value(j++));
+        h.contact_force[c].push_back(force_at[c] >= 0 ? value(j++) : 0.0);
+    }
+}
+
 // The model shared by all pieces: base modes and a cache of decomposed contact states.
 class ExactModel {
 public:

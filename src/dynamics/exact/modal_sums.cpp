@@ -23,20 +23,8 @@ void add_mode_columns(const double* vr, const double* vi, long ld, int n, const 
 __attribute__((target_clones("avx512f", "avx2", "default")))
 void add_channel_runs(const double* pack, int nf, const int* live, int nl, const double* er, const double* ei, int S,
                       double* acc) {
-    if (nl == 0) {
-        for (long i = 0; i < static_cast<long>(nf) * S; ++i) acc[i] = 0.0;
-        return;
-    }
-    {  // the first mode sets the sums (0 + x, not x: the same signed zero as a sum started at 0)
-        const double* ar = pack + 2 * static_cast<long>(nf) * live[0];
-        const double* ai = ar + nf;
-        for (int j = 0; j < nf; ++j) {
-            const double a = ar[j], b = ai[j];
-            double* out = acc + static_cast<long>(j) * S;
-            for (int s = 0; s < S; ++s) out[s] = 0.0 + (a * er[s] - b * ei[s]);
-        }
-    }
-    for (int l = 1; l < nl; ++l) {
+    for (long i = 0; i < static_cast<long>(nf) * S; ++i) acc[i] = 0.0;
+    for (int l = 0; l < nl; ++l) {
         const double* ar = pack + 2 * static_cast<long>(nf) * live[l];
         const double* ai = ar + nf;
         const double* xr = er + static_cast<long>(l) * S;

@@ -12,8 +12,8 @@ void add_mode_columns(const double* vr, const double* vi, long ld, int n, const 
                       int count, double* head, double* tail);
 
 // The history's channels over a run of S samples: for each of the nl live modes l (mode live[l]) in
-// order, acc[j S + s] += ar_j er[l S + s] - ai_j ei[l S + s] for the nf channels j (acc set, not
-// read: its nf S entries start from 0), where
+// order, acc[j S + s] += ar_j er[l S + s] - ai_j ei[l S + s] for the nf channels j (acc's nf S
+// entries set to 0 first), where
 // ar_j = pack[2 nf k + j] and ai_j = pack[2 nf k + nf + j] for k = live[l]: each sum formed in mode order,
 // as one sample at a time forms it.
 void add_channel_runs(const double* pack, int nf, const int* live, int nl, const double* er, const double* ei, int S,

@@ -80,15 +80,7 @@ void PieceSolution::sample_many(const double* tau, const double* t_abs, int coun
                 for (const ExpTerm& t : channels[static_cast<std::size_t>(j)]->terms) v += term_derivative(t, tau[i + s], 0).real();
                 return v;
             };
-            h.t.push_back(t_abs[i + s]);
-            h.watched_v.push_back(value(0));
-            h.watched_velocity.push_back(value(1));
-            int j = 2;
-            for (std::size_t c = 0; c < nc; ++c) {
-                h.contact_v[c].push_back(value(j++));
-                h.contact_velocity[c].push_back(value(j++));
-                h.contact_force[c].push_back(force_at[c] >= 0 ? value(j++) : 0.0);
-            }
+            record_sample(h, t_abs[i + s], force_at, value);
         }
         i += S;
     }
