@@ -10,6 +10,7 @@ DielectricContact::DielectricContact(std::string name, std::vector<int> dofs, st
                                      PadGeometry geometry, double line_stiffness)
     : name_(std::move(name)), dofs_(std::move(dofs)), points_(std::move(points)), geometry_(geometry),
       stiffness_(line_stiffness) {
+    runs_ = point_runs(points_);
     if (points_.empty() || std::abs(geometry_.sign) != 1.0 || !(stiffness_ > 0.0) || !std::isfinite(stiffness_)) {
         throw std::invalid_argument(name_ + ": inconsistent dielectric contact data");
     }
@@ -21,18 +22,19 @@ DielectricContact::DielectricContact(std::string name, std::vector<int> dofs, st
     law_ = law;
 }
 
-double DielectricContact::penetration(const PadPoint& p, const double* q) const {
-    return geometry_.sign * point_displacement(p, q) - (geometry_.gap - geometry_.dielectric_thickness);
-}
-
 std::size_t DielectricContact::deepest(const double* q) const {
     std::size_t best = 0;
     double d = -std::numeric_limits<double>::infinity();
-    for (std::size_t k = 0; k < points_.size(); ++k) {
-        const double dk = penetration(points_[k], q);
-        if (dk > d) {
-            d = dk;
-            best = k;
+    const double depth = geometry_.gap - geometry_.dielectric_thickness;
+    for (const PointRun& r : runs_) {
+        const std::array<double, 4> qe = run_dofs(r, q);
+        for (std::size_t k = r.begin; k < r.end; ++k) {
+            // penetration(points_[k], q), the DOFs gathered once per run
+            const double dk = geometry_.sign * run_displacement(points_[k], qe) - depth;
+            if (dk > d) {
+                d = dk;
+                best = k;
+            }
         }
     }
     return best;
@@ -108,17 +110,32 @@ ContactReading DielectricContact::contact_reading(const ElementState& s) const {
     ContactReading r;
     const PadPoint& p = points_[deepest(s.q)];
     r.penetration = penetration(p, s.q);
-    if (law_) {
-        for (const PadPoint& x : points_) r.force += law_->at(penetration(x, s.q)).force * x.weight;
-        r.point_velocity = point_displacement(p, s.v);
-        return r;
-    }
-    for (const PadPoint& x : points_) {
-        const double d = penetration(x, s.q);
-        if (d > 0.0) r.force += stiffness_ * d * x.weight;
-    }
+    r.force = contact_force(s);
     r.point_velocity = point_displacement(p, s.v);
     return r;
+}
+
+double DielectricContact::contact_force(const ElementState& s) const {
+    double force = 0.0;
+    const double depth = geometry_.gap - geometry_.dielectric_thickness;
+    for (const PointRun& r : runs_) {
+        const std::array<double, 4> qe = run_dofs(r, s.q);
+        for (std::size_t k = r.begin; k < r.end; ++k) {
+            // penetration(points_[k], s.q), the DOFs gathered once per run
+            const double d = geometry_.sign * run_displacement(points_[k], qe) - depth;
+            const double w = points_[k].weight;
+            if (law_) {
+                force += law_->at(d).force * w;
+            } else if (d > 0.0) {
+                force += stiffness_ * d * w;
+            }
+        }
+    }
+    return force;
+}
+
+double DielectricContact::contact_point_velocity(const ElementState& s) const {
+    return point_displacement(points_[deepest(s.q)], s.v);
 }
 
 }  // namespace vi

@@ -56,12 +56,17 @@ public:
     // The deepest penetration, the total force of the layer [N] (adhesive: negative while it pulls)
     // and the velocity of the deepest point.
     [[nodiscard]] ContactReading contact_reading(const ElementState& s) const override;
+    [[nodiscard]] double contact_force(const ElementState& s) const override;
+    [[nodiscard]] double contact_point_velocity(const ElementState& s) const override;
     [[nodiscard]] double position() const override { return 0.5 * (geometry_.from + geometry_.to); }
 
     [[nodiscard]] const std::optional<AdhesiveLayerLaw>& adhesion() const { return law_; }
     [[nodiscard]] const PadGeometry& geometry() const { return geometry_; }
     [[nodiscard]] const std::vector<PadPoint>& points() const { return points_; }
-    [[nodiscard]] double penetration(const PadPoint& p, const double* q) const;
+    // Inline: the deepest-point search runs it at every point of every root function.
+    [[nodiscard]] double penetration(const PadPoint& p, const double* q) const {
+        return geometry_.sign * point_displacement(p, q) - (geometry_.gap - geometry_.dielectric_thickness);
+    }
 
 private:
     // Index of the deepest point.
@@ -70,6 +75,7 @@ private:
     std::string name_;
     std::vector<int> dofs_;
     std::vector<PadPoint> points_;
+    std::vector<PointRun> runs_;  // point_runs(points_)
     PadGeometry geometry_;
     double stiffness_;
     std::optional<AdhesiveLayerLaw> law_;

@@ -8,6 +8,15 @@
 
 namespace vi {
 
+std::vector<PointRun> point_runs(const std::vector<PadPoint>& points) {
+    std::vector<PointRun> runs;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+        if (runs.empty() || runs.back().local != points[k].local) runs.push_back({points[k].local, k, k});
+        runs.back().end = k + 1;
+    }
+    return runs;
+}
+
 void add_fringing(const PadGeometry& g, double gap, LineCapacitance& out) {
     // eps0 (0.77 + 1.06 (w/g)^(1/4) + 1.06 (t/g)^(1/2)) and its derivatives in g.
     const double a = 1.06 * std::pow(g.width, 0.25), b = 1.06 * std::sqrt(g.beam_thickness);
@@ -31,10 +40,7 @@ ElectrostaticPad::ElectrostaticPad(std::string name, std::vector<int> dofs, std:
             if (l >= static_cast<int>(dofs_.size())) throw std::invalid_argument(name_ + ": DOF index out of range");
         }
     }
-    for (std::size_t k = 0; k < points_.size(); ++k) {
-        if (runs_.empty() || runs_.back().local != points_[k].local) runs_.push_back({points_[k].local, k, k});
-        runs_.back().end = k + 1;
-    }
+    runs_ = point_runs(points_);
     layer_ = g.dielectric_thickness / g.dielectric_permittivity;
     rest_gap_ = (g.gap - g.dielectric_thickness) + layer_;
     // A dielectric is a contact (DielectricContact): the beam may press into it elastically, by far

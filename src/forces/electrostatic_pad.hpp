@@ -33,6 +33,23 @@ inline double point_displacement(const PadPoint& p, const double* q) {
     }
     return v;
 }
+// Consecutive points on the same element's DOFs: the hot loops (a pad's force and capacitance, a
+// layer's deepest point) gather those four DOFs once per run, not at each of its Gauss points.
+struct PointRun {
+    std::array<int, 4> local{-1, -1, -1, -1};
+    std::size_t begin = 0, end = 0;  // [begin, end) in the points
+};
+std::vector<PointRun> point_runs(const std::vector<PadPoint>& points);
+// The element's DOFs of run r from q, 0 where an end condition holds one.
+inline std::array<double, 4> run_dofs(const PointRun& r, const double* q) {
+    std::array<double, 4> out{};
+    for (int i = 0; i < 4; ++i) out[i] = r.local[i] >= 0 ? q[r.local[i]] : 0.0;
+    return out;
+}
+// point_displacement at a point of a run, from run_dofs: the same number (a held DOF adds a zero).
+inline double run_displacement(const PadPoint& p, const std::array<double, 4>& qe) {
+    return p.shape[0] * qe[0] + p.shape[1] * qe[1] + p.shape[2] * qe[2] + p.shape[3] * qe[3];
+}
 // Adds a transverse load [N] at the point to the generalised forces f (its shape functions).
 inline void add_point_load(const PadPoint& p, double load, double* f) {
     for (int i = 0; i < 4; ++i) {
@@ -182,28 +199,15 @@ private:
     }
     [[noreturn]] void refuse(const PadPoint& p, double ge) const;
 
-    // Consecutive points on the same element's DOFs: the hot loops (force, capacitance) gather
-    // those four DOFs once per run and scatter once, not at each of its Gauss points.
-    struct PointRun {
-        std::array<int, 4> local{-1, -1, -1, -1};
-        std::size_t begin = 0, end = 0;  // [begin, end) in points_
-    };
-    // The element's DOFs of run r from q, 0 where an end condition holds one.
-    static std::array<double, 4> run_dofs(const PointRun& r, const double* q) {
-        std::array<double, 4> out{};
-        for (int i = 0; i < 4; ++i) out[i] = r.local[i] >= 0 ? q[r.local[i]] : 0.0;
-        return out;
-    }
     // g_e at a point of a run, from run_dofs.
     [[nodiscard]] double run_gap(const PadPoint& p, const std::array<double, 4>& qe) const {
-        const double v = p.shape[0] * qe[0] + p.shape[1] * qe[1] + p.shape[2] * qe[2] + p.shape[3] * qe[3];
-        return rest_gap_ - geometry_.sign * v;
+        return rest_gap_ - geometry_.sign * run_displacement(p, qe);
     }
 
     std::string name_;
     std::vector<int> dofs_;
     std::vector<PadPoint> points_;
-    std::vector<PointRun> runs_;
+    std::vector<PointRun> runs_;  // point_runs(points_)
     PadGeometry geometry_;
     double voltage_;
     TimeFunction time_;

@@ -179,6 +179,12 @@ public:
     [[nodiscard]] virtual bool is_contact() const { return false; }
     [[nodiscard]] virtual int contact_mode() const { return 1; }
     [[nodiscard]] virtual ContactReading contact_reading(const ElementState& /*s*/) const { return {}; }
+    // The reading's force alone [N] and its point's velocity alone [m/s], each the same number as in
+    // contact_reading: a contact over many points gives either without the other's pass over them.
+    [[nodiscard]] virtual double contact_force(const ElementState& s) const { return contact_reading(s).force; }
+    [[nodiscard]] virtual double contact_point_velocity(const ElementState& s) const {
+        return contact_reading(s).point_velocity;
+    }
     // Position along the beam [m] where it acts (for output), or a negative number.
     [[nodiscard]] virtual double position() const { return -1.0; }
     // A contact's electrical resistance at state s, taken as closed [ohm] (+inf where the surfaces do

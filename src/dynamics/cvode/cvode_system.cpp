@@ -184,7 +184,7 @@ void ModalSystem::rhs(double t, const double* y, double* ydot) const {
         const int e = contacts_[j];
         const ForceElement& el = element(e);
         double rate = 0.0;
-        if (modes_[static_cast<std::size_t>(e)] == el.contact_mode()) rate = el.contact_reading(union_state(e, te, false)).force;
+        if (modes_[static_cast<std::size_t>(e)] == el.contact_mode()) rate = el.contact_force(union_state(e, te, false));
         ydot[impulse_index(static_cast<int>(j))] = rate;
     }
 }
@@ -247,7 +247,7 @@ void ModalSystem::root_functions(double t, const double* y, double* g) const {
     if (contacts_.empty()) {
         g[extreme_root() + 1] = 1.0;
     } else {
-        g[extreme_root() + 1] = element(contacts_.front()).contact_reading(union_state(contacts_.front(), te, false)).point_velocity;
+        g[extreme_root() + 1] = element(contacts_.front()).contact_point_velocity(union_state(contacts_.front(), te, false));
     }
 }
 
