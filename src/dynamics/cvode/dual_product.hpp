@@ -7,15 +7,13 @@
 
 namespace vi::cvode_detail {
 
+// ax = A x and ay = A y for the rows x cols column-major A (leading dimension rows): each entry
+// summed over the columns in order, as ax += x_j A(:, j) forms it, rounding alike on every processor.
+void dual_product(const double* A, long rows, long cols, const double* x, const double* y, double* ax, double* ay);
+
 inline void dual_product(const Eigen::MatrixXd& A, const double* x, const double* y, Eigen::Ref<Eigen::VectorXd> ax,
                          Eigen::Ref<Eigen::VectorXd> ay) {
-    ax.setZero();
-    ay.setZero();
-    for (Eigen::Index j = 0; j < A.cols(); ++j) {
-        // The column stays in the first-level cache between the two updates.
-        ax.noalias() += x[j] * A.col(j);
-        ay.noalias() += y[j] * A.col(j);
-    }
+    dual_product(A.data(), A.rows(), A.cols(), x, y, ax.data(), ay.data());
 }
 
 }  // namespace vi::cvode_detail
