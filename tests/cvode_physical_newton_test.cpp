@@ -4,11 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
+#include <utility>
 #include <string>
 #include <vector>
 
 #include "dynamics/cvode/cvode_system.hpp"
+#include "dynamics/cvode/dual_product.hpp"
 #include "dynamics/cvode/modal_basis.hpp"
 #include "dynamics/cvode/physical_newton.hpp"
 #include "dynamics/transient_start.hpp"
@@ -16,6 +19,33 @@
 
 namespace vi {
 namespace {
+
+// The dual product (built for the processor's widest vectors) gives each entry as x_j A(:, j) summed
+// column by column in order gives it, to the last bit, at sizes that leave remainders of every width.
+TEST(DualProduct, EveryEntryIsTheColumnSumInOrderBitForBit) {
+    std::mt19937 rng(3);
+    std::normal_distribution<double> n(0.0, 1.0);
+    for (const auto& [rows, cols] : std::vector<std::pair<int, int>>{{1, 1}, {7, 3}, {33, 17}, {130, 101}}) {
+        Eigen::MatrixXd A(rows, cols);
+        std::vector<double> x(static_cast<std::size_t>(cols)), y(x.size());
+        for (Eigen::Index k = 0; k < A.size(); ++k) A.data()[k] = n(rng) * std::exp(10.0 * n(rng));
+        for (std::size_t j = 0; j < x.size(); ++j) {
+            x[j] = n(rng);
+            y[j] = n(rng) * 1e-3;
+        }
+        Eigen::VectorXd ax(rows), ay(rows);
+        cvode_detail::dual_product(A, x.data(), y.data(), ax, ay);
+        for (int i = 0; i < rows; ++i) {
+            double sx = 0.0, sy = 0.0;
+            for (int j = 0; j < cols; ++j) {
+                sx += x[static_cast<std::size_t>(j)] * A(i, j);
+                sy += y[static_cast<std::size_t>(j)] * A(i, j);
+            }
+            EXPECT_EQ(ax[i], sx) << rows << " x " << cols << ", row " << i;
+            EXPECT_EQ(ay[i], sy) << rows << " x " << cols << ", row " << i;
+        }
+    }
+}
 
 using cvode_detail::ModalSystem;
 using cvode_detail::PhysicalNewton;

@@ -87,6 +87,55 @@ TEST(DielectricContact, TangentAndEnergyMatchTheForceAndItSwitchesAtTheFace) {
 // A rigid plate (mass on a spring k) under an electrode with a dielectric: after pull-in it lands on
 // the layer (touch-down where k x = eps0 A V^2 / (2 (t_d / eps_r)^2) at x = the air gap) and the
 // landed equilibria satisfy k x + k_d L (x - g_a) = eps0 A V^2 / (2 (g_a - x + t_d / eps_r)^2).
+// The reading's parts given alone are its own numbers to the last bit, with each element's DOFs
+// gathered once (a layer over a clamped element, whose held DOFs are no entries, and the next one),
+// elastic and adhesive: the deepest point, its velocity and the force as one point at a time gives them.
+TEST(DielectricContact, ItsForceAndPointVelocityAloneAreItsReadingsBitForBit) {
+    const double L = 10e-6;
+    std::vector<PadPoint> pts = test::one_element_points(L);
+    for (PadPoint& p : pts) p.local = {-1, -1, 0, 1};
+    for (PadPoint p : test::one_element_points(L)) {
+        p.x += L;
+        pts.push_back(p);
+    }
+    PadGeometry geo;
+    geo.sign = 1.0;
+    geo.gap = 2e-6;
+    geo.dielectric_thickness = 0.2e-6;
+    geo.dielectric_permittivity = 7.5;
+    geo.width = 30e-6;
+    geo.to = 2 * L;
+    const double k = 3.75e10;
+    const DielectricContact elastic("elastic", {0, 1, 2, 3}, pts, geo, k);
+    const DielectricContact adhesive("adhesive", {0, 1, 2, 3}, pts, geo, AdhesiveLayerLaw(k, 1e-3, 5e-9));
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int n = 0; n < 200; ++n) {
+        const std::vector<double> q{1.8e-6 + 4e-9 * u(rng), 4e-4 * u(rng), 1.8e-6 + 4e-9 * u(rng), 4e-4 * u(rng)};
+        const std::vector<double> v{u(rng), 1e5 * u(rng), u(rng), 1e5 * u(rng)};
+        const ElementState s{0.0, q.data(), v.data(), nullptr};
+        for (const DielectricContact* c : {&elastic, &adhesive}) {
+            std::size_t deepest = 0;
+            double force = 0.0;
+            for (std::size_t i = 0; i < pts.size(); ++i) {
+                const double d = c->penetration(pts[i], q.data());
+                if (d > c->penetration(pts[deepest], q.data())) deepest = i;
+                if (c->adhesion()) {
+                    force += c->adhesion()->at(d).force * pts[i].weight;
+                } else if (d > 0.0) {
+                    force += k * d * pts[i].weight;
+                }
+            }
+            const ContactReading r = c->contact_reading(s);
+            EXPECT_EQ(r.penetration, c->penetration(pts[deepest], q.data()));
+            EXPECT_EQ(r.point_velocity, point_displacement(pts[deepest], v.data()));
+            EXPECT_EQ(r.force, force);
+            EXPECT_EQ(c->contact_force(s), force);
+            EXPECT_EQ(c->contact_point_velocity(s), r.point_velocity);
+        }
+    }
+}
+
 TEST(DielectricContact, ARigidPlateLandsWhereTheClosedFormSays) {
     const double k = 2.0, mass = 1e-11, gap = 2e-6, width = 30e-6, length = 100e-6, td = 0.2e-6, er = 7.5, E = 250e9;
     PullinModel m = parallel_plate_model(k, mass, gap, width, length);
