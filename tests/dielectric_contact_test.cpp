@@ -21,18 +21,22 @@
 namespace vi {
 namespace {
 
-// A layer above one beam element of length 10 um: the electrode's face 1.8 um above the axis.
-DielectricContact layer_on_element(double stiffness) {
-    const double L = 10e-6;
-    const std::vector<PadPoint> pts = test::one_element_points(L);
+// A layer 0.2 um thick on an electrode 2 um above the beam's axis (its face 1.8 um above), over [0, to].
+PadGeometry layer_geometry(double to) {
     PadGeometry geo;
     geo.sign = 1.0;
     geo.gap = 2e-6;
     geo.dielectric_thickness = 0.2e-6;
     geo.dielectric_permittivity = 7.5;
     geo.width = 30e-6;
-    geo.to = L;
-    return DielectricContact("electrodes[0].dielectric", {0, 1, 2, 3}, pts, geo, stiffness);
+    geo.to = to;
+    return geo;
+}
+
+// That layer above one beam element of length 10 um.
+DielectricContact layer_on_element(double stiffness) {
+    const double L = 10e-6;
+    return DielectricContact("electrodes[0].dielectric", {0, 1, 2, 3}, test::one_element_points(L), layer_geometry(L), stiffness);
 }
 
 TEST(DielectricContact, TangentAndEnergyMatchTheForceAndItSwitchesAtTheFace) {
@@ -98,13 +102,7 @@ TEST(DielectricContact, ItsForceAndPointVelocityAloneAreItsReadingsBitForBit) {
         p.x += L;
         pts.push_back(p);
     }
-    PadGeometry geo;
-    geo.sign = 1.0;
-    geo.gap = 2e-6;
-    geo.dielectric_thickness = 0.2e-6;
-    geo.dielectric_permittivity = 7.5;
-    geo.width = 30e-6;
-    geo.to = 2 * L;
+    const PadGeometry geo = layer_geometry(2 * L);
     const double k = 3.75e10;
     const DielectricContact elastic("elastic", {0, 1, 2, 3}, pts, geo, k);
     const DielectricContact adhesive("adhesive", {0, 1, 2, 3}, pts, geo, AdhesiveLayerLaw(k, 1e-3, 5e-9));
