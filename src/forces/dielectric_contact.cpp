@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace vi {
@@ -24,19 +25,13 @@ DielectricContact::DielectricContact(std::string name, std::vector<int> dofs, st
 
 std::size_t DielectricContact::deepest(const double* q) const {
     std::size_t best = 0;
-    double d = -std::numeric_limits<double>::infinity();
-    const double depth = geometry_.gap - geometry_.dielectric_thickness;
-    for (const PointRun& r : runs_) {
-        const std::array<double, 4> qe = run_dofs(r, q);
-        for (std::size_t k = r.begin; k < r.end; ++k) {
-            // penetration(points_[k], q), the DOFs gathered once per run
-            const double dk = geometry_.sign * run_displacement(points_[k], qe) - depth;
-            if (dk > d) {
-                d = dk;
-                best = k;
-            }
+    double deepest_d = -std::numeric_limits<double>::infinity();
+    for_each_penetration(q, [&](std::size_t k, double d) {
+        if (d > deepest_d) {
+            deepest_d = d;
+            best = k;
         }
-    }
+    });
     return best;
 }
 
@@ -117,20 +112,14 @@ ContactReading DielectricContact::contact_reading(const ElementState& s) const {
 
 double DielectricContact::contact_force(const ElementState& s) const {
     double force = 0.0;
-    const double depth = geometry_.gap - geometry_.dielectric_thickness;
-    for (const PointRun& r : runs_) {
-        const std::array<double, 4> qe = run_dofs(r, s.q);
-        for (std::size_t k = r.begin; k < r.end; ++k) {
-            // penetration(points_[k], s.q), the DOFs gathered once per run
-            const double d = geometry_.sign * run_displacement(points_[k], qe) - depth;
-            const double w = points_[k].weight;
-            if (law_) {
-                force += law_->at(d).force * w;
-            } else if (d > 0.0) {
-                force += stiffness_ * d * w;
-            }
+    for_each_penetration(s.q, [&](std::size_t k, double d) {
+        const double w = points_[k].weight;
+        if (law_) {
+            force += law_->at(d).force * w;
+        } else if (d > 0.0) {
+            force += stiffness_ * d * w;
         }
-    }
+    });
     return force;
 }
 

@@ -4,6 +4,8 @@
 // where the beam presses into the layer (docs/electrostatics.md §2); optionally adhesive (the layer
 // also pulls, by AdhesiveLayerLaw: docs/adhesion.md §9).
 
+#include <array>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -71,6 +73,15 @@ public:
 private:
     // Index of the deepest point.
     [[nodiscard]] std::size_t deepest(const double* q) const;
+    // visit(k, penetration(points_[k], q)) for every point in order, each element's DOFs gathered once.
+    template <class Visit>
+    void for_each_penetration(const double* q, Visit&& visit) const {
+        const double depth = geometry_.gap - geometry_.dielectric_thickness;
+        for (const PointRun& r : runs_) {
+            const std::array<double, 4> qe = run_dofs(r, q);
+            for (std::size_t k = r.begin; k < r.end; ++k) visit(k, geometry_.sign * run_displacement(points_[k], qe) - depth);
+        }
+    }
 
     std::string name_;
     std::vector<int> dofs_;
