@@ -65,7 +65,7 @@ public:
     [[nodiscard]] const std::optional<AdhesiveLayerLaw>& adhesion() const { return law_; }
     [[nodiscard]] const PadGeometry& geometry() const { return geometry_; }
     [[nodiscard]] const std::vector<PadPoint>& points() const { return points_; }
-    // Inline: the deepest-point search runs it at every point of every root function.
+    // Inline: the force, tangent and energy loops run it at every point.
     [[nodiscard]] double penetration(const PadPoint& p, const double* q) const {
         return geometry_.sign * point_displacement(p, q) - (geometry_.gap - geometry_.dielectric_thickness);
     }
